@@ -1,0 +1,282 @@
+/*
+ * The modeled rasterizer: what the pipe driver sees of it.
+ *
+ * Vertices arrive after Mesa's draw module has run the vertex shader,
+ * clipping, the perspective divide and the viewport (spec section 1), as
+ * arrays of float[4] slots.  The model converts them to its fixed-point
+ * registers, culls by the sign of the 2-D determinant, scan-converts them
+ * (seed 000: sorted vertices, types 0/1/2, halves A and B, X_next, edge and
+ * span processors, top-left rule) and hands 2x2 quads to the fragment shader
+ * callback, then runs the fragment back end (scissor, stencil, depth in the
+ * profile's Z format, blend, colour mask) on what survives.
+ *
+ * Window coordinates are gallium's: x to the right, y down the rows of the
+ * render target, pixel (i, j) covering [i, i+1) x [j, j+1).
+ *
+ * This header and everything under src/rast and src/fixed is plain C11 and
+ * includes no Mesa header.
+ */
+#ifndef FIXPIPE_RAST_H
+#define FIXPIPE_RAST_H
+
+#include <stdint.h>
+#include <stdbool.h>
+#include "fixed/fx.h"
+
+#define RAST_MAX_VARYINGS 32
+#define RAST_MAX_CBUFS    8
+#define RAST_QUAD_SIZE    4   /* pixel i of a quad: 0 (x,y) 1 (x+1,y) 2 (x,y+1) 3 (x+1,y+1) */
+
+/* ------------------------------------------------------------------ */
+/* Profiles: the register formats are a run-time choice.               */
+
+/* Saturation counters, one per register class of Table 1. */
+enum rast_reg_class {
+   RAST_REG_XY,        /* vertex X, Y and X_left/X_right/X_next */
+   RAST_REG_DXDY,      /* edge slopes dx/dy */
+   RAST_REG_Z,         /* Z registers and their slopes */
+   RAST_REG_COLOR,     /* R, G, B, A registers and their slopes */
+   RAST_REG_COUNT
+};
+
+struct rast_profile {
+   const char *name;
+   const char *summary;            /* one line for docs and error messages */
+   struct fx_format xy;            /* seed: 12.12 */
+   struct fx_format dxdy;          /* seed: 12.12 */
+   struct fx_format z;             /* seed: 20.12 */
+   struct fx_format color;         /* seed: 9.12, in units of 1/255 */
+   unsigned z_bits;                /* Z full scale is (2^z_bits - 1): seed 19, wide 24 */
+   unsigned max_target;            /* largest render target side: seed 2048 (X_out 11 bits) */
+   bool color_perspective;         /* seed: false, colour is the seed's linear Gouraud walk */
+};
+
+/* NULL when the name is unknown. */
+const struct rast_profile *rast_profile_by_name(const char *name);
+/* "seed, wide": for error messages and --help. */
+const char *rast_profile_names(void);
+/* The profiles in a NULL-terminated list, for docs and tests. */
+const struct rast_profile *const *rast_profile_list(void);
+
+/* ------------------------------------------------------------------ */
+/* Per-fragment state.  Enumerations mean what their GL names say.     */
+
+enum rast_func {        /* depth, stencil compare */
+   RAST_FUNC_NEVER, RAST_FUNC_LESS, RAST_FUNC_EQUAL, RAST_FUNC_LEQUAL,
+   RAST_FUNC_GREATER, RAST_FUNC_NOTEQUAL, RAST_FUNC_GEQUAL, RAST_FUNC_ALWAYS
+};
+
+enum rast_stencil_op {
+   RAST_STENCIL_KEEP, RAST_STENCIL_ZERO, RAST_STENCIL_REPLACE,
+   RAST_STENCIL_INCR, RAST_STENCIL_DECR, RAST_STENCIL_INCR_WRAP,
+   RAST_STENCIL_DECR_WRAP, RAST_STENCIL_INVERT
+};
+
+enum rast_blend_eq {
+   RAST_BLEND_ADD, RAST_BLEND_SUBTRACT, RAST_BLEND_REVERSE_SUBTRACT,
+   RAST_BLEND_MIN, RAST_BLEND_MAX
+};
+
+enum rast_blend_factor {
+   RAST_BF_ZERO, RAST_BF_ONE,
+   RAST_BF_SRC_COLOR, RAST_BF_INV_SRC_COLOR,
+   RAST_BF_SRC_ALPHA, RAST_BF_INV_SRC_ALPHA,
+   RAST_BF_DST_COLOR, RAST_BF_INV_DST_COLOR,
+   RAST_BF_DST_ALPHA, RAST_BF_INV_DST_ALPHA,
+   RAST_BF_CONST_COLOR, RAST_BF_INV_CONST_COLOR,
+   RAST_BF_CONST_ALPHA, RAST_BF_INV_CONST_ALPHA,
+   RAST_BF_SRC_ALPHA_SATURATE,
+   RAST_BF_SRC1_COLOR, RAST_BF_INV_SRC1_COLOR,
+   RAST_BF_SRC1_ALPHA, RAST_BF_INV_SRC1_ALPHA
+};
+
+struct rast_stencil_face {
+   bool enabled;
+   enum rast_func func;
+   enum rast_stencil_op fail_op, zfail_op, zpass_op;
+   uint8_t valuemask, writemask;
+};
+
+struct rast_depth_stencil_state {
+   bool depth_enabled;
+   bool depth_writemask;
+   enum rast_func depth_func;
+   struct rast_stencil_face stencil[2];   /* [0] front, [1] back */
+};
+
+struct rast_blend_target {
+   bool blend_enable;
+   enum rast_blend_eq rgb_eq, alpha_eq;
+   enum rast_blend_factor rgb_src, rgb_dst, alpha_src, alpha_dst;
+   uint8_t colormask;                     /* bit 0 R, 1 G, 2 B, 3 A */
+};
+
+struct rast_blend_state {
+   bool independent;                      /* else rt[0] applies to all */
+   struct rast_blend_target rt[RAST_MAX_CBUFS];
+};
+
+/* ------------------------------------------------------------------ */
+/* Render targets.  The back end reads and writes them directly; the     */
+/* driver supplies pack/unpack for formats the model has no fast path for. */
+
+enum rast_color_layout {
+   RAST_CL_GENERIC,     /* use load/store */
+   RAST_CL_RGBA8,       /* bytes R, G, B, A (unorm) */
+   RAST_CL_BGRA8,       /* bytes B, G, R, A (unorm) */
+   RAST_CL_BGRX8        /* bytes B, G, R, x (unorm, alpha reads 1) */
+};
+
+typedef void (*rast_load_func)(const uint8_t *src, unsigned n, float (*rgba)[4]);
+typedef void (*rast_store_func)(uint8_t *dst, unsigned n, const float (*rgba)[4]);
+
+struct rast_color_target {
+   uint8_t *base;                 /* pixel (0, 0) of the bound level/layer */
+   int stride;                    /* bytes between rows */
+   unsigned cpp;                  /* bytes per pixel */
+   enum rast_color_layout layout;
+   rast_load_func load;           /* always set: RGBA float of n pixels */
+   rast_store_func store;         /* always set */
+   bool clamp;                    /* unorm/snorm: clamp blend inputs */
+};
+
+enum rast_zs_layout {
+   RAST_ZS_NONE,
+   RAST_ZS_Z16,                 /* uint16 z */
+   RAST_ZS_Z32,                 /* uint32 z (unorm32) */
+   RAST_ZS_Z24_S8,              /* uint32: z in bits 0..23, stencil 24..31 */
+   RAST_ZS_Z24X8,               /* uint32: z in bits 0..23 */
+   RAST_ZS_S8_Z24,              /* uint32: stencil 0..7, z in 8..31 */
+   RAST_ZS_X8Z24,               /* uint32: z in 8..31 */
+   RAST_ZS_Z32F,                /* float z */
+   RAST_ZS_Z32F_S8X24,          /* float z, then uint32 with stencil in 0..7 */
+   RAST_ZS_S8                   /* uint8 stencil only */
+};
+
+struct rast_zs_target {
+   uint8_t *base;
+   int stride;
+   enum rast_zs_layout layout;
+};
+
+struct rast_framebuffer {
+   unsigned width, height;
+   unsigned nr_cbufs;
+   struct rast_color_target cbuf[RAST_MAX_CBUFS];   /* base NULL: unbound */
+   struct rast_zs_target zs;
+};
+
+/* ------------------------------------------------------------------ */
+/* Rasterizer state and the vertex layout.                              */
+
+enum rast_cull { RAST_CULL_NONE = 0, RAST_CULL_FRONT = 1, RAST_CULL_BACK = 2,
+                 RAST_CULL_BOTH = 3 };
+
+struct rast_raster_state {
+   bool front_ccw;               /* CCW in GL's sense (y up); see setup.c */
+   enum rast_cull cull;
+   bool scissor;
+   bool half_pixel_center;       /* GL: true */
+   bool bottom_edge_rule;        /* gallium: pixel centres on bottom edges are in */
+   bool flatshade;               /* COLOR inputs are constant */
+   bool flatshade_first;         /* provoking vertex is the first, else the last */
+   float line_width;             /* lines wider than 1 come as triangles */
+};
+
+struct rast_scissor { int minx, miny, maxx, maxy; };   /* max exclusive */
+
+enum rast_interp {
+   RAST_INTERP_CONSTANT,        /* flat: the provoking vertex's value */
+   RAST_INTERP_LINEAR,          /* noperspective: screen-linear, float incremental */
+   RAST_INTERP_PERSPECTIVE,     /* A/w and 1/w incremental, divided per pixel */
+   RAST_INTERP_COLOR            /* COLOR semantic: 9.12 Gouraud walk (or perspective,
+                                   per profile), constant when flatshade */
+};
+
+struct rast_varying {
+   uint8_t slot;                 /* float[4] slot of the vertex it comes from */
+   uint8_t interp;               /* enum rast_interp */
+   uint8_t usage_mask;           /* components the shader reads */
+};
+
+struct rast_vertex_layout {
+   unsigned vertex_size;         /* in float[4] slots */
+   unsigned pos_slot;            /* window x, y, z in [0,1], and 1/w */
+   unsigned num_varyings;        /* shader inputs, in shader input order */
+   struct rast_varying varying[RAST_MAX_VARYINGS];
+};
+
+/* ------------------------------------------------------------------ */
+/* The quad: what the scan converter hands the fragment shader.          */
+
+struct rast_quad {
+   int x, y;                         /* pixel 0; both even */
+   unsigned mask;                    /* coverage, bit i = pixel i */
+   bool front_facing;
+   float frag_z[RAST_QUAD_SIZE];     /* Z register as window depth in [0,1] */
+   float frag_w[RAST_QUAD_SIZE];     /* 1/w_clip, gl_FragCoord.w */
+   int64_t z[RAST_QUAD_SIZE];        /* Z register, raw profile format */
+   /* [varying][component][pixel]: the layout of tgsi_exec's input vectors */
+   float in[RAST_MAX_VARYINGS][4][RAST_QUAD_SIZE];
+};
+
+struct rast_shaded_quad {
+   float color[RAST_MAX_CBUFS][4][RAST_QUAD_SIZE];   /* [cbuf][chan][pixel] */
+   float depth[RAST_QUAD_SIZE];      /* when the shader writes depth: [0,1] */
+};
+
+/* The fragment shader, bound once per state change.  shade() returns the
+ * pixels that survive (discard clears bits); it must not write to `quad`. */
+struct rast_shader {
+   void *ctx;
+   unsigned (*shade)(void *ctx, const struct rast_quad *quad,
+                     struct rast_shaded_quad *out);
+   unsigned num_outputs;             /* colour outputs written */
+   bool writes_depth;
+   bool color0_to_all;               /* gl_FragColor broadcast to every cbuf */
+   bool may_discard;
+};
+
+/* ------------------------------------------------------------------ */
+/* Counters.                                                            */
+
+struct rast_stats {
+   struct fx_sat sat[RAST_REG_COUNT];
+   uint64_t triangles, culled, lines, points;
+   uint64_t quads, pixels_covered, pixels_shaded;
+   uint64_t samples_passed;          /* for occlusion queries */
+};
+
+/* ------------------------------------------------------------------ */
+/* The rasterizer context.                                              */
+
+struct rast_context;
+
+struct rast_context *rast_create(const struct rast_profile *profile);
+void rast_destroy(struct rast_context *rc);
+const struct rast_profile *rast_get_profile(const struct rast_context *rc);
+
+/* State: copied in; span and back-end functions are chosen again at the
+ * next primitive after any of these. */
+void rast_set_framebuffer(struct rast_context *rc, const struct rast_framebuffer *fb);
+void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_state *rs);
+void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc);
+void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa);
+void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back);
+void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blend);
+void rast_set_blend_color(struct rast_context *rc, const float color[4]);
+void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl);
+void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs);
+
+/* Primitives: each vertex is vertex_size float[4] slots. */
+void rast_triangle(struct rast_context *rc, const float (*v0)[4],
+                   const float (*v1)[4], const float (*v2)[4]);
+/* A one-pixel-wide line by GL's diamond-exit rule.  Points, wide lines and
+ * point sprites reach the model as triangles from draw's wide-point and
+ * wide-line stages. */
+void rast_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[4]);
+
+const struct rast_stats *rast_get_stats(const struct rast_context *rc);
+void rast_reset_stats(struct rast_context *rc);
+
+#endif
