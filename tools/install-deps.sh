@@ -9,19 +9,14 @@ PKGS="meson ninja-build python3-mako bison flex pkg-config ccache gcc g++ make
  libxcb-randr0-dev libxcb-xfixes0-dev libxshmfence-dev libxxf86vm-dev libxrandr-dev
  zlib1g-dev libexpat1-dev libpng-dev libegl-dev libgles-dev
  libgl1-mesa-dri libegl-mesa0 mesa-utils mesa-utils-bin glmark2-es2-x11 piglit
- apitrace apitrace-tracers xvfb xauth dpkg-dev"
-
-missing=""
-for p in $PKGS; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
-        || missing="$missing $p"
-done
-[ -z "$missing" ] && exit 0
+ apitrace apitrace-tracers xvfb xauth dpkg-dev python3"
 
 SUDO=""
 [ "$(id -u)" = 0 ] || SUDO=sudo
 
-# A deb-src entry for the suites already configured, so `apt-get source mesa` works.
+# A deb-src entry for the suites already configured, so `apt-get source mesa` (mesa/fetch.sh)
+# works; checked on its own, since the packages may be there without it.
+updated=""
 if ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ && \
    ! grep -qs '^deb-src' /etc/apt/sources.list; then
     if [ -f /etc/apt/sources.list.d/debian.sources ]; then
@@ -31,7 +26,17 @@ if ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ && \
         grep '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' \
             | $SUDO tee /etc/apt/sources.list.d/fixpipe-deb-src.list >/dev/null
     fi
+    $SUDO apt-get update -qq
+    updated=1
 fi
+
+missing=""
+for p in $PKGS; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+        || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+
 echo "fixpipe: installing:$missing" >&2
-$SUDO apt-get update -qq
+[ -n "$updated" ] || $SUDO apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing

@@ -1,0 +1,167 @@
+/*
+ * The fragment back end's own state (rc->back_priv): everything that
+ * rast_backend_validate() decides once per state change, so that the quad
+ * functions only follow pointers and never look at the gallium-level state
+ * again.
+ */
+#ifndef FIXPIPE_BACKEND_PRIV_H
+#define FIXPIPE_BACKEND_PRIV_H
+
+#include <stddef.h>
+#include <string.h>
+#include "rast/rast_priv.h"
+
+/* A quad's depth in the depth buffer's own units: unorm for the integer
+ * layouts, IEEE float for Z32F.  The same value serves the test and the
+ * write, so early and late depth agree bit for bit. */
+union rast_zq {
+   uint32_t u[RAST_QUAD_SIZE];
+   float f[RAST_QUAD_SIZE];
+};
+
+struct rast_backend;
+
+/* Rasterizer Z (or shader depth) of a quad -> buffer units. */
+typedef void (*rast_zconv_func)(const struct rast_backend *be,
+                                const struct rast_quad *q,
+                                const struct rast_shaded_quad *out,
+                                union rast_zq *z);
+
+/* Depth/stencil test and update of a quad; returns the pixels that pass. */
+typedef unsigned (*rast_zs_func)(const struct rast_backend *be, int x, int y,
+                                 unsigned mask, const union rast_zq *z,
+                                 bool front_facing);
+
+struct rast_cbuf_plan;
+
+/* Blend, colour mask and store of one colour buffer.  src and src1 are
+ * [chan][pixel], the layout of rast_shaded_quad. */
+typedef void (*rast_color_func)(const struct rast_cbuf_plan *p, int x, int y,
+                                unsigned mask, const float (*src)[RAST_QUAD_SIZE],
+                                const float (*src1)[RAST_QUAD_SIZE]);
+
+struct rast_cbuf_plan {
+   rast_color_func func;
+   uint8_t *base;
+   int stride;
+   unsigned cpp;
+   rast_load_func load;
+   rast_store_func store;
+   bool clamp;
+   uint8_t colormask;
+   bool clamp_dst;                /* generic target that clamps: dst and result can
+                                     leave [0, 1] */
+   bool uses_src1;                /* a SRC1 factor: clamp the second output too */
+   struct rast_blend_target bt;
+   /* ADD with factors k0 + k1 * As (ZERO, ONE, SRC_ALPHA, INV_SRC_ALPHA):
+    * rgb src, rgb dst, alpha src, alpha dst, as {k0, k1}. */
+   float affine[4][2];
+   float konst[4];                /* blend colour, clamped if the target clamps */
+   unsigned src;                  /* index into rast_shaded_quad.color */
+   enum rast_color_layout fast8;  /* no blend, full mask, 8-bit: the quad's fast store;
+                                     RAST_CL_GENERIC otherwise */
+};
+
+/* Where the depth and stencil of the bound zs buffer live. */
+enum rast_zfamily {
+   RAST_ZF_NONE,
+   RAST_ZF_U16,        /* Z16 */
+   RAST_ZF_U24LO,      /* Z24_S8, Z24X8: z in bits 0..23 */
+   RAST_ZF_U24HI,      /* S8_Z24, X8Z24: z in bits 8..31 */
+   RAST_ZF_U32,        /* Z32 */
+   RAST_ZF_F32,        /* Z32F */
+   RAST_ZF_F32S8,      /* Z32F_S8X24: 8-byte pixel, float first */
+   RAST_ZF_COUNT
+};
+
+struct rast_backend {
+   /* Depth/stencil. */
+   rast_zconv_func zconv;
+   rast_zs_func zs;               /* NULL: no depth or stencil work */
+   uint8_t *zs_base;
+   int zs_stride;
+   enum rast_zs_layout zs_layout;
+   enum rast_zfamily zfamily;
+   bool depth_test, depth_write;
+   enum rast_func depth_func;
+   bool stencil_test;
+   bool two_sided;
+   struct rast_stencil_face stencil[2];
+   uint8_t stencil_ref[2];
+
+   /* Rasterizer Z -> unorm: see backend_zs.c for the exact rule. */
+   uint64_t z_full;               /* (2^z_bits - 1) << frac_bits */
+   uint64_t z_max;                /* 2^N - 1 of the buffer */
+   unsigned z_frac;               /* frac_bits of the profile */
+   unsigned z_nbits;              /* N */
+
+   /* Colour. */
+   bool shade_needed;             /* false: no visible effect of the shader */
+   unsigned ncbufs;
+   struct rast_cbuf_plan cbuf[RAST_MAX_CBUFS];
+
+   /* Scratch for the shader's output: not on the stack of every quad. */
+   struct rast_shaded_quad out;
+};
+
+/* backend_zs.c */
+void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc);
+uint32_t rast_z_to_unorm(uint64_t z, uint64_t full, uint64_t max);
+uint32_t rast_float_to_unorm(float d, unsigned nbits);
+
+/* backend_color.c */
+void rast_color_plan(struct rast_backend *be, const struct rast_context *rc);
+uint8_t rast_float_to_ubyte(float f);
+
+static inline unsigned rast_popcount4(unsigned mask)
+{
+   return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1);
+}
+
+/* Pixel i of the quad at (x, y). */
+static inline int rast_qx(int x, unsigned i) { return x + (int)(i & 1); }
+static inline int rast_qy(int y, unsigned i) { return y + (int)(i >> 1); }
+
+/* Mesa's float_to_ubyte (util/u_math.h), bit for bit: NaN and <= 0 give 0,
+ * >= 1 gives 255, else round(f * 255) to nearest even, done by the float
+ * adder: f * 255/256 + 2^15 leaves round(f * 255) in the low mantissa bits. */
+static inline float rast_clamp01(float v)
+{
+   v = v > 0.0f ? v : 0.0f;          /* NaN -> 0; compiles to maxss/minss */
+   return v < 1.0f ? v : 1.0f;
+}
+
+/* Clamping first gives Mesa's results without its branches: 0 and 1 go
+ * through the adder exactly (32768 and 32768 + 255/256). */
+static inline uint8_t rast_f2ub(float f)
+{
+   union { float f; uint32_t u; } t;
+   t.f = rast_clamp01(f) * (255.0f / 256.0f) + 32768.0f;
+   return (uint8_t)t.u;
+}
+
+/* Mesa's ubyte_to_float. */
+static inline float rast_ub2f(uint8_t v)
+{
+   return (float)v * (1.0f / 255.0f);
+}
+
+/* No blend, all four channels: the fast store of the 8-bit layouts.  r, g,
+ * b, a are byte offsets; x8 writes 255 into the unused byte. */
+static inline void rast_store8_quad(uint8_t *base, int stride, int x, int y, unsigned mask,
+                                    const float (*src)[RAST_QUAD_SIZE],
+                                    unsigned r, unsigned g, unsigned b, unsigned a, bool x8)
+{
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      if (!(mask & (1u << i)))
+         continue;
+      uint8_t px[4];
+      px[r] = rast_f2ub(src[0][i]);
+      px[g] = rast_f2ub(src[1][i]);
+      px[b] = rast_f2ub(src[2][i]);
+      px[a] = x8 ? 255 : rast_f2ub(src[3][i]);
+      memcpy(base + (ptrdiff_t)rast_qy(y, i) * stride + (ptrdiff_t)rast_qx(x, i) * 4, px, 4);
+   }
+}
+
+#endif

@@ -1,0 +1,102 @@
+/*
+ * The rasterizer context: state is copied in and marks the context dirty;
+ * the front and back ends choose their specialised functions at the next
+ * primitive (rast_validate), never per pixel.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "rast/rast_priv.h"
+
+struct rast_context *rast_create(const struct rast_profile *profile)
+{
+   if (!profile)
+      return NULL;
+   struct rast_context *rc = calloc(1, sizeof(*rc));
+   if (!rc)
+      return NULL;
+   rc->profile = profile;
+   rc->rs.half_pixel_center = true;
+   rc->rs.line_width = 1.0f;
+   rc->vl.vertex_size = 1;
+   rc->dirty = true;
+   return rc;
+}
+
+void rast_destroy(struct rast_context *rc)
+{
+   if (!rc)
+      return;
+   rast_front_destroy(rc);
+   rast_backend_destroy(rc);
+   free(rc);
+}
+
+const struct rast_profile *rast_get_profile(const struct rast_context *rc)
+{
+   return rc->profile;
+}
+
+void rast_set_framebuffer(struct rast_context *rc, const struct rast_framebuffer *fb)
+{
+   rc->fb = *fb;
+   rc->dirty = true;
+}
+
+void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_state *rs)
+{
+   rc->rs = *rs;
+   rc->dirty = true;
+}
+
+void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
+{
+   rc->scissor = *sc;
+   rc->dirty = true;
+}
+
+void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa)
+{
+   rc->dsa = *dsa;
+   rc->dirty = true;
+}
+
+void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back)
+{
+   rc->stencil_ref[0] = front;
+   rc->stencil_ref[1] = back;
+   rc->dirty = true;
+}
+
+void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blend)
+{
+   rc->blend = *blend;
+   rc->dirty = true;
+}
+
+void rast_set_blend_color(struct rast_context *rc, const float color[4])
+{
+   memcpy(rc->blend_color, color, sizeof(rc->blend_color));
+   rc->dirty = true;
+}
+
+void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl)
+{
+   rc->vl = *vl;
+   rc->dirty = true;
+}
+
+void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs)
+{
+   rc->fs = *fs;
+   rc->dirty = true;
+}
+
+const struct rast_stats *rast_get_stats(const struct rast_context *rc)
+{
+   return &rc->stats;
+}
+
+void rast_reset_stats(struct rast_context *rc)
+{
+   memset(&rc->stats, 0, sizeof(rc->stats));
+}

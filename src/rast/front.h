@@ -1,0 +1,145 @@
+/*
+ * The front end's private state (rc->front_priv): setup, edge processing
+ * (scan.c) and span processing (interp.c).  Everything here is allocated once
+ * per context; no primitive allocates.
+ *
+ * Attribute registers come in two families, both walked the seed's way
+ * (left-edge register + Δ/Δy per scan line, then ∂/∂x per pixel):
+ *   fix[]: fixed point, saturating.  fix[0] is Z (profile Z format); the
+ *          rest are colour components (profile colour format, units 1/255).
+ *   flt[]: float.  flt[0] is 1/w (gl_FragCoord.w, and the perspective
+ *          divisor); then the LINEAR components; then the PERSPECTIVE ones,
+ *          held as A/w.
+ */
+#ifndef FIXPIPE_FRONT_H
+#define FIXPIPE_FRONT_H
+
+#include "rast/rast_priv.h"
+#include "fixed/fx_wide.h"
+
+#define FR_MAX_COMP  (RAST_MAX_VARYINGS * 4)
+#define FR_MAX_FIX   (1 + FR_MAX_COMP)
+#define FR_MAX_FLT   (1 + FR_MAX_COMP)
+#define FR_MAX_VERTS 4
+#define FR_MAX_SECS  3
+
+/* One shader input component: out in[var][chan], from vertex slot `slot`. */
+struct fr_comp {
+   uint8_t var, chan, slot;
+};
+
+/* An edge register set: X_left or X_right with its slope, and (left edges
+ * only) the attribute registers Z_left, R_left, ... and their Δ/Δy.
+ *
+ * Exactness (our addition; the seed leaves the rounding of the walk open):
+ * x is the floor, in the XY format, of the exact intersection of the edge
+ * through the fixed-point vertices with the scan line's pixel centres, and
+ * rem/dy is the rest: exact = x + rem/dy, 0 <= rem < dy.  The slope register
+ * holds floor((xb-xa)·S/dy) (dx/dy format) and step_rem its remainder, so the
+ * walk is Bresenham's: the error term carries into x when it reaches dy, and
+ * x never drifts from the exact edge. */
+struct fr_edge {
+   int64_t xa, ya, xb, yb;     /* end points, XY format, ya < yb */
+   uint8_t a, b;               /* vertex indices of the end points */
+   bool left;
+   int64_t j_end;              /* last scan line this edge is stepped to */
+
+   int64_t x, rem, dy;         /* X register and Bresenham error term */
+   int64_t step, step_rem;     /* dx/dy register and its remainder */
+
+   int64_t fix[FR_MAX_FIX], fix_step[FR_MAX_FIX];
+   float flt[FR_MAX_FLT], flt_step[FR_MAX_FLT];
+};
+
+/* A y-interval of the polygon bounded by one left and one right edge: the
+ * halves A and B of a general triangle, or up to three for a line's
+ * parallelogram. */
+struct fr_section {
+   int64_t ytop, ybot;         /* XY format */
+   struct fr_edge *l, *r;
+   int64_t j0, j1;             /* scan lines, inclusive; empty if j0 > j1 */
+};
+
+/* One scan line's result of edge processing. */
+struct fr_row {
+   bool valid;                 /* inside the polygon's and the clip's rows */
+   int64_t xs, xe;             /* clipped span, inclusive; empty if xs > xe */
+   int64_t xl;                 /* X_left register */
+   float xl_frac;              /* its remainder rem/dy, for the float walk */
+   int64_t fix[FR_MAX_FIX];
+   float flt[FR_MAX_FLT];
+};
+
+struct rast_front;
+typedef void (*fr_pair_func)(struct rast_context *rc, struct rast_front *fr, int64_t y);
+
+struct rast_front {
+   /* ---- chosen in rast_front_validate ---- */
+   unsigned ncolor, nlin, npersp, nconst;
+   struct fr_comp color[FR_MAX_COMP], lin[FR_MAX_COMP], persp[FR_MAX_COMP],
+                  cnst[FR_MAX_COMP];
+   unsigned nfix, nflt;        /* 1 + ncolor, 1 + nlin + npersp */
+   int64_t fix_min[FR_MAX_FIX], fix_max[FR_MAX_FIX];
+   struct fx_sat *fix_sat[FR_MAX_FIX];
+   struct fx_format fix_fmt[FR_MAX_FIX];
+   int64_t S;                  /* one pixel in the XY format */
+   int64_t H;                  /* the pixel centre's offset in the XY format */
+   int64_t row_bias;           /* 1 with the bottom-edge rule: ceil(v + 1 ulp) */
+   double z_scale;             /* Z register -> window depth */
+   float color_scale;          /* colour register -> [0, 1] */
+   float inv_S;
+   fr_pair_func pair;          /* span processor specialised for the inputs */
+
+   /* ---- the primitive being drawn ---- */
+   unsigned nverts;
+   int64_t X[FR_MAX_VERTS], Y[FR_MAX_VERTS];
+   int64_t vfix[FR_MAX_VERTS][FR_MAX_FIX];
+   float vflt[FR_MAX_VERTS][FR_MAX_FLT];
+   int64_t fix_dx[FR_MAX_FIX], fix_dy[FR_MAX_FIX];   /* per pixel */
+   float flt_dx[FR_MAX_FLT], flt_dy[FR_MAX_FLT];
+   struct fr_edge edge[FR_MAX_VERTS];
+   struct fr_section sec[FR_MAX_SECS];
+   unsigned nsec;
+
+   struct fr_row row[2];       /* the two scan lines of a quad row */
+   struct rast_quad quad;
+};
+
+static inline struct rast_front *rast_front(struct rast_context *rc)
+{
+   return (struct rast_front *)rc->front_priv;
+}
+
+/* Saturating register update of one fixed attribute. */
+static inline int64_t fr_fix_add(const struct rast_front *fr, unsigned k, int64_t a, int64_t b)
+{
+   int64_t v = a + b;
+   if (v > fr->fix_max[k]) { fr->fix_sat[k]->high++; return fr->fix_max[k]; }
+   if (v < fr->fix_min[k]) { fr->fix_sat[k]->low++; return fr->fix_min[k]; }
+   return v;
+}
+
+static inline int64_t fr_fix_sat(const struct rast_front *fr, unsigned k, fx_i128 v)
+{
+   return fx_sat_i128(v, fr->fix_min[k], fr->fix_max[k],
+                      &fr->fix_sat[k]->high, &fr->fix_sat[k]->low);
+}
+
+/* setup.c: the attribute registers of vertex k from its float slots, and
+ * the flat inputs from the provoking vertex. */
+void rast_setup_attribs(struct rast_context *rc, struct rast_front *fr,
+                        unsigned k, const float (*v)[4]);
+void rast_setup_constants(struct rast_front *fr, const float (*pv)[4]);
+
+/* scan.c: edge processing over fr->sec[0..nsec) */
+void rast_scan_sections(struct rast_context *rc, struct rast_front *fr);
+/* scan.c: sections of a convex polygon fr->X/Y[0..nverts) (lines) */
+void rast_scan_convex(struct rast_context *rc, struct rast_front *fr);
+
+/* interp.c */
+fr_pair_func rast_interp_choose(const struct rast_front *fr);
+void rast_interp_perspective(struct rast_quad *q, const struct rast_front *fr,
+                             const float (*aw)[RAST_QUAD_SIZE],
+                             const float oow[RAST_QUAD_SIZE]);
+
+#endif

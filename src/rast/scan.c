@@ -1,0 +1,243 @@
+/*
+ * Edge processing (seed 000, section 2): walk the left and right edges one
+ * scan line at a time, two scan lines per quad row, and hand each pair of
+ * spans to the span processor (interp.c).
+ *
+ * Fill rule, with c = (i + h, j + h) the pixel centre (h = 1/2 for GL):
+ *   rows     top-left rule:    y_top <= c_y <  y_bottom
+ *            bottom-edge rule: y_top <  c_y <= y_bottom
+ *   columns  always:           X_left <= c_x < X_right
+ * evaluated with the seed's ceil circuit on exact values:
+ *   y_min = ceil(y_top - h [+ 1 ulp]), y_max = ceil(y_bottom - h [+ 1 ulp]) - 1
+ *   x_init = ceil(X_left - h), x_end = ceil(X_right - h) - 1
+ * where X_left, X_right are exact (register + remainder, see fr_edge), so a
+ * non-zero remainder is the "+ 1 ulp" that makes ceil() of the rational value
+ * exact.  This is llvmpipe's tie rule: left edges include pixel centres on
+ * them, right edges exclude them; horizontal top edges are in with the
+ * top-left rule, horizontal bottom edges with the bottom-edge rule.
+ */
+#include <stddef.h>
+#include "rast/front.h"
+
+static inline int64_t ceil_row(const struct rast_front *fr, struct fx_format xy, int64_t y)
+{
+   return fx_ceil_int(xy, y - fr->H + fr->row_bias);
+}
+
+/* floor(n / d) for d > 0, with the remainder in [0, d). */
+static inline int64_t floor_div(int64_t n, int64_t d, int64_t *rem)
+{
+   int64_t q = n / d, r = n % d;
+   if (r < 0) { q--; r += d; }
+   *rem = r;
+   return q;
+}
+
+/* Load an edge's registers at scan line j: the subpixel start (one exact
+ * multiply-divide, also used to jump over clipped scan lines), the slope
+ * registers if the edge will be stepped, and for a left edge the attribute
+ * registers and their Δ/Δy along the edge. */
+static void edge_start(struct rast_context *rc, struct rast_front *fr,
+                       struct fr_edge *e, int64_t j)
+{
+   const struct rast_profile *prof = rc->profile;
+   int64_t S = fr->S;
+   int64_t t = j * S + fr->H - e->ya;          /* 0 <= t <= dy */
+   int64_t dx = e->xb - e->xa;
+   int64_t rem;
+
+   e->dy = e->yb - e->ya;
+   e->x = fx_add(prof->xy, e->xa, floor_div(dx * t, e->dy, &rem), &rc->stats.sat[RAST_REG_XY]);
+   e->rem = rem;
+
+   bool steps = e->j_end > j;
+   e->step = e->step_rem = 0;
+   if (steps) {
+      int64_t q = floor_div(dx * S, e->dy, &rem);
+      /* The dx/dy register; a clamped slope loses the exact walk. */
+      if (q > fx_max(prof->dxdy) || q < fx_min(prof->dxdy)) {
+         q = fx_sat(prof->dxdy, q, &rc->stats.sat[RAST_REG_DXDY]);
+         rem = 0;
+      }
+      e->step = q;
+      e->step_rem = rem;
+   }
+
+   if (!e->left)
+      return;
+   for (unsigned k = 0; k < fr->nfix; k++) {
+      int64_t va = fr->vfix[e->a][k], d = fr->vfix[e->b][k] - va;
+      e->fix[k] = fr_fix_sat(fr, k, (fx_i128)va + fx_div_round_i128((fx_i128)d * t, e->dy));
+      e->fix_step[k] = steps ? fr_fix_sat(fr, k, fx_div_round_i128((fx_i128)d * S, e->dy)) : 0;
+   }
+   double ft = (double)t / (double)e->dy, fs = (double)S / (double)e->dy;
+   for (unsigned k = 0; k < fr->nflt; k++) {
+      double va = fr->vflt[e->a][k], d = (double)fr->vflt[e->b][k] - va;
+      e->flt[k] = (float)(va + d * ft);
+      e->flt_step[k] = (float)(d * fs);
+   }
+}
+
+static inline void edge_step(struct rast_context *rc, struct rast_front *fr, struct fr_edge *e)
+{
+   struct fx_format xy = rc->profile->xy;
+   struct fx_sat *s = &rc->stats.sat[RAST_REG_XY];
+   e->x = fx_add(xy, e->x, e->step, s);
+   e->rem += e->step_rem;
+   if (e->rem >= e->dy) {
+      e->rem -= e->dy;
+      e->x = fx_add(xy, e->x, 1, s);
+   }
+   if (!e->left)
+      return;
+   for (unsigned k = 0; k < fr->nfix; k++)
+      e->fix[k] = fr_fix_add(fr, k, e->fix[k], e->fix_step[k]);
+   for (unsigned k = 0; k < fr->nflt; k++)
+      e->flt[k] += e->flt_step[k];
+}
+
+static inline void record_row(struct rast_context *rc, struct rast_front *fr, struct fr_row *row,
+                              const struct fr_edge *L, const struct fr_edge *R)
+{
+   struct fx_format xy = rc->profile->xy;
+   int64_t xs = fx_ceil_int(xy, L->x - fr->H + (L->rem != 0));
+   int64_t xe = fx_ceil_int(xy, R->x - fr->H + (R->rem != 0)) - 1;
+   if (xs < rc->clip.minx) xs = rc->clip.minx;
+   if (xe > rc->clip.maxx - 1) xe = rc->clip.maxx - 1;
+   row->valid = true;
+   row->xs = xs;
+   row->xe = xe;
+   row->xl = L->x;
+   row->xl_frac = (float)L->rem / (float)L->dy;
+   for (unsigned k = 0; k < fr->nfix; k++)
+      row->fix[k] = L->fix[k];
+   for (unsigned k = 0; k < fr->nflt; k++)
+      row->flt[k] = L->flt[k];
+}
+
+void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
+{
+   struct fx_format xy = rc->profile->xy;
+   int64_t jtop = INT64_MAX, jbot = INT64_MIN;
+
+   for (unsigned s = 0; s < fr->nsec; s++) {
+      struct fr_section *sec = &fr->sec[s];
+      sec->j0 = ceil_row(fr, xy, sec->ytop);
+      sec->j1 = ceil_row(fr, xy, sec->ybot) - 1;
+      if (sec->j0 > sec->j1)
+         continue;
+      if (sec->j0 < jtop) jtop = sec->j0;
+      if (sec->j1 > jbot) jbot = sec->j1;
+   }
+   /* Scan lines outside the clip are never walked: the first visible one
+    * is reached by edge_start's jump. */
+   int64_t jlo = jtop > rc->clip.miny ? jtop : rc->clip.miny;
+   int64_t jhi = jbot < rc->clip.maxy - 1 ? jbot : rc->clip.maxy - 1;
+   if (jlo > jhi)
+      return;
+
+   for (unsigned s = 0; s < fr->nsec; s++) {
+      fr->sec[s].l->j_end = INT64_MIN;
+      fr->sec[s].r->j_end = INT64_MIN;
+   }
+   unsigned cur = fr->nsec;
+   for (unsigned s = 0; s < fr->nsec; s++) {
+      struct fr_section *sec = &fr->sec[s];
+      int64_t a = sec->j0 > jlo ? sec->j0 : jlo;
+      int64_t b = sec->j1 < jhi ? sec->j1 : jhi;
+      if (a > b)
+         continue;
+      if (cur == fr->nsec)
+         cur = s;
+      if (b > sec->l->j_end) sec->l->j_end = b;
+      if (b > sec->r->j_end) sec->r->j_end = b;
+   }
+
+   struct fr_edge *L = fr->sec[cur].l, *R = fr->sec[cur].r;
+   edge_start(rc, fr, L, jlo);
+   edge_start(rc, fr, R, jlo);
+
+   for (int64_t p = jlo & ~(int64_t)1; p <= jhi; p += 2) {
+      for (unsigned r = 0; r < 2; r++) {
+         int64_t j = p + r;
+         struct fr_row *row = &fr->row[r];
+         if (j < jlo || j > jhi) {
+            row->valid = false;
+            row->xs = 1;
+            row->xe = 0;
+            continue;
+         }
+         if (j > fr->sec[cur].j1) {
+            /* Into half B (or the next section of a line): the edge that
+             * continues keeps its registers (X_next), the new one is loaded. */
+            while (j > fr->sec[cur].j1)
+               cur++;
+            if (fr->sec[cur].l != L) { L = fr->sec[cur].l; edge_start(rc, fr, L, j); }
+            if (fr->sec[cur].r != R) { R = fr->sec[cur].r; edge_start(rc, fr, R, j); }
+         }
+         record_row(rc, fr, row, L, R);
+         if (j < L->j_end) edge_step(rc, fr, L);
+         if (j < R->j_end) edge_step(rc, fr, R);
+      }
+      fr->pair(rc, fr, p);
+   }
+}
+
+void rast_scan_convex(struct rast_context *rc, struct rast_front *fr)
+{
+   unsigned n = fr->nverts;
+   fx_i128 area2 = 0;
+   for (unsigned i = 0; i < n; i++) {
+      unsigned k = (i + 1) % n;
+      area2 += (fx_i128)fr->X[i] * fr->Y[k] - (fx_i128)fr->X[k] * fr->Y[i];
+   }
+   if (area2 == 0)
+      return;
+   /* With y down, a negative area means the forward order runs down the
+    * left side. */
+   bool fwd_left = area2 < 0;
+
+   unsigned ne = 0;
+   for (unsigned i = 0; i < n; i++) {
+      unsigned k = (i + 1) % n;
+      if (fr->Y[i] == fr->Y[k])
+         continue;
+      struct fr_edge *e = &fr->edge[ne++];
+      bool down = fr->Y[i] < fr->Y[k];
+      unsigned a = down ? i : k, b = down ? k : i;
+      e->a = (uint8_t)a; e->b = (uint8_t)b;
+      e->xa = fr->X[a]; e->ya = fr->Y[a];
+      e->xb = fr->X[b]; e->yb = fr->Y[b];
+      e->left = down ? fwd_left : !fwd_left;
+   }
+
+   /* The distinct vertex y values, sorted: section boundaries. */
+   int64_t ys[FR_MAX_VERTS];
+   unsigned ny = 0;
+   for (unsigned i = 0; i < n; i++) {
+      unsigned p = 0;
+      while (p < ny && ys[p] < fr->Y[i]) p++;
+      if (p < ny && ys[p] == fr->Y[i]) continue;
+      for (unsigned q = ny; q > p; q--) ys[q] = ys[q - 1];
+      ys[p] = fr->Y[i];
+      ny++;
+   }
+
+   fr->nsec = 0;
+   for (unsigned s = 0; s + 1 < ny; s++) {
+      struct fr_section *sec = &fr->sec[fr->nsec];
+      sec->ytop = ys[s];
+      sec->ybot = ys[s + 1];
+      sec->l = sec->r = NULL;
+      for (unsigned i = 0; i < ne; i++) {
+         struct fr_edge *e = &fr->edge[i];
+         if (e->ya <= sec->ytop && e->yb >= sec->ybot) {
+            if (e->left) sec->l = e; else sec->r = e;
+         }
+      }
+      if (sec->l && sec->r)
+         fr->nsec++;
+   }
+   if (fr->nsec)
+      rast_scan_sections(rc, fr);
+}

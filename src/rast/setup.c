@@ -1,0 +1,244 @@
+/*
+ * Triangle setup (seed 000, section 2): fixed-point vertices, the culling
+ * determinant, the plane slopes, the sort by y, the types 0/1/2 and the split
+ * into halves A and B.  Validation of the front end lives here too: it picks
+ * which attribute registers exist and the span processor that walks them.
+ */
+#include <stdlib.h>
+#include "rast/front.h"
+
+static void add_comp(struct fr_comp *list, unsigned *n, unsigned var, unsigned chan,
+                     unsigned slot)
+{
+   list[*n].var = (uint8_t)var;
+   list[*n].chan = (uint8_t)chan;
+   list[*n].slot = (uint8_t)slot;
+   (*n)++;
+}
+
+static void set_fix_class(struct rast_context *rc, struct rast_front *fr, unsigned k,
+                          struct fx_format f, enum rast_reg_class cls)
+{
+   fr->fix_fmt[k] = f;
+   fr->fix_min[k] = fx_min(f);
+   fr->fix_max[k] = fx_max(f);
+   fr->fix_sat[k] = &rc->stats.sat[cls];
+}
+
+static void compute_clip(struct rast_context *rc)
+{
+   struct rast_scissor c = { 0, 0, (int)rc->fb.width, (int)rc->fb.height };
+   /* X_out/Y_out are the profile's output width: nothing beyond is drawn. */
+   int lim = (int)rc->profile->max_target;
+   if (c.maxx > lim) c.maxx = lim;
+   if (c.maxy > lim) c.maxy = lim;
+   if (rc->rs.scissor) {
+      if (rc->scissor.minx > c.minx) c.minx = rc->scissor.minx;
+      if (rc->scissor.miny > c.miny) c.miny = rc->scissor.miny;
+      if (rc->scissor.maxx < c.maxx) c.maxx = rc->scissor.maxx;
+      if (rc->scissor.maxy < c.maxy) c.maxy = rc->scissor.maxy;
+   }
+   if (c.maxx < c.minx) c.maxx = c.minx;
+   if (c.maxy < c.miny) c.maxy = c.miny;
+   rc->clip = c;
+}
+
+void rast_front_validate(struct rast_context *rc)
+{
+   if (!rc->front_priv) {
+      rc->front_priv = calloc(1, sizeof(struct rast_front));
+      if (!rc->front_priv)
+         abort();
+   }
+   struct rast_front *fr = rast_front(rc);
+   const struct rast_profile *prof = rc->profile;
+
+   fr->S = fx_one(prof->xy);
+   fr->H = rc->rs.half_pixel_center ? fr->S / 2 : 0;
+   fr->row_bias = rc->rs.bottom_edge_rule ? 1 : 0;
+   fr->inv_S = 1.0f / (float)fr->S;
+   fr->z_scale = 1.0 / (((double)(INT64_C(1) << prof->z_bits) - 1.0) *
+                        (double)fx_one(prof->z));
+   fr->color_scale = (float)(1.0 / (255.0 * (double)fx_one(prof->color)));
+
+   fr->ncolor = fr->nlin = fr->npersp = fr->nconst = 0;
+   for (unsigned i = 0; i < rc->vl.num_varyings && i < RAST_MAX_VARYINGS; i++) {
+      const struct rast_varying *vr = &rc->vl.varying[i];
+      for (unsigned c = 0; c < 4; c++) {
+         if (!(vr->usage_mask & (1u << c)))
+            continue;
+         switch (vr->interp) {
+         case RAST_INTERP_LINEAR:
+            add_comp(fr->lin, &fr->nlin, i, c, vr->slot);
+            break;
+         case RAST_INTERP_PERSPECTIVE:
+            add_comp(fr->persp, &fr->npersp, i, c, vr->slot);
+            break;
+         case RAST_INTERP_COLOR:
+            if (rc->rs.flatshade)
+               add_comp(fr->cnst, &fr->nconst, i, c, vr->slot);
+            else if (prof->color_perspective)
+               add_comp(fr->persp, &fr->npersp, i, c, vr->slot);
+            else
+               add_comp(fr->color, &fr->ncolor, i, c, vr->slot);
+            break;
+         default:
+            add_comp(fr->cnst, &fr->nconst, i, c, vr->slot);
+            break;
+         }
+      }
+   }
+   fr->nfix = 1 + fr->ncolor;
+   fr->nflt = 1 + fr->nlin + fr->npersp;
+   set_fix_class(rc, fr, 0, prof->z, RAST_REG_Z);
+   for (unsigned k = 1; k < fr->nfix; k++)
+      set_fix_class(rc, fr, k, prof->color, RAST_REG_COLOR);
+
+   fr->pair = rast_interp_choose(fr);
+   compute_clip(rc);
+}
+
+void rast_front_destroy(struct rast_context *rc)
+{
+   free(rc->front_priv);
+   rc->front_priv = NULL;
+}
+
+void rast_setup_attribs(struct rast_context *rc, struct rast_front *fr,
+                        unsigned k, const float (*v)[4])
+{
+   const struct rast_profile *prof = rc->profile;
+   const float *pos = v[rc->vl.pos_slot];
+   double zfull = (double)(INT64_C(1) << prof->z_bits) - 1.0;
+
+   fr->vfix[k][0] = fx_from_double(prof->z, (double)pos[2] * zfull,
+                                   &rc->stats.sat[RAST_REG_Z]);
+   for (unsigned i = 0; i < fr->ncolor; i++) {
+      const struct fr_comp *c = &fr->color[i];
+      fr->vfix[k][1 + i] = fx_from_double(prof->color, (double)v[c->slot][c->chan] * 255.0,
+                                          &rc->stats.sat[RAST_REG_COLOR]);
+   }
+   float oow = pos[3];
+   fr->vflt[k][0] = oow;
+   for (unsigned i = 0; i < fr->nlin; i++)
+      fr->vflt[k][1 + i] = v[fr->lin[i].slot][fr->lin[i].chan];
+   for (unsigned i = 0; i < fr->npersp; i++)
+      fr->vflt[k][1 + fr->nlin + i] = v[fr->persp[i].slot][fr->persp[i].chan] * oow;
+}
+
+void rast_setup_constants(struct rast_front *fr, const float (*pv)[4])
+{
+   for (unsigned i = 0; i < fr->nconst; i++) {
+      const struct fr_comp *c = &fr->cnst[i];
+      float val = pv[c->slot][c->chan];
+      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+         fr->quad.in[c->var][c->chan][p] = val;
+   }
+}
+
+/* The plane of every attribute through the three fixed-point vertices:
+ * ∂/∂x and ∂/∂y per pixel, once per triangle.  Fixed registers get the exact
+ * quotient rounded once; floats are computed in double. */
+static void tri_gradients(struct rast_front *fr)
+{
+   int64_t ex = fr->X[1] - fr->X[0], ey = fr->Y[1] - fr->Y[0];
+   int64_t gx = fr->X[2] - fr->X[0], gy = fr->Y[2] - fr->Y[0];
+   int64_t D = ex * gy - ey * gx;
+   fx_i128 DS = (fx_i128)D;
+
+   for (unsigned k = 0; k < fr->nfix; k++) {
+      int64_t d1 = fr->vfix[1][k] - fr->vfix[0][k];
+      int64_t d2 = fr->vfix[2][k] - fr->vfix[0][k];
+      fx_i128 nx = ((fx_i128)d1 * gy - (fx_i128)d2 * ey) * fr->S;
+      fx_i128 ny = ((fx_i128)d2 * ex - (fx_i128)d1 * gx) * fr->S;
+      fr->fix_dx[k] = fr_fix_sat(fr, k, fx_div_round_i128(nx, DS));
+      fr->fix_dy[k] = fr_fix_sat(fr, k, fx_div_round_i128(ny, DS));
+   }
+   double inv = (double)fr->S / (double)D;
+   for (unsigned k = 0; k < fr->nflt; k++) {
+      double d1 = (double)fr->vflt[1][k] - fr->vflt[0][k];
+      double d2 = (double)fr->vflt[2][k] - fr->vflt[0][k];
+      fr->flt_dx[k] = (float)((d1 * (double)gy - d2 * (double)ey) * inv);
+      fr->flt_dy[k] = (float)((d2 * (double)ex - d1 * (double)gx) * inv);
+   }
+}
+
+static void set_edge(struct rast_front *fr, struct fr_edge *e, unsigned a, unsigned b, bool left)
+{
+   e->a = (uint8_t)a;
+   e->b = (uint8_t)b;
+   e->xa = fr->X[a]; e->ya = fr->Y[a];
+   e->xb = fr->X[b]; e->yb = fr->Y[b];
+   e->left = left;
+}
+
+/* Sort by y, classify and split (seed 000, Fig. 4).  The long edge top->bot
+ * is one register set used by both halves: at the split it still holds the
+ * long edge's x for the first scan line of B (the seed's X_next). */
+static void tri_sections(struct rast_front *fr)
+{
+   unsigned top = 0, mid = 1, bot = 2, t;
+   if (fr->Y[mid] < fr->Y[top]) { t = top; top = mid; mid = t; }
+   if (fr->Y[bot] < fr->Y[mid]) { t = mid; mid = bot; bot = t; }
+   if (fr->Y[mid] < fr->Y[top]) { t = top; top = mid; mid = t; }
+
+   /* > 0: the middle vertex lies left of the long edge (y grows down). */
+   fx_i128 cross = (fx_i128)(fr->X[bot] - fr->X[top]) * (fr->Y[mid] - fr->Y[top]) -
+                   (fx_i128)(fr->X[mid] - fr->X[top]) * (fr->Y[bot] - fr->Y[top]);
+   bool mid_left = cross > 0;
+   /* Type 0 (flat top or flat bottom) is the case where one half is empty;
+    * types 1 and 2 (middle vertex left/right) differ only in mid_left. */
+
+   struct fr_edge *lng = &fr->edge[0], *ea = &fr->edge[1], *eb = &fr->edge[2];
+   set_edge(fr, lng, top, bot, !mid_left);
+   set_edge(fr, ea, top, mid, mid_left);
+   set_edge(fr, eb, mid, bot, mid_left);
+
+   struct fr_section *A = &fr->sec[0], *B = &fr->sec[1];
+   A->ytop = fr->Y[top]; A->ybot = fr->Y[mid];
+   B->ytop = fr->Y[mid]; B->ybot = fr->Y[bot];
+   A->l = mid_left ? ea : lng;  A->r = mid_left ? lng : ea;
+   B->l = mid_left ? eb : lng;  B->r = mid_left ? lng : eb;
+   fr->nsec = 2;
+}
+
+void rast_triangle(struct rast_context *rc, const float (*v0)[4],
+                   const float (*v1)[4], const float (*v2)[4])
+{
+   rast_validate(rc);
+   struct rast_front *fr = rast_front(rc);
+   const struct rast_profile *prof = rc->profile;
+   const float (*v[3])[4] = { v0, v1, v2 };
+   unsigned ps = rc->vl.pos_slot;
+   struct fx_sat *sxy = &rc->stats.sat[RAST_REG_XY];
+
+   fr->nverts = 3;
+   for (unsigned k = 0; k < 3; k++) {
+      fr->X[k] = fx_from_double(prof->xy, v[k][ps][0], sxy);
+      fr->Y[k] = fx_from_double(prof->xy, v[k][ps][1], sxy);
+   }
+
+   /* softpipe's det = (v0 - v2) x (v1 - v2) in gallium's window coordinates,
+    * exact on the fixed-point vertices; zero is a triangle seen edge-on. */
+   int64_t det = (fr->X[0] - fr->X[2]) * (fr->Y[1] - fr->Y[2]) -
+                 (fr->Y[0] - fr->Y[2]) * (fr->X[1] - fr->X[2]);
+   if (det == 0) {
+      rc->stats.culled++;
+      return;
+   }
+   unsigned facing = (unsigned)(det < 0) ^ (unsigned)rc->rs.front_ccw;   /* 0 = front */
+   unsigned face = facing ? RAST_CULL_BACK : RAST_CULL_FRONT;
+   if (face & (unsigned)rc->rs.cull) {
+      rc->stats.culled++;
+      return;
+   }
+   rc->stats.triangles++;
+   fr->quad.front_facing = facing == 0;
+
+   for (unsigned k = 0; k < 3; k++)
+      rast_setup_attribs(rc, fr, k, v[k]);
+   tri_gradients(fr);
+   rast_setup_constants(fr, rc->rs.flatshade_first ? v0 : v2);
+   tri_sections(fr);
+   rast_scan_sections(rc, fr);
+}

@@ -1,0 +1,183 @@
+/* Shared plumbing of the e2e test programs. */
+#include "e2e_common.h"
+#include "fp_png.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static _Noreturn void usage(const char *prog)
+{
+   fprintf(stderr, "usage: %s -o out.png [--mask mask.png] [--size N] [--name value ...]\n",
+           prog);
+   exit(2);
+}
+
+void e2e_parse(struct e2e_args *a, int argc, char **argv, int default_size)
+{
+   memset(a, 0, sizeof(*a));
+   a->size = default_size;
+   for (int i = 1; i < argc; i++) {
+      if (i + 1 >= argc || strncmp(argv[i], "-", 1) != 0)
+         usage(argv[0]);
+      const char *k = argv[i], *v = argv[++i];
+      if (!strcmp(k, "-o"))
+         a->out = v;
+      else if (!strcmp(k, "--mask"))
+         a->mask = v;
+      else if (!strcmp(k, "--size"))
+         a->size = atoi(v);
+      else if (!strncmp(k, "--", 2) && a->nopt < 8) {
+         a->opt[a->nopt][0] = k + 2;
+         a->opt[a->nopt][1] = v;
+         a->nopt++;
+      } else
+         usage(argv[0]);
+   }
+   if (!a->out || a->size < 16 || a->size > 4096)
+      usage(argv[0]);
+}
+
+const char *e2e_opt(const struct e2e_args *a, const char *name, const char *def)
+{
+   for (int i = 0; i < a->nopt; i++)
+      if (!strcmp(a->opt[i][0], name))
+         return a->opt[i][1];
+   return def;
+}
+
+void e2e_begin(struct fp_gl *g, const struct e2e_args *a)
+{
+   fp_gl_init(g, a->size, a->size);
+   printf("renderer: %s\n", fp_gl_renderer());
+}
+
+void e2e_end(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask)
+{
+   size_t bytes = (size_t)g->w * (size_t)g->h * 4;
+   unsigned char *px = malloc(bytes);
+   char err[512];
+   if (!px)
+      fp_die("out of memory");
+   fp_gl_check("the test's drawing");
+   fp_gl_read_rgba(g, px);
+   if (fp_png_write(a->out, g->w, g->h, px, err, sizeof(err)) != 0)
+      fp_die("%s", err);
+   if (a->mask) {
+      unsigned char *m = NULL;
+      if (!mask) {
+         m = calloc(bytes, 1);
+         if (!m)
+            fp_die("out of memory");
+         for (size_t i = 3; i < bytes; i += 4)
+            m[i] = 255;
+      }
+      if (fp_png_write(a->mask, g->w, g->h, mask ? mask : m, err, sizeof(err)) != 0)
+         fp_die("%s", err);
+      free(m);
+   }
+   free(px);
+   fp_gl_fini(g);
+}
+
+GLuint e2e_color_program(void)
+{
+   static const char *vs =
+      "attribute vec4 a_pos;\n"
+      "attribute vec4 a_color;\n"
+      "varying vec4 v_color;\n"
+      "void main() { v_color = a_color; gl_Position = a_pos; }\n";
+   static const char *fs =
+      "precision mediump float;\n"
+      "varying vec4 v_color;\n"
+      "void main() { gl_FragColor = v_color; }\n";
+   static const char *const attr[] = { "a_pos", "a_color", NULL };
+   return fp_gl_program(vs, fs, attr);
+}
+
+void e2e_draw(GLenum mode, int n, const float *pos, const float *color, const float rgba[4])
+{
+   glBindBuffer(GL_ARRAY_BUFFER, 0);
+   glEnableVertexAttribArray(0);
+   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, pos);
+   if (color) {
+      glEnableVertexAttribArray(1);
+      glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 0, color);
+   } else {
+      glDisableVertexAttribArray(1);
+      glVertexAttrib4fv(1, rgba);
+   }
+   glDrawArrays(mode, 0, n);
+   glDisableVertexAttribArray(0);
+   glDisableVertexAttribArray(1);
+}
+
+float e2e_ndc(int32_t sub, int size)
+{
+   /* x_w = (x_ndc + 1) * size / 2 and x_w = sub / 256. */
+   return (float)((double)sub * 2.0 / ((double)size * E2E_SUB) - 1.0);
+}
+
+uint32_t e2e_rand(uint32_t *s)
+{
+   uint32_t x = *s;
+   x ^= x << 13;
+   x ^= x >> 17;
+   x ^= x << 5;
+   return *s = x;
+}
+
+int e2e_rand_range(uint32_t *s, int lo, int hi)
+{
+   return lo + (int)(e2e_rand(s) % (uint32_t)(hi - lo + 1));
+}
+
+int64_t e2e_tri_area2(const struct e2e_tri *t)
+{
+   return (int64_t)(t->x[1] - t->x[0]) * (t->y[2] - t->y[0]) -
+          (int64_t)(t->x[2] - t->x[0]) * (t->y[1] - t->y[0]);
+}
+
+long e2e_tri_ties(const struct e2e_tri *t, int size, unsigned char *mask)
+{
+   int32_t minx = t->x[0], maxx = t->x[0], miny = t->y[0], maxy = t->y[0];
+   for (int k = 1; k < 3; k++) {
+      if (t->x[k] < minx) minx = t->x[k];
+      if (t->x[k] > maxx) maxx = t->x[k];
+      if (t->y[k] < miny) miny = t->y[k];
+      if (t->y[k] > maxy) maxy = t->y[k];
+   }
+   int i0 = minx / E2E_SUB - 1, i1 = maxx / E2E_SUB + 1;
+   int j0 = miny / E2E_SUB - 1, j1 = maxy / E2E_SUB + 1;
+   if (i0 < 0) i0 = 0;
+   if (j0 < 0) j0 = 0;
+   if (i1 > size - 1) i1 = size - 1;
+   if (j1 > size - 1) j1 = size - 1;
+   int64_t area = e2e_tri_area2(t);
+   long ties = 0;
+   for (int j = j0; j <= j1; j++)
+      for (int i = i0; i <= i1; i++) {
+         int64_t px = (int64_t)i * E2E_SUB + E2E_SUB / 2, py = (int64_t)j * E2E_SUB + E2E_SUB / 2;
+         int on_edge = 0, outside = 0;
+         for (int k = 0; k < 3; k++) {
+            int a = k, b = (k + 1) % 3;
+            /* Edge function, oriented so that the inside is positive. */
+            int64_t e = (int64_t)(t->x[b] - t->x[a]) * (py - t->y[a]) -
+                        (int64_t)(t->y[b] - t->y[a]) * (px - t->x[a]);
+            if (area < 0)
+               e = -e;
+            if (e == 0)
+               on_edge = 1;
+            else if (e < 0)
+               outside = 1;
+         }
+         if (on_edge && !outside) {
+            ties++;
+            if (mask) {
+               unsigned char *m = mask + ((size_t)(size - 1 - j) * (size_t)size + (size_t)i) * 4;
+               m[0] = m[1] = m[2] = m[3] = 255;
+            }
+         }
+      }
+   return ties;
+}

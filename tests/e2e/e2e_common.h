@@ -1,0 +1,68 @@
+/*
+ * What every e2e test program shares: its command line, a flat/Gouraud
+ * colour program, drawing from client arrays, the exact sub-pixel grid and
+ * its tie test, and writing the result and the mask.
+ *
+ * Every program is run once per driver and prints
+ *   renderer: <GL_RENDERER>       (the runner checks it names the driver)
+ *   stat: key=value               (figures the runner repeats on its line)
+ * and writes -o OUT.png (what was rendered) and --mask MASK.png (pixels the
+ * comparison leaves out, non-zero = excluded; computed on the CPU, so both
+ * drivers' masks must be identical).
+ */
+#ifndef E2E_COMMON_H
+#define E2E_COMMON_H
+
+#include "fp_gl.h"
+
+#include <stdint.h>
+
+/* Vertices live on a 1/256 pixel grid: positions are integers in these
+ * units, exactly representable for every driver under test. */
+#define E2E_SUB 256
+
+struct e2e_args {
+   const char *out, *mask;
+   int size;                 /* square target side in pixels */
+   const char *opt[8][2];    /* test-specific "--name value" pairs */
+   int nopt;
+};
+
+/* Parses -o, --mask, --size and keeps any other "--name value" pair;
+ * exits with usage on error.  default_size when --size is absent. */
+void e2e_parse(struct e2e_args *a, int argc, char **argv, int default_size);
+/* The value of a test-specific option, or def. */
+const char *e2e_opt(const struct e2e_args *a, const char *name, const char *def);
+
+/* Creates the context, prints the renderer. */
+void e2e_begin(struct fp_gl *g, const struct e2e_args *a);
+/* Reads back, writes -o and --mask (mask may be NULL: nothing excluded),
+ * tears down. */
+void e2e_end(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask);
+
+/* Program with a_pos (vec4, clip space) and a_color (vec4) varying. */
+GLuint e2e_color_program(void);
+/* Draws n vertices of mode from client arrays: pos 4 floats, color 4 floats
+ * (color NULL: attribute 1 constant at rgba). */
+void e2e_draw(GLenum mode, int n, const float *pos, const float *color, const float rgba[4]);
+
+/* Sub-pixel grid unit -> clip-space x or y for a target of `size` pixels;
+ * exact for power-of-two sizes. */
+float e2e_ndc(int32_t sub, int size);
+
+/* Deterministic PRNG (xorshift32): the same triangles on every machine. */
+uint32_t e2e_rand(uint32_t *state);
+int e2e_rand_range(uint32_t *state, int lo, int hi);   /* inclusive */
+
+/* A triangle in grid units, window coordinates (y up, as GL). */
+struct e2e_tri { int32_t x[3], y[3]; };
+
+/* Number of pixel centres (i+0.5, j+0.5) inside the target that lie exactly
+ * on an edge of the triangle, inside its closed span: the pixels where the
+ * fill rule alone decides.  If mask != NULL, marks them (PNG row order,
+ * RGBA, value 255). */
+long e2e_tri_ties(const struct e2e_tri *t, int size, unsigned char *mask);
+/* Twice the signed area in grid units squared (0: degenerate). */
+int64_t e2e_tri_area2(const struct e2e_tri *t);
+
+#endif

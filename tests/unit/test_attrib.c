@@ -1,0 +1,245 @@
+/*
+ * Attributes at pixel centres against the exact plane through the
+ * fixed-point vertices (barycentrics in double):
+ *   Z (raw register):  |err| <= 2 + (rows + columns walked)/2 + |dZ/dx|/4096 ulps
+ *                      (each Δ/Δy and ∂/∂x step rounds by at most 1/2 ulp;
+ *                      the subpixel correction starts from X_left's floor)
+ *   colour (seed, 9.12 walk): the same bound in colour ulps
+ *   linear and perspective varyings, 1/w: relative error <= 1e-4 of the
+ *                      largest vertex magnitude (float walk over <= 256 px)
+ * for covered pixels and for helpers (extrapolated values, also on scan
+ * lines outside the triangle).  Also: flat inputs take the provoking vertex,
+ * COLOR is flat under flatshade, front_facing follows softpipe's rule.
+ */
+#include <math.h>
+#include <string.h>
+#include "tutil.h"
+#include "fixed/fx.h"
+
+static struct tctx t;
+static int64_t X[3], Y[3];
+static double Zr[3], Cr[3], P[3], L[3], OW[3], flatv;
+static bool wide;
+static double worst_z, worst_c, worst_p, worst_l, worst_w;
+static uint64_t helpers_checked, covered_checked, bad_face;
+static bool expect_front;
+static double zbound, cbound;
+static unsigned sat_tris;
+
+static void bary(double px, double py, double l[3])
+{
+   double D = (double)(X[1] - X[0]) * (double)(Y[2] - Y[0]) - (double)(X[2] - X[0]) * (double)(Y[1] - Y[0]);
+   l[1] = ((px - X[0]) * (double)(Y[2] - Y[0]) - (double)(X[2] - X[0]) * (py - Y[0])) / D;
+   l[2] = ((double)(X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (double)(Y[1] - Y[0])) / D;
+   l[0] = 1 - l[1] - l[2];
+}
+
+static double clampd(double v, struct fx_format f)
+{
+   if (v > (double)fx_max(f)) return (double)fx_max(f);
+   if (v < (double)fx_min(f)) return (double)fx_min(f);
+   return v;
+}
+
+static void hook(struct tctx *tc, const struct rast_quad *q)
+{
+   double S = (double)fx_one(tc->prof->xy), H = S / 2;
+   if (q->front_facing != expect_front)
+      bad_face++;
+   for (unsigned i = 0; i < 4; i++) {
+      bool cov = q->mask & (1u << i);
+      double px = (q->x + (int)(i & 1)) * S + H, py = (q->y + (int)(i >> 1)) * S + H;
+      double l[3];
+      bary(px, py, l);
+      /* the register clamps at the format's ends (helpers far out) */
+      double z = clampd(l[0] * Zr[0] + l[1] * Zr[1] + l[2] * Zr[2], tc->prof->z);
+      double ez = fabs((double)q->z[i] - z);
+      if (ez > worst_z) worst_z = ez;
+      CHECK(ez <= zbound, "Z at (%d,%d) %s: %lld vs %.2f", q->x + (int)(i & 1),
+            q->y + (int)(i >> 1), cov ? "covered" : "helper", (long long)q->z[i], z);
+      double ow = l[0] * OW[0] + l[1] * OW[1] + l[2] * OW[2];
+      double ew = fabs(q->frag_w[i] - ow) / 2.0;
+      if (ew > worst_w) worst_w = ew;
+      CHECK(ew <= 1e-4, "1/w: %g vs %g", q->frag_w[i], ow);
+      double pw = l[0] * P[0] * OW[0] + l[1] * P[1] * OW[1] + l[2] * P[2] * OW[2];
+      double pe = fabs(q->in[1][0][i] - pw / ow) / (fabs(pw / ow) > 1 ? fabs(pw / ow) : 1);
+      if (pe > worst_p) worst_p = pe;
+      CHECK(pe <= 1e-4, "perspective: %g vs %g (%s)", q->in[1][0][i], pw / ow, cov ? "covered" : "helper");
+      double lv = l[0] * L[0] + l[1] * L[1] + l[2] * L[2];
+      double le = fabs(q->in[2][1][i] - lv);
+      if (le > worst_l) worst_l = le;
+      CHECK(le <= 1e-4, "linear: %g vs %g", q->in[2][1][i], lv);
+      CHECK(q->in[3][2][i] == (float)flatv, "flat: %g vs %g", q->in[3][2][i], flatv);
+      if (!wide) {
+         double c = clampd(l[0] * Cr[0] + l[1] * Cr[1] + l[2] * Cr[2], tc->prof->color);
+         double got = q->in[0][0][i] * 255.0 * 4096.0;
+         double ec = fabs(got - c);
+         if (ec > worst_c) worst_c = ec;
+         CHECK(ec <= cbound, "colour at (%d,%d) %s: %g vs %g ulps, bound %g", q->x + (int)(i & 1), q->y + (int)(i >> 1), cov ? "covered" : "helper", got, c, cbound);
+      } else {
+         /* wide: colour is perspective-correct */
+         double cw = l[0] * Cr[0] * OW[0] + l[1] * Cr[1] * OW[1] + l[2] * Cr[2] * OW[2];
+         double ce = fabs(q->in[0][0][i] - cw / ow) / (fabs(cw / ow) > 1 ? fabs(cw / ow) : 1);
+         if (ce > worst_c) worst_c = ce;
+         CHECK(ce <= 1e-4, "wide colour: %g vs %g", q->in[0][0][i], cw / ow);
+      }
+      if (cov) covered_checked++; else helpers_checked++;
+   }
+}
+
+static void run(const char *profile)
+{
+   t_init(&t, profile, 1024, 1024);
+   wide = strcmp(profile, "wide") == 0;
+   t.hook = hook;
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof vl);
+   vl.vertex_size = 5;
+   vl.pos_slot = 0;
+   vl.num_varyings = 4;
+   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_COLOR, 0x1 };
+   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_PERSPECTIVE, 0x1 };
+   vl.varying[2] = (struct rast_varying){ 3, RAST_INTERP_LINEAR, 0x2 };
+   vl.varying[3] = (struct rast_varying){ 4, RAST_INTERP_CONSTANT, 0x4 };
+   rast_set_vertex_layout(t.rc, &vl);
+   struct fx_sat s = { 0, 0 };
+   double zfull = (double)((1 << t.prof->z_bits) - 1);
+
+   for (int n = 0; n < 3000; n++) {
+      struct rast_raster_state rs;
+      memset(&rs, 0, sizeof rs);
+      rs.half_pixel_center = true;
+      rs.front_ccw = n & 1;
+      rs.flatshade_first = (n >> 1) & 1;
+      rs.bottom_edge_rule = (n >> 2) & 1;
+      rs.line_width = 1;
+      rast_set_raster_state(t.rc, &rs);
+      double size = 2 + 250 * t_rand() * t_rand();
+      double cx = 100 + 800 * t_rand(), cy = 100 + 800 * t_rand();
+      float v[3][5][4];
+      memset(v, 0, sizeof v);
+      /* well-shaped triangles: slivers have gradients beyond the formats
+       * (test_saturation covers those) */
+      double area;
+      do {
+         for (int k = 0; k < 3; k++) {
+            v[k][0][0] = (float)(cx + size * (t_rand() - 0.5));
+            v[k][0][1] = (float)(cy + size * (t_rand() - 0.5));
+         }
+         area = fabs((double)(v[1][0][0] - v[0][0][0]) * (v[2][0][1] - v[0][0][1]) -
+                     (double)(v[2][0][0] - v[0][0][0]) * (v[1][0][1] - v[0][0][1]));
+      } while (area < 0.1 * size * size);
+      /* depth and colour ranges a triangle of this size can hold in the
+       * slope formats (full-scale change within a pixel saturates ∂/∂x) */
+      double span = size / 8 < 1 ? size / 8 : 1;
+      double zc = span / 2 + (1 - span) * t_rand(), cc = span / 2 + (1 - span) * t_rand();
+      for (int k = 0; k < 3; k++) {
+         v[k][0][2] = (float)(zc + span * (t_rand() - 0.5));
+         float w = (float)(0.5 + 1.5 * t_rand());
+         v[k][0][3] = 1.0f / w;
+         v[k][1][0] = (float)(cc + span * (t_rand() - 0.5));
+         v[k][2][0] = (float)(2 * t_rand() - 1);
+         v[k][3][1] = (float)(2 * t_rand() - 1);
+         v[k][4][2] = (float)(10 * t_rand());
+         X[k] = fx_from_double(t.prof->xy, v[k][0][0], &s);
+         Y[k] = fx_from_double(t.prof->xy, v[k][0][1], &s);
+         Zr[k] = (double)fx_from_double(t.prof->z, v[k][0][2] * zfull, &s);
+         Cr[k] = wide ? v[k][1][0] : (double)fx_from_double(t.prof->color, v[k][1][0] * 255.0, &s);
+         P[k] = v[k][2][0];
+         L[k] = v[k][3][1];
+         OW[k] = v[k][0][3];
+      }
+      flatv = rs.flatshade_first ? v[0][4][2] : v[2][4][2];
+      int64_t det = (X[0] - X[2]) * (Y[1] - Y[2]) - (Y[0] - Y[2]) * (X[1] - X[2]);
+      expect_front = ((det < 0) ^ rs.front_ccw) == 0;
+      /* bounds from the walk lengths (rows + columns + a quad and a row of helpers) */
+      double D = (double)(X[1] - X[0]) * (double)(Y[2] - Y[0]) - (double)(X[2] - X[0]) * (double)(Y[1] - Y[0]);
+      double S = (double)fx_one(t.prof->xy);
+      double dzdx = fabs(((Zr[1] - Zr[0]) * (double)(Y[2] - Y[0]) - (Zr[2] - Zr[0]) * (double)(Y[1] - Y[0])) / D * S);
+      double dcdx = fabs(((Cr[1] - Cr[0]) * (double)(Y[2] - Y[0]) - (Cr[2] - Cr[0]) * (double)(Y[1] - Y[0])) / D * S);
+      double walk = 2 * size + 8;
+      zbound = 2 + walk / 2 + dzdx / S + 1;
+      cbound = 2 + walk / 2 + dcdx / S + 1;
+      uint64_t sat0 = t_sat_total(rast_get_stats(t.rc));
+      t_begin(&t);
+      t_tri(t.rc, v[0], v[1], v[2]);
+      if (t_sat_total(rast_get_stats(t.rc)) != sat0)
+         sat_tris++;
+   }
+
+   t_fini(&t);
+}
+
+/* Flat COLOR and culling, checked through a separate hook. */
+static float seen_color = -1;
+static unsigned seen_quads;
+static void flat_hook(struct tctx *tc, const struct rast_quad *q)
+{
+   (void)tc;
+   seen_quads++;
+   for (unsigned i = 0; i < 4; i++)
+      if (q->mask & (1u << i))
+         seen_color = q->in[0][0][i];
+}
+
+static void flat_and_cull(void)
+{
+   t_init(&t, "seed", 256, 256);
+   t.hook = flat_hook;
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof vl);
+   vl.vertex_size = 2;
+   vl.num_varyings = 1;
+   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_COLOR, 0x1 };
+   rast_set_vertex_layout(t.rc, &vl);
+   float v[3][2][4] = {
+      { { 10, 10, 0.5f, 1 }, { 0.1f, 0, 0, 0 } },
+      { { 10, 90, 0.5f, 1 }, { 0.2f, 0, 0, 0 } },
+      { { 90, 10, 0.5f, 1 }, { 0.3f, 0, 0, 0 } },
+   };
+   /* det = (v0-v2)x(v1-v2) = -6400 < 0 for this order, so softpipe's
+    * facing = (det < 0) ^ front_ccw: front with front_ccw, back without. */
+   struct rast_raster_state rs;
+   memset(&rs, 0, sizeof rs);
+   rs.half_pixel_center = true;
+   rs.flatshade = true;
+   rs.flatshade_first = true;
+   rs.cull = RAST_CULL_BACK;
+   rs.front_ccw = true;
+   rast_set_raster_state(t.rc, &rs);
+   seen_quads = 0;
+   t_tri(t.rc, v[0], v[1], v[2]);
+   CHECK(seen_quads > 0 && seen_color == 0.1f, "flat COLOR, first: %g", seen_color);
+   rs.flatshade_first = false;
+   rast_set_raster_state(t.rc, &rs);
+   t_tri(t.rc, v[0], v[1], v[2]);
+   CHECK(seen_color == 0.3f, "flat COLOR, last: %g", seen_color);
+   rs.front_ccw = false;
+   rast_set_raster_state(t.rc, &rs);
+   seen_quads = 0;
+   uint64_t culled = rast_get_stats(t.rc)->culled;
+   t_tri(t.rc, v[0], v[1], v[2]);
+   CHECK(seen_quads == 0 && rast_get_stats(t.rc)->culled == culled + 1, "back face not culled");
+   t_tri(t.rc, v[0], v[2], v[1]);
+   CHECK(seen_quads > 0, "front face culled");
+   t_fini(&t);
+}
+
+int main(void)
+{
+   t_seed(4242);
+   run("seed");
+   printf("seed: worst Z %.2f ulps, colour %.2f ulps, perspective %.2e, linear %.2e, 1/w %.2e\n",
+          worst_z, worst_c, worst_p, worst_l, worst_w);
+   worst_z = worst_c = worst_p = worst_l = worst_w = 0;
+   run("wide");
+   printf("wide: worst Z %.2f ulps, colour %.2e, perspective %.2e, linear %.2e, 1/w %.2e\n",
+          worst_z, worst_c, worst_p, worst_l, worst_w);
+   printf("triangles with a counted saturation (helpers beyond the format): %u\n", sat_tris);
+   printf("pixels checked: %llu covered, %llu helpers\n",
+          (unsigned long long)covered_checked, (unsigned long long)helpers_checked);
+   CHECK(helpers_checked > 1000, "too few helper pixels checked");
+   CHECK(bad_face == 0, "%llu quads with the wrong front_facing", (unsigned long long)bad_face);
+   flat_and_cull();
+   return t_summary("attrib");
+}

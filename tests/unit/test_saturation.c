@@ -1,0 +1,147 @@
+/*
+ * Saturation: coordinates, slopes, Z and colour beyond their formats clamp
+ * to the format's ends, the counters of the right register class go up, and
+ * nothing wraps around (a huge positive X never turns into a small or
+ * negative one, a Z above full scale never reads as a small depth).
+ */
+#include <string.h>
+#include "tutil.h"
+#include "fixed/fx.h"
+
+static int minx, maxx, miny, maxy;
+static float zmin, zmax, cmin, cmax;
+
+static void reset_box(void)
+{
+   minx = miny = 1 << 30; maxx = maxy = -(1 << 30);
+   zmin = cmin = 1e30f; zmax = cmax = -1e30f;
+}
+
+static void hook(struct tctx *t, const struct rast_quad *q)
+{
+   (void)t;
+   for (unsigned i = 0; i < 4; i++) {
+      if (!(q->mask & (1u << i)))
+         continue;
+      int x = q->x + (int)(i & 1), y = q->y + (int)(i >> 1);
+      if (x < minx) minx = x;
+      if (x > maxx) maxx = x;
+      if (y < miny) miny = y;
+      if (y > maxy) maxy = y;
+      if (q->frag_z[i] < zmin) zmin = q->frag_z[i];
+      if (q->frag_z[i] > zmax) zmax = q->frag_z[i];
+      if (q->in[0][0][i] < cmin) cmin = q->in[0][0][i];
+      if (q->in[0][0][i] > cmax) cmax = q->in[0][0][i];
+   }
+}
+
+static struct tctx t;
+
+static void tri(float x0, float y0, float x1, float y1, float x2, float y2, float z, float c)
+{
+   float v[3][2][4] = {
+      { { x0, y0, z, 1 }, { c, c, c, 1 } },
+      { { x1, y1, z, 1 }, { c, c, c, 1 } },
+      { { x2, y2, z, 1 }, { c, c, c, 1 } },
+   };
+   reset_box();
+   t_begin(&t);
+   t_tri(t.rc, v[0], v[1], v[2]);
+}
+
+static uint64_t hi(enum rast_reg_class c) { return rast_get_stats(t.rc)->sat[c].high; }
+static uint64_t lo(enum rast_reg_class c) { return rast_get_stats(t.rc)->sat[c].low; }
+
+int main(void)
+{
+   t_init(&t, "seed", 2048, 2048);
+   t.hook = hook;
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof vl);
+   vl.vertex_size = 2;
+   vl.pos_slot = 0;
+   vl.num_varyings = 1;
+   vl.varying[0].slot = 1;
+   vl.varying[0].interp = RAST_INTERP_COLOR;
+   vl.varying[0].usage_mask = 0xf;
+   rast_set_vertex_layout(t.rc, &vl);
+
+   /* in range: no counter moves */
+   tri(100, 10, 400, 10, 100, 60, 0.5f, 0.5f);
+   CHECK(t_sat_total(rast_get_stats(t.rc)) == 0, "in-range triangle counted a saturation");
+   CHECK(t.count > 0 && maxx >= 390 && maxx <= 399, "in-range triangle: maxx %d", maxx);
+
+   /* X far beyond +2048: clamps to the largest X, the triangle reaches the
+    * right edge of the target and never wraps to the left */
+   uint64_t h0 = hi(RAST_REG_XY);
+   tri(100, 10, 5000, 10, 100, 60, 0.5f, 0.5f);
+   CHECK(hi(RAST_REG_XY) == h0 + 1, "X high not counted");
+   CHECK(t.count > 0 && minx >= 100 && maxx >= 2000 && maxx <= 2047, "X high: x range %d..%d", minx, maxx);
+
+   /* X and Y far below -2048: clamp low */
+   uint64_t l0 = lo(RAST_REG_XY);
+   tri(-1e6f, -1e6f, 300, 20, 20, 300, 0.5f, 0.5f);
+   CHECK(lo(RAST_REG_XY) == l0 + 2, "X/Y low not counted");
+   CHECK(t.count > 0 && minx == 0 && miny == 0 && maxx <= 300 && maxy <= 300,
+         "X low: box %d..%d x %d..%d", minx, maxx, miny, maxy);
+
+   /* Y far beyond: the triangle ends at the bottom of the target */
+   h0 = hi(RAST_REG_XY);
+   tri(10, 1000, 60, 1000, 30, 1e9f, 0.5f, 0.5f);
+   CHECK(hi(RAST_REG_XY) == h0 + 1 && maxy >= 2000 && maxy <= 2047 && miny == 1000, "Y high: %d..%d", miny, maxy);
+
+   /* an edge too flat for the dx/dy register (slope beyond 2048 pixels per
+    * scan line, walked over two scan lines) */
+   uint64_t d0 = hi(RAST_REG_DXDY) + lo(RAST_REG_DXDY);
+   tri(-2000, 100.2f, 2000, 101.9f, -2000, 103, 0.5f, 0.5f);
+   CHECK(hi(RAST_REG_DXDY) + lo(RAST_REG_DXDY) > d0, "slope saturation not counted");
+   CHECK(t.dups == 0 && t.badquad == 0 && miny >= 100 && maxy <= 102,
+         "slope saturation: rows %d..%d", miny, maxy);
+
+   /* Z above full scale: the register holds its largest value, read as a
+    * depth just above 1, never as a small or negative depth */
+   h0 = hi(RAST_REG_Z);
+   tri(10, 10, 200, 10, 10, 200, 3.0f, 0.5f);
+   double zmax_fmt = fx_to_double(t.prof->z, fx_max(t.prof->z)) / ((1 << 19) - 1);
+   CHECK(hi(RAST_REG_Z) >= 3, "Z high not counted");
+   CHECK(t.count > 0 && zmin > 1.0f && zmax <= (float)zmax_fmt + 1e-6f, "Z high: %g..%g", zmin, zmax);
+   l0 = lo(RAST_REG_Z);
+   tri(10, 10, 200, 10, 10, 200, -3.0f, 0.5f);
+   CHECK(lo(RAST_REG_Z) >= 3 && zmax < -1.0f && zmin >= -1.00001f, "Z low: %g..%g", zmin, zmax);
+
+   /* colour beyond 9.12 (2.0 = 510/255): clamps just below 256/255 */
+   h0 = hi(RAST_REG_COLOR);
+   tri(10, 10, 200, 10, 10, 200, 0.5f, 2.0f);
+   CHECK(hi(RAST_REG_COLOR) - h0 >= 9, "colour high not counted (%llu)", (unsigned long long)(hi(RAST_REG_COLOR) - h0));
+   CHECK(cmin > 1.0f && cmax < 256.0f / 255.0f + 1e-5f, "colour high: %g..%g", cmin, cmax);
+   l0 = lo(RAST_REG_COLOR);
+   tri(10, 10, 200, 10, 10, 200, 0.5f, -2.0f);
+   CHECK(lo(RAST_REG_COLOR) - l0 >= 9 && cmax < -1.0f && cmin >= -256.0f / 255.0f - 1e-5f,
+         "colour low: %g..%g", cmin, cmax);
+
+   /* a steep colour gradient inside the format walks without clamping */
+   {
+      float v[3][2][4] = {
+         { { 10, 10, 0.5f, 1 }, { 1.0f, 1, 1, 1 } },
+         { { 11, 10, 0.5f, 1 }, { 1.0f, 1, 1, 1 } },
+         { { 10, 400, 0.5f, 1 }, { -1.0f, 1, 1, 1 } },
+      };
+      reset_box();
+      t_begin(&t);
+      t_tri(t.rc, v[0], v[1], v[2]);
+      /* inside, colour runs from 1 down to -1: no saturation needed */
+      CHECK(cmax <= 1.0f + 1e-5f && cmin >= -1.0f - 1e-5f, "colour walk %g..%g", cmin, cmax);
+   }
+   t_fini(&t);
+
+   /* the wide profile holds what the seed one clamps */
+   t_init(&t, "wide", 2048, 2048);
+   t.hook = hook;
+   rast_set_vertex_layout(t.rc, &vl);
+   tri(100, 10, 5000, 10, 100, 60, 0.5f, 0.5f);
+   CHECK(t_sat_total(rast_get_stats(t.rc)) == 0 && maxx == 2047, "wide: 5000 in range, clipped by the target");
+   tri(100, 10, 40000, 10, 100, 60, 0.5f, 0.5f);
+   CHECK(hi(RAST_REG_XY) == 1 && maxx == 2047 && minx >= 100, "wide: 40000 clamps");
+   t_fini(&t);
+   return t_summary("saturation");
+}

@@ -1,0 +1,223 @@
+/*
+ * The scan-line converter against an exact reference (tutil.c: 64-bit edge
+ * functions on the same fixed-point vertices with llvmpipe's tie rule), on
+ * random triangles of many kinds, for both profiles, both edge rules and
+ * both pixel-centre conventions, with and without scissor.  The covered
+ * pixel sets must be identical, and no pixel may be emitted twice.
+ */
+#include <math.h>
+#include <string.h>
+#include "tutil.h"
+#include "fixed/fx.h"
+
+#ifndef UNIT_TRIANGLES
+#define UNIT_TRIANGLES 120000
+#endif
+
+#define TW 2048
+#define TH 2048
+
+enum kind { K_SMALL, K_MEDIUM, K_SLIVER, K_HUGE, K_CENTRES, K_HALVES, K_DEGEN, K_GUARD, K_COUNT };
+static const char *kind_name[K_COUNT] = {
+   "small", "medium", "sliver", "huge", "on-centres", "on-half-pixels", "degenerate", "guard-band"
+};
+
+struct cmp { struct tctx *t; uint64_t missing; };
+
+static void visit_ref(void *ctx, int x, int y)
+{
+   struct cmp *c = ctx;
+   if (c->t->stamp[(size_t)y * TW + (size_t)x] != c->t->id)
+      c->missing++;
+}
+
+static double coord(double lo, double hi) { return lo + (hi - lo) * t_rand(); }
+
+/* Random float vertices of the given kind. */
+static void gen(enum kind k, bool half, float v[3][2], bool wide)
+{
+   double cx = coord(-20, TW + 20), cy = coord(-20, TH + 20);
+   double size;
+   switch (k) {
+   case K_SMALL: size = coord(0.1, 24); break;
+   case K_MEDIUM: size = coord(24, 300); break;
+   default: size = 64; break;
+   }
+   for (int i = 0; i < 3; i++) {
+      v[i][0] = (float)(cx + coord(-size, size));
+      v[i][1] = (float)(cy + coord(-size, size));
+   }
+   if (k == K_SLIVER) {
+      /* Nearly collinear: the third vertex a few subpixel units off the
+       * line through the first two, which may be far apart. */
+      double len = coord(2, 900), ang = coord(0, 6.283185307179586);
+      double x0 = cx, y0 = cy, x1 = cx + len * cos(ang), y1 = cy + len * sin(ang);
+      double s = t_rand(), off = coord(-4, 4) / 4096.0 * (t_rand() < 0.5 ? 1 : 64);
+      v[0][0] = (float)x0; v[0][1] = (float)y0;
+      v[1][0] = (float)x1; v[1][1] = (float)y1;
+      v[2][0] = (float)(x0 + s * (x1 - x0) - off * sin(ang));
+      v[2][1] = (float)(y0 + s * (y1 - y0) + off * cos(ang));
+   } else if (k == K_HUGE) {
+      for (int i = 0; i < 3; i++) {
+         v[i][0] = (float)coord(-30, TW + 30);
+         v[i][1] = (float)coord(-30, TH + 30);
+      }
+      /* one of them always spans the whole target */
+      if (t_rand() < 0.5) {
+         v[0][0] = -1.25f; v[0][1] = -3.5f;
+         v[1][0] = TW - 0.25f; v[1][1] = (float)coord(-10, TH + 10);
+         v[2][0] = (float)coord(-10, TW + 10); v[2][1] = TH - 0.125f;
+      }
+   } else if (k == K_CENTRES || k == K_HALVES) {
+      double step = k == K_CENTRES ? 1.0 : 0.5;
+      double off = (k == K_CENTRES && half) ? 0.5 : 0.0;
+      double sz = coord(1, 40);
+      for (int i = 0; i < 3; i++) {
+         v[i][0] = (float)(floor((cx + coord(-sz, sz)) / step) * step + off);
+         v[i][1] = (float)(floor((cy + coord(-sz, sz)) / step) * step + off);
+      }
+   } else if (k == K_DEGEN) {
+      /* exactly collinear on the fixed grid, or two equal vertices */
+      double q = 1.0 / 64;
+      double ax = floor(cx / q) * q, ay = floor(cy / q) * q;
+      double dx = floor(coord(-50, 50)) * q * 4, dy = floor(coord(-50, 50)) * q * 4;
+      v[0][0] = (float)ax; v[0][1] = (float)ay;
+      v[1][0] = (float)(ax + 2 * dx); v[1][1] = (float)(ay + 2 * dy);
+      if (t_rand() < 0.5) {
+         v[2][0] = (float)(ax + dx); v[2][1] = (float)(ay + dy);
+      } else {
+         v[2][0] = v[1][0]; v[2][1] = v[1][1];
+      }
+   } else if (k == K_GUARD) {
+      /* around and beyond the target's edges: the wide profile holds
+       * coordinates far outside, the seed one up to its 12-bit range */
+      double r = wide ? 3000 : 1500, sz = coord(10, 600);
+      double gx = coord(-r, TW + r), gy = coord(-r, TH + r);
+      for (int i = 0; i < 3; i++) {
+         v[i][0] = (float)(gx + coord(-sz, sz));
+         v[i][1] = (float)(gy + coord(-sz, sz));
+      }
+   }
+   /* The seed's X/Y format ends just below 2048: stay inside it (the
+    * saturation test covers what happens beyond). */
+   double lim = wide ? 30000 : 2047.5;
+   for (int i = 0; i < 3; i++)
+      for (int c = 0; c < 2; c++) {
+         if (v[i][c] > lim) v[i][c] = (float)lim;
+         if (v[i][c] < -lim) v[i][c] = (float)-lim;
+      }
+}
+
+int main(void)
+{
+   const char *profiles[2] = { "seed", "wide" };
+   uint64_t total = 0, total_px = 0, sat_tris = 0, dxdy_sat_tris = 0, mismatches = 0;
+   uint64_t per_kind[K_COUNT] = { 0 }, degen_culled_ok = 0, sat_class[RAST_REG_COUNT] = { 0 };
+   unsigned n_cfg = 2 * 2 * 2 * 2;
+   unsigned per_cfg = (UNIT_TRIANGLES + n_cfg - 1) / n_cfg;
+   t_seed(12345);
+
+   for (unsigned pi = 0; pi < 2; pi++) {
+      struct tctx t;
+      t_init(&t, profiles[pi], TW, TH);
+      const bool wide = pi == 1;
+      struct fx_sat dummy = { 0, 0 };
+      int64_t S = fx_one(t.prof->xy);
+      for (unsigned cfg = 0; cfg < 8; cfg++) {
+         bool half = cfg & 1, bottom = (cfg >> 1) & 1, scissor = (cfg >> 2) & 1;
+         struct rast_raster_state rs;
+         memset(&rs, 0, sizeof(rs));
+         rs.half_pixel_center = half;
+         rs.bottom_edge_rule = bottom;
+         rs.scissor = scissor;
+         rs.line_width = 1;
+         rast_set_raster_state(t.rc, &rs);
+         struct rast_scissor clip = { 0, 0, TW, TH };
+         for (unsigned n = 0; n < per_cfg; n++) {
+            if (scissor && n % 64 == 0) {
+               struct rast_scissor sc;
+               sc.minx = (int)coord(0, TW); sc.maxx = sc.minx + (int)coord(0, TW);
+               sc.miny = (int)coord(0, TH); sc.maxy = sc.miny + (int)coord(0, TH);
+               if (sc.maxx > TW) sc.maxx = TW;
+               if (sc.maxy > TH) sc.maxy = TH;
+               rast_set_scissor(t.rc, &sc);
+               clip = sc;
+            }
+            enum kind k;
+            double r = t_rand();
+            if (n % 1024 == 0) k = K_HUGE;
+            else if (r < 0.35) k = K_SMALL;
+            else if (r < 0.50) k = K_MEDIUM;
+            else if (r < 0.65) k = K_SLIVER;
+            else if (r < 0.77) k = K_CENTRES;
+            else if (r < 0.89) k = K_HALVES;
+            else if (r < 0.94) k = K_DEGEN;
+            else k = K_GUARD;
+            float v[3][2];
+            gen(k, half, v, wide);
+            float vert[3][1][4];
+            int64_t X[3], Y[3];
+            for (int i = 0; i < 3; i++) {
+               vert[i][0][0] = v[i][0];
+               vert[i][0][1] = v[i][1];
+               vert[i][0][2] = 0.5f;
+               vert[i][0][3] = 1.0f;
+               X[i] = fx_from_double(t.prof->xy, v[i][0], &dummy);
+               Y[i] = fx_from_double(t.prof->xy, v[i][1], &dummy);
+            }
+            struct rast_stats before = *rast_get_stats(t.rc);
+            t_begin(&t);
+            t_tri(t.rc, vert[0], vert[1], vert[2]);
+            const struct rast_stats *after = rast_get_stats(t.rc);
+            uint64_t sat = t_sat_total(after) - t_sat_total(&before);
+            uint64_t dsat = t_sat_class(after, RAST_REG_DXDY) - t_sat_class(&before, RAST_REG_DXDY);
+            if (sat) {
+               sat_tris++;
+               for (unsigned c = 0; c < RAST_REG_COUNT; c++)
+                  sat_class[c] += t_sat_class(after, (enum rast_reg_class)c) !=
+                                  t_sat_class(&before, (enum rast_reg_class)c);
+            }
+            if (dsat) dxdy_sat_tris++;
+
+            struct cmp c = { &t, 0 };
+            uint64_t ref = t_ref_triangle(X, Y, S, half ? S / 2 : 0, bottom, clip, visit_ref, &c);
+            bool same = c.missing == 0 && ref == t.count && t.dups == 0 && t.outside == 0 &&
+                        t.badquad == 0;
+            if (k == K_DEGEN && (X[0] - X[2]) * (Y[1] - Y[2]) == (Y[0] - Y[2]) * (X[1] - X[2])) {
+               CHECK(after->culled == before.culled + 1 && t.count == 0,
+                     "degenerate triangle not dropped");
+               degen_culled_ok++;
+            }
+            if (!same && !dsat) {
+               mismatches++;
+               CHECK(same, "%s %s half=%d bottom=%d scissor=%d kind=%s: model %llu px, ref %llu, "
+                     "missing %llu, dups %llu, outside %llu, badquad %llu; v=(%.9g,%.9g) (%.9g,%.9g) (%.9g,%.9g)",
+                     profiles[pi], "", half, bottom, scissor, kind_name[k],
+                     (unsigned long long)t.count, (unsigned long long)ref,
+                     (unsigned long long)c.missing, (unsigned long long)t.dups,
+                     (unsigned long long)t.outside, (unsigned long long)t.badquad,
+                     v[0][0], v[0][1], v[1][0], v[1][1], v[2][0], v[2][1]);
+            }
+            total++;
+            total_px += ref;
+            per_kind[k]++;
+         }
+      }
+      t_fini(&t);
+   }
+   printf("scan_ref: %llu triangles, %llu reference pixels, %llu mismatches\n",
+          (unsigned long long)total, (unsigned long long)total_px,
+          (unsigned long long)mismatches);
+   for (int k = 0; k < K_COUNT; k++)
+      printf("  %-15s %llu\n", kind_name[k], (unsigned long long)per_kind[k]);
+   printf("  degenerate triangles dropped: %llu\n", (unsigned long long)degen_culled_ok);
+   printf("  triangles with a counted saturation: %llu (dx/dy slope saturations: %llu; "
+          "those are excluded from the comparison)\n",
+          (unsigned long long)sat_tris, (unsigned long long)dxdy_sat_tris);
+   printf("  by register class: XY %llu, dx/dy %llu, Z %llu, colour %llu\n",
+          (unsigned long long)sat_class[RAST_REG_XY], (unsigned long long)sat_class[RAST_REG_DXDY],
+          (unsigned long long)sat_class[RAST_REG_Z], (unsigned long long)sat_class[RAST_REG_COLOR]);
+   CHECK(total >= 100000, "only %llu triangles", (unsigned long long)total);
+   CHECK(degen_culled_ok > 1000, "too few degenerate cases: %llu", (unsigned long long)degen_culled_ok);
+   return t_summary("scan_ref");
+}

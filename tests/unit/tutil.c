@@ -1,0 +1,197 @@
+#include <string.h>
+#include "tutil.h"
+
+unsigned t_failures;
+
+static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+
+void t_seed(uint64_t s) { rng_state = s ? s : 1; }
+
+static uint64_t rng(void)
+{
+   /* xorshift64*: reproducible across hosts */
+   rng_state ^= rng_state >> 12;
+   rng_state ^= rng_state << 25;
+   rng_state ^= rng_state >> 27;
+   return rng_state * 0x2545F4914F6CDD1Dull;
+}
+
+double t_rand(void)
+{
+   return (double)(rng() >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static unsigned shade_record(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   struct tctx *t = ctx;
+   (void)out;
+   if ((q->x & 1) || (q->y & 1) || q->mask == 0 || q->mask > 15)
+      t->badquad++;
+   for (unsigned i = 0; i < 4; i++) {
+      if (!(q->mask & (1u << i)))
+         continue;
+      int x = q->x + (int)(i & 1), y = q->y + (int)(i >> 1);
+      if (x < 0 || y < 0 || x >= t->w || y >= t->h) {
+         t->outside++;
+         continue;
+      }
+      size_t idx = (size_t)y * (size_t)t->w + (size_t)x;
+      if (t->stamp[idx] == t->id)
+         t->dups++;
+      t->stamp[idx] = t->id;
+      if (t->counting && t->hits[idx] < 255)
+         t->hits[idx]++;
+      t->count++;
+   }
+   if (t->hook)
+      t->hook(t, q);
+   return 0;   /* discard everything: no framebuffer is touched */
+}
+
+void t_init(struct tctx *t, const char *profile, int w, int h)
+{
+   memset(t, 0, sizeof(*t));
+   t->prof = rast_profile_by_name(profile);
+   if (!t->prof) {
+      fprintf(stderr, "unknown profile %s\n", profile);
+      exit(1);
+   }
+   t->rc = rast_create(t->prof);
+   t->w = w;
+   t->h = h;
+   t->stamp = calloc((size_t)w * (size_t)h, sizeof(uint32_t));
+   t->hits = calloc((size_t)w * (size_t)h, 1);
+   if (!t->rc || !t->stamp || !t->hits)
+      exit(1);
+
+   struct rast_framebuffer fb;
+   memset(&fb, 0, sizeof(fb));
+   fb.width = (unsigned)w;
+   fb.height = (unsigned)h;
+   rast_set_framebuffer(t->rc, &fb);
+
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof(vl));
+   vl.vertex_size = 1;
+   vl.pos_slot = 0;
+   rast_set_vertex_layout(t->rc, &vl);
+
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof(fs));
+   fs.ctx = t;
+   fs.shade = shade_record;
+   fs.may_discard = true;
+   rast_set_shader(t->rc, &fs);
+   t_raster(t, true, false);
+}
+
+void t_raster(struct tctx *t, bool half_pixel, bool bottom_rule)
+{
+   struct rast_raster_state rs;
+   memset(&rs, 0, sizeof(rs));
+   rs.half_pixel_center = half_pixel;
+   rs.bottom_edge_rule = bottom_rule;
+   rs.cull = RAST_CULL_NONE;
+   rs.line_width = 1.0f;
+   rast_set_raster_state(t->rc, &rs);
+}
+
+void t_fini(struct tctx *t)
+{
+   rast_destroy(t->rc);
+   free(t->stamp);
+   free(t->hits);
+}
+
+void t_begin(struct tctx *t)
+{
+   t->id++;
+   t->count = t->dups = t->outside = t->badquad = 0;
+}
+
+uint64_t t_sat_class(const struct rast_stats *s, enum rast_reg_class c)
+{
+   return s->sat[c].high + s->sat[c].low;
+}
+
+uint64_t t_sat_total(const struct rast_stats *s)
+{
+   uint64_t n = 0;
+   for (unsigned c = 0; c < RAST_REG_COUNT; c++)
+      n += t_sat_class(s, (enum rast_reg_class)c);
+   return n;
+}
+
+int t_summary(const char *name)
+{
+   if (t_failures) {
+      printf("%s: %u failure(s)\n", name, t_failures);
+      return 1;
+   }
+   printf("%s: all checks passed\n", name);
+   return 0;
+}
+
+static inline bool edge_in(int64_t e, int64_t dcdx, int64_t dcdy, bool bottom_rule)
+{
+   if (e > 0)
+      return true;
+   if (e < 0)
+      return false;
+   if (dcdx < 0)
+      return true;
+   if (dcdx == 0)
+      return bottom_rule ? dcdy < 0 : dcdy > 0;
+   return false;
+}
+
+uint64_t t_ref_triangle(const int64_t Xin[3], const int64_t Yin[3], int64_t S, int64_t H,
+                        bool bottom_rule, struct rast_scissor clip, t_visit visit, void *ctx)
+{
+   int64_t X[3] = { Xin[0], Xin[1], Xin[2] }, Y[3] = { Yin[0], Yin[1], Yin[2] };
+   int64_t det = (X[0] - X[2]) * (Y[1] - Y[2]) - (Y[0] - Y[2]) * (X[1] - X[2]);
+   if (det == 0)
+      return 0;
+   if (det > 0) {   /* llvmpipe's orientation: inside has all E > 0 */
+      int64_t t;
+      t = X[1]; X[1] = X[2]; X[2] = t;
+      t = Y[1]; Y[1] = Y[2]; Y[2] = t;
+   }
+   int64_t dcdx[3], dcdy[3];
+   for (int i = 0; i < 3; i++) {
+      int k = (i + 1) % 3;
+      dcdx[i] = Y[i] - Y[k];
+      dcdy[i] = X[i] - X[k];
+   }
+   int64_t minx = X[0], maxx = X[0], miny = Y[0], maxy = Y[0];
+   for (int i = 1; i < 3; i++) {
+      if (X[i] < minx) minx = X[i];
+      if (X[i] > maxx) maxx = X[i];
+      if (Y[i] < miny) miny = Y[i];
+      if (Y[i] > maxy) maxy = Y[i];
+   }
+   int64_t x0 = (minx - H) / S - 1, x1 = (maxx - H) / S + 1;
+   int64_t y0 = (miny - H) / S - 1, y1 = (maxy - H) / S + 1;
+   if (x0 < clip.minx) x0 = clip.minx;
+   if (y0 < clip.miny) y0 = clip.miny;
+   if (x1 > clip.maxx - 1) x1 = clip.maxx - 1;
+   if (y1 > clip.maxy - 1) y1 = clip.maxy - 1;
+   uint64_t n = 0;
+   for (int64_t j = y0; j <= y1; j++) {
+      int64_t py = j * S + H;
+      for (int64_t i = x0; i <= x1; i++) {
+         int64_t px = i * S + H;
+         bool in = true;
+         for (int e = 0; e < 3 && in; e++) {
+            int64_t ev = dcdx[e] * (X[e] - px) - dcdy[e] * (Y[e] - py);
+            in = edge_in(ev, dcdx[e], dcdy[e], bottom_rule);
+         }
+         if (in) {
+            n++;
+            if (visit)
+               visit(ctx, (int)i, (int)j);
+         }
+      }
+   }
+   return n;
+}

@@ -1,0 +1,68 @@
+/* Shared helpers of the model's unit tests: a context whose fragment
+ * shader records coverage, and the exact reference rasterizer. */
+#ifndef FIXPIPE_TUTIL_H
+#define FIXPIPE_TUTIL_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <stdint.h>
+#include <stdbool.h>
+#include "rast/rast.h"
+
+extern unsigned t_failures;
+
+#define CHECK(cond, ...) do { \
+      if (!(cond)) { \
+         if (t_failures++ < 20) { \
+            fprintf(stderr, "%s:%d: FAIL %s: ", __FILE__, __LINE__, #cond); \
+            fprintf(stderr, __VA_ARGS__); \
+            fputc('\n', stderr); \
+         } \
+      } \
+   } while (0)
+
+struct tctx;
+typedef void (*t_quad_hook)(struct tctx *t, const struct rast_quad *q);
+
+struct tctx {
+   struct rast_context *rc;
+   const struct rast_profile *prof;
+   int w, h;
+   uint32_t *stamp;          /* last primitive id that covered each pixel */
+   uint8_t *hits;            /* per-pixel count, when counting is on */
+   bool counting;
+   uint32_t id;
+   uint64_t count, dups, outside, badquad;
+   t_quad_hook hook;
+   void *user;
+};
+
+void t_init(struct tctx *t, const char *profile, int w, int h);
+void t_fini(struct tctx *t);
+void t_raster(struct tctx *t, bool half_pixel, bool bottom_rule);
+void t_begin(struct tctx *t);      /* a new primitive id, counters zeroed */
+uint64_t t_sat_total(const struct rast_stats *s);
+uint64_t t_sat_class(const struct rast_stats *s, enum rast_reg_class c);
+double t_rand(void);               /* [0, 1) */
+void t_seed(uint64_t s);
+int t_summary(const char *name);
+
+/* The reference: exact 64-bit edge functions on the fixed-point vertices
+ * (units of 2^-N), pixel centres (i*S + H, j*S + H), llvmpipe's tie rule.
+ * Calls visit for every covered pixel inside clip; returns the count. */
+typedef void (*t_visit)(void *ctx, int x, int y);
+uint64_t t_ref_triangle(const int64_t X[3], const int64_t Y[3], int64_t S, int64_t H,
+                        bool bottom_rule, struct rast_scissor clip, t_visit visit, void *ctx);
+
+/* ISO C before C2x does not convert float (*)[4] to const float (*)[4]. */
+#define T_V(p) ((const float (*)[4])(p))
+static inline void t_tri(struct rast_context *rc, float (*a)[4], float (*b)[4], float (*c)[4])
+{
+   rast_triangle(rc, T_V(a), T_V(b), T_V(c));
+}
+static inline void t_line(struct rast_context *rc, float (*a)[4], float (*b)[4])
+{
+   rast_line(rc, T_V(a), T_V(b));
+}
+
+#endif

@@ -1,0 +1,176 @@
+/* EGL surfaceless + FBO set-up for the offscreen GL ES 2 programs. */
+#include "fp_gl.h"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GLES2/gl2ext.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void fp_die(const char *fmt, ...)
+{
+   va_list ap;
+   va_start(ap, fmt);
+   fputs("error: ", stderr);
+   vfprintf(stderr, fmt, ap);
+   fputc('\n', stderr);
+   va_end(ap);
+   exit(2);
+}
+
+static int has_ext(const char *list, const char *name)
+{
+   size_t n = strlen(name);
+   for (const char *p = list; p && (p = strstr(p, name)); p += n)
+      if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
+         return 1;
+   return 0;
+}
+
+static EGLDisplay open_display(void)
+{
+   const char *cext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+   if (has_ext(cext, "EGL_MESA_platform_surfaceless")) {
+      PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
+         (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+      if (get_platform_display)
+         return get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
+   }
+   /* Older loaders: EGL_PLATFORM=surfaceless in the environment does it. */
+   return eglGetDisplay(EGL_DEFAULT_DISPLAY);
+}
+
+void fp_gl_init(struct fp_gl *g, int w, int h)
+{
+   memset(g, 0, sizeof(*g));
+   g->w = w;
+   g->h = h;
+
+   EGLDisplay dpy = open_display();
+   EGLint major, minor;
+   if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor))
+      fp_die("EGL surfaceless display failed to initialize (0x%x); "
+             "is GALLIUM_DRIVER a driver this Mesa knows?", eglGetError());
+   if (!eglBindAPI(EGL_OPENGL_ES_API))
+      fp_die("eglBindAPI(GLES) failed");
+
+   const char *dext = eglQueryString(dpy, EGL_EXTENSIONS);
+   if (!has_ext(dext, "EGL_KHR_surfaceless_context"))
+      fp_die("EGL_KHR_surfaceless_context is missing");
+
+   EGLConfig cfg = (EGLConfig)0;   /* EGL_NO_CONFIG_KHR */
+   if (!has_ext(dext, "EGL_KHR_no_config_context")) {
+      const EGLint attr[] = { EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
+                              EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE };
+      EGLint n = 0;
+      if (!eglChooseConfig(dpy, attr, &cfg, 1, &n) || n < 1)
+         fp_die("no EGL config for GL ES 2");
+   }
+   const EGLint ctx_attr[] = { EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE };
+   EGLContext ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, ctx_attr);
+   if (ctx == EGL_NO_CONTEXT)
+      fp_die("eglCreateContext(ES 2) failed (0x%x)", eglGetError());
+   if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx))
+      fp_die("eglMakeCurrent(surfaceless) failed (0x%x)", eglGetError());
+   g->dpy = dpy;
+   g->ctx = ctx;
+
+   const char *gext = (const char *)glGetString(GL_EXTENSIONS);
+   if (!has_ext(gext, "GL_OES_packed_depth_stencil"))
+      fp_die("GL_OES_packed_depth_stencil is missing");
+   GLenum color_fmt = has_ext(gext, "GL_OES_rgb8_rgba8") ? GL_RGBA8_OES : GL_RGBA4;
+   if (color_fmt != GL_RGBA8_OES)
+      fp_die("GL_OES_rgb8_rgba8 is missing: no RGBA8 renderbuffer");
+
+   glGenFramebuffers(1, &g->fbo);
+   glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
+   glGenRenderbuffers(1, &g->color_rb);
+   glBindRenderbuffer(GL_RENDERBUFFER, g->color_rb);
+   glRenderbufferStorage(GL_RENDERBUFFER, color_fmt, w, h);
+   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, g->color_rb);
+   glGenRenderbuffers(1, &g->ds_rb);
+   glBindRenderbuffer(GL_RENDERBUFFER, g->ds_rb);
+   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8_OES, w, h);
+   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, g->ds_rb);
+   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, g->ds_rb);
+   GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+   if (st != GL_FRAMEBUFFER_COMPLETE)
+      fp_die("FBO %dx%d incomplete (0x%x)", w, h, st);
+   fp_gl_check("FBO set-up");
+   glViewport(0, 0, w, h);
+}
+
+void fp_gl_fini(struct fp_gl *g)
+{
+   glDeleteRenderbuffers(1, &g->ds_rb);
+   glDeleteRenderbuffers(1, &g->color_rb);
+   glDeleteFramebuffers(1, &g->fbo);
+   eglMakeCurrent(g->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+   eglDestroyContext(g->dpy, g->ctx);
+   eglTerminate(g->dpy);
+}
+
+const char *fp_gl_renderer(void)
+{
+   const char *r = (const char *)glGetString(GL_RENDERER);
+   return r ? r : "(unknown)";
+}
+
+static GLuint compile(GLenum type, const char *src)
+{
+   GLuint s = glCreateShader(type);
+   glShaderSource(s, 1, &src, NULL);
+   glCompileShader(s);
+   GLint ok = 0;
+   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+   if (!ok) {
+      char log[2048] = "";
+      glGetShaderInfoLog(s, sizeof(log), NULL, log);
+      fp_die("%s shader: %s", type == GL_VERTEX_SHADER ? "vertex" : "fragment", log);
+   }
+   return s;
+}
+
+GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
+{
+   GLuint p = glCreateProgram();
+   GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
+   glAttachShader(p, v);
+   glAttachShader(p, f);
+   for (GLuint i = 0; attribs && attribs[i]; i++)
+      glBindAttribLocation(p, i, attribs[i]);
+   glLinkProgram(p);
+   GLint ok = 0;
+   glGetProgramiv(p, GL_LINK_STATUS, &ok);
+   if (!ok) {
+      char log[2048] = "";
+      glGetProgramInfoLog(p, sizeof(log), NULL, log);
+      fp_die("link: %s", log);
+   }
+   glDeleteShader(v);
+   glDeleteShader(f);
+   return p;
+}
+
+void fp_gl_read_rgba(const struct fp_gl *g, unsigned char *out)
+{
+   size_t row = (size_t)g->w * 4;
+   unsigned char *tmp = malloc(row * (size_t)g->h);
+   if (!tmp)
+      fp_die("out of memory");
+   glPixelStorei(GL_PACK_ALIGNMENT, 1);
+   glReadPixels(0, 0, g->w, g->h, GL_RGBA, GL_UNSIGNED_BYTE, tmp);
+   fp_gl_check("glReadPixels");
+   for (int y = 0; y < g->h; y++)
+      memcpy(out + (size_t)y * row, tmp + (size_t)(g->h - 1 - y) * row, row);
+   free(tmp);
+}
+
+void fp_gl_check(const char *where)
+{
+   GLenum e = glGetError();
+   if (e != GL_NO_ERROR)
+      fp_die("GL error 0x%x during %s", e, where);
+}

@@ -1,0 +1,37 @@
+/*
+ * A GL ES 2 context on EGL surfaceless with an offscreen FBO (RGBA8 colour,
+ * depth24/stencil8), shared by fp-demo and the e2e tests.  Surfaceless has no
+ * window surface, so every program draws into the FBO and reads it back.
+ * Errors are fatal: these are test programs, a message and exit(2) is the
+ * most useful thing they can do.
+ */
+#ifndef FP_GL_H
+#define FP_GL_H
+
+#include <GLES2/gl2.h>
+
+struct fp_gl {
+   void *dpy, *ctx;            /* EGLDisplay, EGLContext */
+   GLuint fbo, color_rb, ds_rb;
+   int w, h;
+};
+
+/* Creates the context and the FBO, bound and with the viewport set. */
+void fp_gl_init(struct fp_gl *g, int w, int h);
+void fp_gl_fini(struct fp_gl *g);
+
+/* GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)". */
+const char *fp_gl_renderer(void);
+
+/* Compiles and links; attribs[i] is bound to location i (NULL-terminated). */
+GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs);
+
+/* The whole FBO as RGBA8 rows top to bottom (PNG order; GL's are bottom up). */
+void fp_gl_read_rgba(const struct fp_gl *g, unsigned char *out);
+
+/* Exits with the GL error if there is one; where says what was going on. */
+void fp_gl_check(const char *where);
+
+_Noreturn void fp_die(const char *fmt, ...);
+
+#endif
