@@ -2,17 +2,19 @@
 # Puts the pinned, checksum-verified, patched Mesa source at $FIXPIPE_WORK/mesa-src
 # with src/gallium/drivers/fixpipe linked to this repository's src/.
 # Quick when it is already there.
+# FIXPIPE_DRIVER_SRC points the link elsewhere (a throw-away driver, for testing the patches).
 set -eu
 REPO=$(cd "$(dirname "$0")/.." && pwd)
 . "$REPO/mesa/pin"
 WORK=${FIXPIPE_WORK:-$REPO/.fixpipe}
+DRIVER_SRC=${FIXPIPE_DRIVER_SRC:-$REPO/src}
 SRC=$WORK/mesa-src
 DL=$WORK/download
 mkdir -p "$DL"
 
 stamp="$MESA_SHA256 $(cat "$REPO"/mesa/patches/*.patch | sha256sum | cut -d' ' -f1)"
 if [ -f "$SRC/.fixpipe-stamp" ] && [ "$(cat "$SRC/.fixpipe-stamp")" = "$stamp" ]; then
-    ln -sfn "$REPO/src" "$SRC/src/gallium/drivers/fixpipe"
+    ln -sfn "$DRIVER_SRC" "$SRC/src/gallium/drivers/fixpipe"
     exit 0
 fi
 
@@ -33,8 +35,11 @@ rm -rf "$SRC" "$SRC.tmp"
 mkdir -p "$SRC.tmp"
 tar -xzf "$DL/$MESA_ORIG" -C "$SRC.tmp" --strip-components=1
 for p in "$REPO"/mesa/patches/*.patch; do
-    patch -d "$SRC.tmp" -p1 --quiet --forward < "$p"
+    patch -d "$SRC.tmp" -p1 --quiet --forward < "$p" || {
+        echo "fixpipe: $p does not apply to Mesa $MESA_VERSION" >&2
+        exit 1
+    }
 done
-ln -sfn "$REPO/src" "$SRC.tmp/src/gallium/drivers/fixpipe"
+ln -sfn "$DRIVER_SRC" "$SRC.tmp/src/gallium/drivers/fixpipe"
 echo "$stamp" > "$SRC.tmp/.fixpipe-stamp"
 mv "$SRC.tmp" "$SRC"

@@ -14,7 +14,7 @@ fp_run_driver() {
     _prefix=${root:?fp-run-driver.sh needs $root}/.fixpipe/prefix
     if [ "${FP_SYSTEM_MESA:-0}" != 1 ] && [ -x "$root/fixpipe" ] &&
        { [ "$_drv" = llvmpipe ] || [ -e "$_prefix/lib/libGL.so.1" ] || [ "$_drv" = fixpipe ]; }; then
-        "$root/fixpipe" run --driver "$_drv" -- "$@"
+        "$root/fixpipe" run --no-xvfb --driver "$_drv" -- "$@"
         return
     fi
     case $_drv in

@@ -130,8 +130,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    const unsigned flt_lin_end = 1 + (has_lin ? fr->nlin : 0);
    const unsigned frac = rc->profile->xy.frac_bits;
 
-   int64_t fix[2][FR_MAX_FIX];
-   float flt[2][FR_MAX_FLT];
+   int64_t fix[2][FR_MAX_FIX] = {{0}};
+   float flt[2][FR_MAX_FLT] = {{0}};
    /* A scan line with no covered pixel in this quad row holds only helpers:
     * each of them is computed from an unclamped base, so one that clamps
     * cannot shift the next. */

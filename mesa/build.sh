@@ -1,0 +1,84 @@
+#!/bin/sh
+# Builds the pinned, patched Mesa with the fixpipe driver into $FIXPIPE_WORK/prefix.
+# Quick no-op when nothing changed; reconfigures when the options, the patches or the
+# Mesa pin change. The one heavy build of the machine: holds /tmp/fixpipe-build.lock.
+#
+#   FIXPIPE_WORK             work dir (default: <repo>/.fixpipe)
+#   FIXPIPE_GALLIUM_DRIVERS  default swrast,fixpipe ("swrast" alone warms ccache before
+#                            the driver exists)
+#   FIXPIPE_MESA_BUILDTYPE   default release
+set -eu
+REPO=$(cd "$(dirname "$0")/.." && pwd)
+WORK=${FIXPIPE_WORK:-$REPO/.fixpipe}
+BUILD=$WORK/mesa-build
+PREFIX=$WORK/prefix
+DRIVERS=${FIXPIPE_GALLIUM_DRIVERS:-swrast,fixpipe}
+BUILDTYPE=${FIXPIPE_MESA_BUILDTYPE:-release}
+
+# mako comes from Debian's python3-mako; a python earlier in PATH (a venv) would lack it.
+PATH=/usr/bin:/bin:$PATH
+# Hits across clones at different paths (CI uses a fresh clone).
+CCACHE_NOHASHDIR=1
+export PATH CCACHE_NOHASHDIR
+
+exec 9>/tmp/fixpipe-build.lock
+if ! flock -n 9; then
+    echo "fixpipe: waiting for another Mesa build (/tmp/fixpipe-build.lock)" >&2
+    flock 9
+fi
+
+sh "$REPO/mesa/fetch.sh"
+SRC=$WORK/mesa-src
+case ",$DRIVERS," in
+*,fixpipe,*)
+    if [ ! -f "$SRC/src/gallium/drivers/fixpipe/meson.build" ]; then
+        echo "fixpipe: no driver build file at $(readlink "$SRC/src/gallium/drivers/fixpipe")/meson.build" >&2
+        echo "fixpipe: (FIXPIPE_GALLIUM_DRIVERS=swrast builds Mesa without it)" >&2
+        exit 1
+    fi ;;
+esac
+
+# Only what the launcher runs: GLX/EGL/GLES2/OSMesa on the software rasterizers.
+OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true
+ -Dplatforms=x11 -Dgallium-drivers=$DRIVERS -Dllvm=disabled -Dvulkan-drivers=
+ -Dglx=dri -Dosmesa=true -Degl=enabled -Dgles1=disabled -Dgles2=enabled
+ -Dglvnd=false -Dgbm=disabled -Dshared-glapi=enabled
+ -Dgallium-vdpau=disabled -Dgallium-va=disabled -Dgallium-xa=disabled
+ -Dgallium-omx=disabled -Dgallium-opencl=disabled -Dgallium-nine=false
+ -Dbuild-tests=false -Dvalgrind=disabled -Dlibunwind=disabled -Dlmsensors=disabled"
+# shellcheck disable=SC2086,SC2116  # one line of words
+stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS)"
+
+if [ ! -f "$BUILD/.fixpipe-stamp" ] || [ "$(cat "$BUILD/.fixpipe-stamp")" != "$stamp" ]; then
+    rm -f "$BUILD/.fixpipe-stamp"
+    wipe=""
+    [ -f "$BUILD/build.ninja" ] && wipe=--wipe
+    echo "fixpipe: configuring Mesa in $BUILD" >&2
+    # shellcheck disable=SC2086  # OPTIONS is a word list
+    if ! meson setup $wipe "$BUILD" "$SRC" $OPTIONS > "$WORK/mesa-configure.log" 2>&1; then
+        tail -n 30 "$WORK/mesa-configure.log" >&2
+        echo "fixpipe: Mesa configure failed, full log: $WORK/mesa-configure.log" >&2
+        exit 1
+    fi
+    echo "$stamp" > "$BUILD/.fixpipe-stamp"
+    rm -rf "$PREFIX"
+fi
+
+start=$(date +%s)
+if [ -t 1 ]; then
+    ninja -C "$BUILD" || { echo "fixpipe: Mesa build failed" >&2; exit 1; }
+elif ! ninja -C "$BUILD" > "$WORK/mesa-build.log" 2>&1; then
+    # the error messages, without ninja's one-line compiler commands
+    grep -A25 -m3 '^FAILED' "$WORK/mesa-build.log" | grep -Ev '^(ccache )?(cc|gcc|c\+\+|g\+\+) ' >&2 \
+        || tail -n 40 "$WORK/mesa-build.log" >&2
+    echo "fixpipe: Mesa build failed, full log: $WORK/mesa-build.log" >&2
+    exit 1
+fi
+if ! meson install -C "$BUILD" --no-rebuild --only-changed --quiet > "$WORK/mesa-install.log" 2>&1; then
+    tail -n 20 "$WORK/mesa-install.log" >&2
+    echo "fixpipe: Mesa install failed, full log: $WORK/mesa-install.log" >&2
+    exit 1
+fi
+# (ninja always re-runs git_sha1.h and the devenv links: cheap, and nothing follows from them)
+echo "fixpipe: Mesa ($DRIVERS) ready in $(( $(date +%s) - start )) s:" \
+     "libs in $PREFIX/lib, DRI driver in $PREFIX/lib/dri" >&2

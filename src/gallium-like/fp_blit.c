@@ -1,0 +1,208 @@
+/*
+ * pipe->blit on the CPU: scaled nearest/linear, format conversion through
+ * float unpack/pack, Z and S masks, scissor.  (util_blitter would draw
+ * through the model, turning copies into modeled primitives.)
+ */
+#include <math.h>
+#include <string.h>
+
+#include "util/u_math.h"
+#include "util/u_surface.h"
+#include "util/u_inlines.h"
+#include "util/format/u_format.h"
+#include "draw/draw_context.h"
+
+#include "fp_context.h"
+#include "fp_resource.h"
+
+struct fp_blit_image {
+   struct pipe_resource *res;
+   enum pipe_format format;
+   unsigned level, width, height, depth;   /* depth: slices or layers */
+   const struct util_format_description *desc;
+   util_format_fetch_rgba_func_ptr fetch;
+};
+
+static void fp_blit_image_init(struct fp_blit_image *im, struct pipe_resource *res,
+                               unsigned level, enum pipe_format format)
+{
+   im->res = res;
+   im->format = format;
+   im->level = level;
+   im->width = u_minify(res->width0, level);
+   im->height = res->target == PIPE_TEXTURE_1D_ARRAY ? res->array_size
+                                                     : u_minify(res->height0, level);
+   im->depth = res->target == PIPE_TEXTURE_3D ? u_minify(res->depth0, level)
+             : res->target == PIPE_TEXTURE_1D_ARRAY ? 1 : res->array_size;
+   im->desc = util_format_description(format);
+   im->fetch = util_format_fetch_rgba_func(format);
+}
+
+static uint8_t *fp_blit_texel_ptr(const struct fp_blit_image *im, int x, int y, int z)
+{
+   struct fp_resource *r = fp_resource(im->res);
+   const struct util_format_description *d = im->desc;
+   if (im->res->target == PIPE_TEXTURE_1D_ARRAY) {
+      z = y;
+      y = 0;
+   }
+   return r->data + r->level_offset[im->level] + (size_t)z * r->img_stride[im->level] +
+          (size_t)(y / d->block.height) * r->stride[im->level] +
+          (size_t)(x / d->block.width) * (d->block.bits / 8);
+}
+
+static void fp_blit_fetch(const struct fp_blit_image *im, int x, int y, int z, float rgba[4])
+{
+   x = CLAMP(x, 0, (int)im->width - 1);
+   y = CLAMP(y, 0, (int)im->height - 1);
+   z = CLAMP(z, 0, (int)im->depth - 1);
+   const uint8_t *p = fp_blit_texel_ptr(im, x, y, z);
+   if (im->fetch)
+      im->fetch(rgba, p, x % im->desc->block.width, y % im->desc->block.height);
+   else
+      util_format_unpack_rgba(im->format, rgba, p, 1);
+}
+
+static void fp_blit_color(const struct fp_blit_image *src, const struct fp_blit_image *dst,
+                          const struct pipe_blit_info *info, float sx, float sy, int sz,
+                          int dx, int dy, int dz)
+{
+   float c[4];
+   if (info->filter == PIPE_TEX_FILTER_LINEAR && src->fetch) {
+      float u = sx - 0.5f, v = sy - 0.5f;
+      int x0 = (int)floorf(u), y0 = (int)floorf(v);
+      float fu = u - x0, fv = v - y0;
+      float t[4][4];
+      fp_blit_fetch(src, x0, y0, sz, t[0]);
+      fp_blit_fetch(src, x0 + 1, y0, sz, t[1]);
+      fp_blit_fetch(src, x0, y0 + 1, sz, t[2]);
+      fp_blit_fetch(src, x0 + 1, y0 + 1, sz, t[3]);
+      for (unsigned ch = 0; ch < 4; ch++) {
+         float a = t[0][ch] + fu * (t[1][ch] - t[0][ch]);
+         float b = t[2][ch] + fu * (t[3][ch] - t[2][ch]);
+         c[ch] = a + fv * (b - a);
+      }
+   } else {
+      fp_blit_fetch(src, (int)floorf(sx), (int)floorf(sy), sz, c);
+   }
+
+   uint8_t *p = fp_blit_texel_ptr(dst, dx, dy, dz);
+   unsigned mask = info->mask & PIPE_MASK_RGBA;
+   if (mask != PIPE_MASK_RGBA || info->alpha_blend) {
+      float old[4];
+      util_format_unpack_rgba(dst->format, old, p, 1);
+      if (info->alpha_blend) {
+         for (unsigned ch = 0; ch < 3; ch++)
+            c[ch] = c[ch] * c[3] + old[ch] * (1.0f - c[3]);
+      }
+      for (unsigned ch = 0; ch < 4; ch++)
+         if (!(mask & (1u << ch)))
+            c[ch] = old[ch];
+   }
+   util_format_pack_rgba(dst->format, p, c, 1);
+}
+
+static void fp_blit_zs(const struct fp_blit_image *src, const struct fp_blit_image *dst,
+                       unsigned mask, int sx, int sy, int sz, int dx, int dy, int dz)
+{
+   sx = CLAMP(sx, 0, (int)src->width - 1);
+   sy = CLAMP(sy, 0, (int)src->height - 1);
+   sz = CLAMP(sz, 0, (int)src->depth - 1);
+   const uint8_t *s = fp_blit_texel_ptr(src, sx, sy, sz);
+   uint8_t *d = fp_blit_texel_ptr(dst, dx, dy, dz);
+   /* util's Z and S packers keep the other component of combined formats. */
+   if ((mask & PIPE_MASK_Z) && util_format_has_depth(src->desc) &&
+       util_format_has_depth(dst->desc)) {
+      float z;
+      util_format_unpack_z_float(src->format, &z, s, 1);
+      util_format_pack_z_float(dst->format, d, &z, 1);
+   }
+   if ((mask & PIPE_MASK_S) && util_format_has_stencil(src->desc) &&
+       util_format_has_stencil(dst->desc)) {
+      uint8_t st;
+      util_format_unpack_s_8uint(src->format, &st, s, 1);
+      util_format_pack_s_8uint(dst->format, d, &st, 1);
+   }
+}
+
+static bool fp_blit_is_copy(const struct pipe_blit_info *info)
+{
+   const struct util_format_description *d = util_format_description(info->dst.format);
+   unsigned full = util_format_is_depth_or_stencil(info->dst.format)
+      ? ((util_format_has_depth(d) ? PIPE_MASK_Z : 0) | (util_format_has_stencil(d) ? PIPE_MASK_S : 0))
+      : PIPE_MASK_RGBA;
+   return info->src.format == info->dst.format &&
+          info->src.resource->format == info->dst.resource->format &&
+          info->src.format == info->src.resource->format &&
+          info->src.box.width == info->dst.box.width &&
+          info->src.box.height == info->dst.box.height &&
+          info->src.box.depth == info->dst.box.depth &&
+          (info->mask & full) == full && !info->scissor_enable && !info->alpha_blend;
+}
+
+static void fp_blit(struct pipe_context *pipe, const struct pipe_blit_info *info)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_blit_image src, dst;
+
+   if (info->render_condition_enable && !fp_check_render_cond(fp))
+      return;
+   draw_flush(fp->draw);
+   if (!info->src.resource || !info->dst.resource ||
+       !fp_resource(info->src.resource)->data || !fp_resource(info->dst.resource)->data)
+      return;
+
+   if (fp_blit_is_copy(info)) {
+      util_resource_copy_region(pipe, info->dst.resource, info->dst.level, info->dst.box.x,
+                                info->dst.box.y, info->dst.box.z, info->src.resource,
+                                info->src.level, &info->src.box);
+      return;
+   }
+
+   fp_blit_image_init(&src, info->src.resource, info->src.level, info->src.format);
+   fp_blit_image_init(&dst, info->dst.resource, info->dst.level, info->dst.format);
+   if (dst.desc->block.width != 1 || dst.desc->block.height != 1)
+      return;   /* never a render target: the screen does not offer it */
+
+   bool zs = util_format_is_depth_or_stencil(info->dst.format);
+   const struct pipe_box *db = &info->dst.box, *sb = &info->src.box;
+   int x0 = db->x, y0 = db->y, x1 = db->x + db->width, y1 = db->y + db->height;
+   if (info->scissor_enable) {
+      x0 = MAX2(x0, (int)info->scissor.minx);
+      y0 = MAX2(y0, (int)info->scissor.miny);
+      x1 = MIN2(x1, (int)info->scissor.maxx);
+      y1 = MIN2(y1, (int)info->scissor.maxy);
+   }
+   x0 = MAX2(x0, 0);
+   y0 = MAX2(y0, 0);
+   x1 = MIN2(x1, (int)dst.width);
+   y1 = MIN2(y1, (int)dst.height);
+   if (db->width <= 0 || db->height <= 0 || db->depth <= 0)
+      return;
+
+   const float scale_x = (float)sb->width / db->width;
+   const float scale_y = (float)sb->height / db->height;
+   const float scale_z = (float)sb->depth / db->depth;
+
+   for (int z = db->z; z < db->z + db->depth; z++) {
+      if (z < 0 || z >= (int)dst.depth)
+         continue;
+      int sz = sb->z + (int)floorf((z - db->z + 0.5f) * scale_z);
+      for (int y = y0; y < y1; y++) {
+         float sy = sb->y + (y - db->y + 0.5f) * scale_y;
+         for (int x = x0; x < x1; x++) {
+            float sx = sb->x + (x - db->x + 0.5f) * scale_x;
+            if (zs)
+               fp_blit_zs(&src, &dst, info->mask, (int)floorf(sx), (int)floorf(sy), sz,
+                          x, y, z);
+            else if (info->mask & PIPE_MASK_RGBA)
+               fp_blit_color(&src, &dst, info, sx, sy, sz, x, y, z);
+         }
+      }
+   }
+}
+
+void fp_init_blit_functions(struct fp_context *fp)
+{
+   fp->pipe.blit = fp_blit;
+}

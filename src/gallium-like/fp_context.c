@@ -1,0 +1,177 @@
+/*
+ * The fixpipe context: owns the model (rast_context), Mesa's draw module
+ * (vertex shading, clipping, divide, viewport, wide points and lines) and
+ * the tgsi_exec machine that runs fragment shaders for the model's quads.
+ */
+#include <stdio.h>
+#include <inttypes.h>
+
+#include "util/u_memory.h"
+#include "util/u_inlines.h"
+#include "util/u_upload_mgr.h"
+#include "util/u_framebuffer.h"
+#include "draw/draw_context.h"
+#include "draw/draw_vbuf.h"
+#include "tgsi/tgsi_exec.h"
+
+#include "fp_context.h"
+#include "fp_resource.h"
+#include "fp_screen.h"
+
+static void fp_print_stats(const struct fp_context *fp)
+{
+   static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color" };
+   const struct rast_stats *st = rast_get_stats(fp->rast);
+   fprintf(stderr, "fixpipe stats (profile %s):\n", rast_get_profile(fp->rast)->name);
+   for (unsigned i = 0; i < RAST_REG_COUNT; i++)
+      fprintf(stderr, "  saturation %-5s high %" PRIu64 " low %" PRIu64 "\n",
+              class_names[i], st->sat[i].high, st->sat[i].low);
+   fprintf(stderr, "  triangles %" PRIu64 " culled %" PRIu64 " lines %" PRIu64
+           " points %" PRIu64 "\n", st->triangles, st->culled, st->lines, st->points);
+   fprintf(stderr, "  quads %" PRIu64 " pixels covered %" PRIu64 " shaded %" PRIu64
+           " samples passed %" PRIu64 "\n", st->quads, st->pixels_covered,
+           st->pixels_shaded, st->samples_passed);
+}
+
+static void fp_destroy(struct pipe_context *pipe)
+{
+   struct fp_context *fp = fp_context(pipe);
+
+   if (fp->rast && fp->print_stats)
+      fp_print_stats(fp);
+
+   util_unreference_framebuffer_state(&fp->framebuffer);
+   for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++) {
+      for (unsigned i = 0; i < PIPE_MAX_SHADER_SAMPLER_VIEWS; i++)
+         pipe_sampler_view_reference(&fp->sampler_views[sh][i], NULL);
+      for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS; i++)
+         pipe_resource_reference(&fp->constants[sh][i].buffer, NULL);
+   }
+   for (unsigned i = 0; i < PIPE_MAX_ATTRIBS; i++)
+      pipe_vertex_buffer_unreference(&fp->vertex_buffer[i]);
+
+   if (fp->draw)
+      draw_destroy(fp->draw);
+   if (fp->fs_mach)
+      tgsi_exec_machine_destroy(fp->fs_mach);
+   for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
+      FREE(fp->tgsi_sampler[sh]);
+   if (fp->pipe.stream_uploader)
+      u_upload_destroy(fp->pipe.stream_uploader);
+   if (fp->rast)
+      rast_destroy(fp->rast);
+   FREE(fp);
+}
+
+static void fp_flush(struct pipe_context *pipe, struct pipe_fence_handle **fence,
+                     unsigned flags)
+{
+   struct fp_context *fp = fp_context(pipe);
+   (void)flags;
+   draw_flush(fp->draw);
+   if (fence)
+      *fence = (struct pipe_fence_handle *)(uintptr_t)1;   /* already signalled */
+}
+
+static void fp_texture_barrier(struct pipe_context *pipe, unsigned flags)
+{
+   (void)pipe; (void)flags;
+}
+
+static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
+{
+   (void)pipe; (void)flags;
+}
+
+static void fp_set_debug_callback(struct pipe_context *pipe,
+                                  const struct util_debug_callback *cb)
+{
+   if (cb)
+      pipe->debug = *cb;
+   else
+      memset(&pipe->debug, 0, sizeof(pipe->debug));
+}
+
+struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
+                                       unsigned flags)
+{
+   struct fp_screen *s = fp_screen(screen);
+   struct fp_context *fp = CALLOC_STRUCT(fp_context);
+   (void)flags;
+   if (!fp)
+      return NULL;
+
+   fp->pipe.screen = screen;
+   fp->pipe.priv = priv;
+   fp->pipe.destroy = fp_destroy;
+   fp->pipe.flush = fp_flush;
+   fp->pipe.texture_barrier = fp_texture_barrier;
+   fp->pipe.memory_barrier = fp_memory_barrier;
+   fp->pipe.set_debug_callback = fp_set_debug_callback;
+   fp->sample_mask = ~0u;
+   fp->fs_dirty = true;
+   fp->print_stats = fp_env_stats();
+
+   fp_init_context_resource_funcs(&fp->pipe);
+   fp_init_state_functions(fp);
+   fp_init_shader_functions(fp);
+   fp_init_fb_functions(fp);
+   fp_init_clear_functions(fp);
+   fp_init_blit_functions(fp);
+   fp_init_query_functions(fp);
+   fp_init_draw_functions(fp);
+
+   fp->rast = rast_create(s->profile);
+   if (!fp->rast)
+      goto fail;
+
+   fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
+   if (!fp->pipe.stream_uploader)
+      goto fail;
+   fp->pipe.const_uploader = fp->pipe.stream_uploader;
+
+   fp->fs_mach = tgsi_exec_machine_create(PIPE_SHADER_FRAGMENT);
+   if (!fp->fs_mach)
+      goto fail;
+   for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++) {
+      fp->tgsi_sampler[sh] = fp_tgsi_sampler_create(fp, (enum pipe_shader_type)sh);
+      if (!fp->tgsi_sampler[sh])
+         goto fail;
+   }
+
+   fp->draw = draw_create_no_llvm(&fp->pipe);
+   if (!fp->draw)
+      goto fail;
+   draw_texture_sampler(fp->draw, PIPE_SHADER_VERTEX,
+                        fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_VERTEX]));
+
+   fp->vbuf_render = fp_create_vbuf_render(fp);
+   if (!fp->vbuf_render)
+      goto fail;
+   fp->vbuf_stage = draw_vbuf_stage(fp->draw, fp->vbuf_render);
+   if (!fp->vbuf_stage) {
+      fp->vbuf_render->destroy(fp->vbuf_render);
+      goto fail;
+   }
+   draw_set_rasterize_stage(fp->draw, fp->vbuf_stage);
+   draw_set_render(fp->draw, fp->vbuf_render);
+
+   /* Every point reaches the model as two triangles (sprite coordinates
+    * from draw's wide-point stage); lines wider than one pixel likewise. */
+   draw_wide_point_threshold(fp->draw, 0.0f);
+   draw_wide_point_sprites(fp->draw, TRUE);
+   draw_enable_point_sprites(fp->draw, TRUE);
+   draw_wide_line_threshold(fp->draw, 1.0f);
+
+   /* GL 1.x extras done by draw with a modified fragment shader, as in
+    * softpipe: smooth lines and points, polygon stipple. */
+   draw_install_aaline_stage(fp->draw, &fp->pipe);
+   draw_install_aapoint_stage(fp->draw, &fp->pipe);
+   draw_install_pstipple_stage(fp->draw, &fp->pipe);
+
+   return &fp->pipe;
+
+fail:
+   fp_destroy(&fp->pipe);
+   return NULL;
+}

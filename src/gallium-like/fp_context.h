@@ -1,0 +1,136 @@
+#ifndef FP_CONTEXT_H
+#define FP_CONTEXT_H
+
+#include "pipe/p_context.h"
+#include "pipe/p_state.h"
+#include "tgsi/tgsi_scan.h"
+#include "draw/draw_vertex.h"
+#include "rast/rast.h"
+
+struct draw_context;
+struct draw_stage;
+struct vbuf_render;
+struct tgsi_exec_machine;
+struct fp_tgsi_sampler;
+
+struct fp_blend_state {
+   struct pipe_blend_state base;
+   struct rast_blend_state rast;
+};
+
+struct fp_dsa_state {
+   struct pipe_depth_stencil_alpha_state base;
+   struct rast_depth_stencil_state rast;
+};
+
+struct fp_rasterizer_state {
+   struct pipe_rasterizer_state base;
+   /* What draw sees: culling is left to the model unless a draw stage
+    * (unfilled polygons) must know it first. */
+   struct pipe_rasterizer_state draw;
+   struct rast_raster_state rast;
+};
+
+struct fp_fragment_shader {
+   const struct tgsi_token *tokens;
+   struct tgsi_shader_info info;
+   void *draw_fs;                   /* draw's copy, for wide points etc. */
+   bool pixel_center_integer;
+   bool color0_to_all;
+   bool writes_depth;
+   bool may_discard;
+   int depth_output;                /* output register, or -1 */
+   int color_output[RAST_MAX_CBUFS];
+   unsigned num_color_outputs;
+};
+
+struct fp_vertex_shader {
+   void *draw_vs;
+};
+
+struct fp_velems {
+   unsigned count;
+   struct pipe_vertex_element elem[PIPE_MAX_ATTRIBS];
+};
+
+struct fp_sampler_view {
+   struct pipe_sampler_view base;
+   void *fetch;                     /* util_format_fetch_rgba_func_ptr */
+   bool zs;                         /* depth: sampled through unpack_z_float */
+   bool is_unorm, is_snorm;
+   unsigned bw, bh, bsize;          /* format block */
+};
+
+struct fp_context {
+   struct pipe_context pipe;
+   struct rast_context *rast;
+   struct draw_context *draw;
+   struct vbuf_render *vbuf_render;
+   struct draw_stage *vbuf_stage;
+
+   const struct fp_blend_state *blend;
+   const struct fp_dsa_state *dsa;
+   const struct fp_rasterizer_state *rasterizer;
+   const struct fp_fragment_shader *fs;
+   const struct fp_vertex_shader *vs;
+   const struct fp_velems *velems;
+
+   struct pipe_framebuffer_state framebuffer;
+   struct pipe_vertex_buffer vertex_buffer[PIPE_MAX_ATTRIBS];
+   unsigned num_vertex_buffers;
+   struct pipe_constant_buffer constants[PIPE_SHADER_TYPES][PIPE_MAX_CONSTANT_BUFFERS];
+   struct pipe_sampler_view *sampler_views[PIPE_SHADER_TYPES][PIPE_MAX_SHADER_SAMPLER_VIEWS];
+   const struct pipe_sampler_state *samplers[PIPE_SHADER_TYPES][PIPE_MAX_SAMPLERS];
+   unsigned sample_mask;
+
+   /* Fragment shading through tgsi_exec. */
+   struct tgsi_exec_machine *fs_mach;
+   struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];
+   bool fs_dirty;                  /* shader, constants or samplers changed */
+
+   /* The vertex layout last given to draw and to the model. */
+   struct vertex_info vinfo;
+   struct rast_vertex_layout vl;
+   bool vl_valid;
+
+   /* Occlusion queries in flight and conditional rendering. */
+   struct pipe_query *render_cond_query;
+   bool render_cond_cond;
+   enum pipe_render_cond_flag render_cond_mode;
+   unsigned active_occlusion_queries;
+
+   bool print_stats;
+};
+
+static inline struct fp_context *fp_context(struct pipe_context *p)
+{
+   return (struct fp_context *)p;
+}
+
+struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
+                                       unsigned flags);
+
+void fp_init_state_functions(struct fp_context *fp);     /* fp_state.c */
+void fp_init_shader_functions(struct fp_context *fp);    /* fp_state_shader.c */
+void fp_init_fb_functions(struct fp_context *fp);        /* fp_state_fb.c */
+void fp_init_clear_functions(struct fp_context *fp);     /* fp_clear.c */
+void fp_init_blit_functions(struct fp_context *fp);      /* fp_blit.c */
+void fp_init_query_functions(struct fp_context *fp);     /* fp_query.c */
+void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
+
+/* fp_vbuf.c */
+struct vbuf_render *fp_create_vbuf_render(struct fp_context *fp);
+
+/* fp_fs.c: bind the current fragment shader to tgsi_exec and the model. */
+void fp_fs_validate(struct fp_context *fp);
+
+/* fp_sampler.c */
+struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
+                                               enum pipe_shader_type stage);
+struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
+void fp_init_sampler_view(struct fp_sampler_view *view);
+
+/* fp_query.c: false when conditional rendering says skip. */
+bool fp_check_render_cond(struct fp_context *fp);
+
+#endif

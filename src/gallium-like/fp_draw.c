@@ -1,0 +1,78 @@
+/*
+ * draw_vbo: map vertex and index buffers for draw (everything is CPU
+ * memory), bring the fragment shader up to date, and let draw run.
+ */
+#include "util/u_draw.h"
+#include "util/u_inlines.h"
+#include "util/u_prim.h"
+#include "draw/draw_context.h"
+
+#include "fp_context.h"
+#include "fp_resource.h"
+
+static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *info,
+                        unsigned drawid_offset, const struct pipe_draw_indirect_info *indirect,
+                        const struct pipe_draw_start_count_bias *draws, unsigned num_draws)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct draw_context *draw = fp->draw;
+
+   if (num_draws > 1) {
+      util_draw_multi(pipe, info, drawid_offset, indirect, draws, num_draws);
+      return;
+   }
+   if (indirect && indirect->buffer) {
+      util_draw_indirect(pipe, info, indirect);
+      return;
+   }
+   if (!draws[0].count || !info->instance_count)
+      return;
+   if (!fp->vs || !fp->velems || !(fp->sample_mask & 1))
+      return;
+   if (!fp_check_render_cond(fp))
+      return;
+
+   if (fp->fs_dirty)
+      fp_fs_validate(fp);
+
+   for (unsigned i = 0; i < fp->num_vertex_buffers; i++) {
+      const struct pipe_vertex_buffer *vb = &fp->vertex_buffer[i];
+      const void *buf = NULL;
+      size_t size = ~(size_t)0;
+      if (vb->is_user_buffer) {
+         buf = vb->buffer.user;
+      } else if (vb->buffer.resource) {
+         buf = fp_resource(vb->buffer.resource)->data;
+         size = vb->buffer.resource->width0;
+      }
+      draw_set_mapped_vertex_buffer(draw, i, buf, size);
+   }
+
+   const void *indices = NULL;
+   if (info->index_size) {
+      unsigned available = ~0u;
+      if (info->has_user_indices) {
+         indices = info->index.user;
+      } else if (info->index.resource) {
+         indices = fp_resource(info->index.resource)->data;
+         available = info->index.resource->width0;
+      }
+      if (!indices)
+         return;
+      draw_set_indexes(draw, (const ubyte *)indices, info->index_size, available);
+   }
+
+   draw_vbo(draw, info, drawid_offset, indirect, draws, num_draws, 0);
+
+   for (unsigned i = 0; i < fp->num_vertex_buffers; i++)
+      draw_set_mapped_vertex_buffer(draw, i, NULL, 0);
+   if (indices)
+      draw_set_indexes(draw, NULL, 0, 0);
+   /* Nothing may stay queued: user buffers are only valid during the call. */
+   draw_flush(draw);
+}
+
+void fp_init_draw_functions(struct fp_context *fp)
+{
+   fp->pipe.draw_vbo = fp_draw_vbo;
+}

@@ -1,0 +1,51 @@
+/*
+ * FIXPIPE_* environment variables.  Read once per process: a driver is
+ * created again for every context, and a bad value should be reported once,
+ * not once per context.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "util/u_call_once.h"
+#include "pipe/p_format.h"
+#include "fp_screen.h"
+
+static const struct rast_profile *env_profile;
+static bool env_stats;
+
+static void fp_env_parse(void)
+{
+   const char *p = getenv("FIXPIPE_PROFILE");
+   env_profile = rast_profile_by_name("seed");
+   if (p && *p) {
+      const struct rast_profile *prof = rast_profile_by_name(p);
+      if (prof)
+         env_profile = prof;
+      else
+         fprintf(stderr, "fixpipe: unknown FIXPIPE_PROFILE '%s' (accepted: %s); using seed\n",
+                 p, rast_profile_names());
+   }
+
+   const char *s = getenv("FIXPIPE_STATS");
+   if (s && *s) {
+      if (!strcmp(s, "1"))
+         env_stats = true;
+      else if (strcmp(s, "0"))
+         fprintf(stderr, "fixpipe: bad FIXPIPE_STATS '%s' (accepted: 0, 1); using 0\n", s);
+   }
+}
+
+static util_once_flag env_once = UTIL_ONCE_FLAG_INIT;
+
+const struct rast_profile *fp_env_profile(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_profile;
+}
+
+bool fp_env_stats(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_stats;
+}

@@ -1,0 +1,136 @@
+/*
+ * Fragment shading for the model's quads through tgsi_exec.  The model
+ * interpolates; tgsi_exec only runs instructions.  exec_declaration() in
+ * tgsi_exec.c would re-interpolate every FS INPUT from InterpCoefs on each
+ * run, so after binding, the INPUT declarations are dropped from the
+ * machine and Inputs[] are filled from rast_quad.in per quad.
+ */
+#include <string.h>
+
+#include "util/u_memory.h"
+#include "tgsi/tgsi_exec.h"
+#include "tgsi/tgsi_parse.h"
+
+#include "fp_context.h"
+#include "fp_resource.h"
+
+static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
+{
+   unsigned n = 0;
+   for (unsigned i = 0; i < mach->NumDeclarations; i++) {
+      if (mach->Declarations[i].Declaration.File == TGSI_FILE_INPUT)
+         continue;
+      mach->Declarations[n++] = mach->Declarations[i];
+   }
+   mach->NumDeclarations = n;
+}
+
+static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   struct fp_context *fp = ctx;
+   const struct fp_fragment_shader *fs = fp->fs;
+   struct tgsi_exec_machine *mach = fp->fs_mach;
+   const struct tgsi_shader_info *info = &fs->info;
+   const float c = fs->pixel_center_integer ? 0.0f : 0.5f;
+
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++) {
+      mach->QuadPos.xyzw[0].f[p] = (float)(q->x + (p & 1)) + c;
+      mach->QuadPos.xyzw[1].f[p] = (float)(q->y + (p >> 1)) + c;
+      mach->QuadPos.xyzw[2].f[p] = q->frag_z[p];
+      mach->QuadPos.xyzw[3].f[p] = q->frag_w[p];
+   }
+   mach->Face = q->front_facing ? 1.0f : -1.0f;
+
+   for (unsigned i = 0; i < info->num_inputs && i < RAST_MAX_VARYINGS; i++) {
+      struct tgsi_exec_vector *in = &mach->Inputs[i];
+      switch (info->input_semantic_name[i]) {
+      case TGSI_SEMANTIC_POSITION:
+         *in = mach->QuadPos;
+         break;
+      case TGSI_SEMANTIC_FACE:
+         for (unsigned p = 0; p < RAST_QUAD_SIZE; p++) {
+            in->xyzw[0].f[p] = mach->Face;
+            in->xyzw[1].f[p] = 0.0f;
+            in->xyzw[2].f[p] = 0.0f;
+            in->xyzw[3].f[p] = 1.0f;
+         }
+         break;
+      default:
+         memcpy(in, q->in[i], sizeof(*in));
+         break;
+      }
+   }
+
+   mach->NonHelperMask = q->mask;
+   unsigned mask = q->mask & tgsi_exec_machine_run(mach, 0) & 0xf;
+   if (!mask)
+      return 0;
+
+   for (unsigned i = 0; i < fs->num_color_outputs; i++) {
+      if (fs->color_output[i] >= 0)
+         memcpy(out->color[i], &mach->Outputs[fs->color_output[i]], sizeof(out->color[i]));
+      else
+         memset(out->color[i], 0, sizeof(out->color[i]));
+   }
+   if (fs->num_color_outputs == 0)
+      memset(out->color[0], 0, sizeof(out->color[0]));
+   if (fs->depth_output >= 0) {
+      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+         out->depth[p] = mach->Outputs[fs->depth_output].xyzw[2].f[p];
+   }
+   return mask;
+}
+
+/* A GL program never draws without a fragment shader, but the driver must
+ * not crash if asked to: colour 0, nothing discarded. */
+static unsigned fp_fs_shade_none(void *ctx, const struct rast_quad *q,
+                                 struct rast_shaded_quad *out)
+{
+   (void)ctx;
+   memset(out->color[0], 0, sizeof(out->color[0]));
+   return q->mask;
+}
+
+void fp_fs_validate(struct fp_context *fp)
+{
+   struct tgsi_exec_machine *mach = fp->fs_mach;
+   struct rast_shader rs;
+   memset(&rs, 0, sizeof(rs));
+   rs.ctx = fp;
+
+   if (!fp->fs) {
+      rs.shade = fp_fs_shade_none;
+      rs.num_outputs = 1;
+      rast_set_shader(fp->rast, &rs);
+      fp->fs_dirty = false;
+      return;
+   }
+
+   const void *bufs[PIPE_MAX_CONSTANT_BUFFERS];
+   unsigned sizes[PIPE_MAX_CONSTANT_BUFFERS];
+   for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS; i++) {
+      const struct pipe_constant_buffer *c = &fp->constants[PIPE_SHADER_FRAGMENT][i];
+      bufs[i] = NULL;
+      sizes[i] = 0;
+      if (c->user_buffer)
+         bufs[i] = (const uint8_t *)c->user_buffer + c->buffer_offset;
+      else if (c->buffer)
+         bufs[i] = fp_resource(c->buffer)->data + c->buffer_offset;
+      if (bufs[i])
+         sizes[i] = c->buffer_size;
+   }
+   tgsi_exec_set_constant_buffers(mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
+
+   tgsi_exec_machine_bind_shader(mach, fp->fs->tokens,
+                                 fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_FRAGMENT]),
+                                 NULL, NULL);
+   fp_fs_drop_input_decls(mach);
+
+   rs.shade = fp_fs_shade;
+   rs.num_outputs = fp->fs->num_color_outputs;
+   rs.writes_depth = fp->fs->writes_depth;
+   rs.color0_to_all = fp->fs->color0_to_all;
+   rs.may_discard = fp->fs->may_discard;
+   rast_set_shader(fp->rast, &rs);
+   fp->fs_dirty = false;
+}

@@ -1,0 +1,142 @@
+/*
+ * Queries: occlusion from the model's samples_passed counter, time from
+ * the OS clock.  Rendering is synchronous, so every result is ready.
+ */
+#include "util/u_memory.h"
+#include "util/os_time.h"
+#include "draw/draw_context.h"
+
+#include "fp_context.h"
+
+struct fp_query {
+   unsigned type;
+   uint64_t start, end;
+   bool active;
+};
+
+static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned type,
+                                          unsigned index)
+{
+   (void)pipe; (void)index;
+   switch (type) {
+   case PIPE_QUERY_OCCLUSION_COUNTER:
+   case PIPE_QUERY_OCCLUSION_PREDICATE:
+   case PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE:
+   case PIPE_QUERY_GPU_FINISHED:
+   case PIPE_QUERY_TIMESTAMP:
+   case PIPE_QUERY_TIME_ELAPSED:
+      break;
+   default:
+      return NULL;
+   }
+   struct fp_query *q = CALLOC_STRUCT(fp_query);
+   if (q)
+      q->type = type;
+   return (struct pipe_query *)q;
+}
+
+static void fp_destroy_query(struct pipe_context *pipe, struct pipe_query *pq)
+{
+   (void)pipe;
+   FREE(pq);
+}
+
+static bool fp_is_occlusion(unsigned type)
+{
+   return type == PIPE_QUERY_OCCLUSION_COUNTER || type == PIPE_QUERY_OCCLUSION_PREDICATE ||
+          type == PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE;
+}
+
+static uint64_t fp_query_now(struct fp_context *fp, unsigned type)
+{
+   if (fp_is_occlusion(type))
+      return rast_get_stats(fp->rast)->samples_passed;
+   return os_time_get_nano();
+}
+
+static bool fp_begin_query(struct pipe_context *pipe, struct pipe_query *pq)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_query *q = (struct fp_query *)pq;
+   draw_flush(fp->draw);
+   q->start = fp_query_now(fp, q->type);
+   q->end = q->start;
+   q->active = true;
+   return true;
+}
+
+static bool fp_end_query(struct pipe_context *pipe, struct pipe_query *pq)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_query *q = (struct fp_query *)pq;
+   draw_flush(fp->draw);
+   q->end = fp_query_now(fp, q->type);
+   q->active = false;
+   return true;
+}
+
+static bool fp_get_query_result(struct pipe_context *pipe, struct pipe_query *pq, bool wait,
+                                union pipe_query_result *result)
+{
+   struct fp_query *q = (struct fp_query *)pq;
+   (void)pipe; (void)wait;
+   switch (q->type) {
+   case PIPE_QUERY_OCCLUSION_COUNTER:
+   case PIPE_QUERY_TIME_ELAPSED:
+      result->u64 = q->end - q->start;
+      break;
+   case PIPE_QUERY_OCCLUSION_PREDICATE:
+   case PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE:
+      result->b = q->end != q->start;
+      break;
+   case PIPE_QUERY_GPU_FINISHED:
+      result->b = true;
+      break;
+   case PIPE_QUERY_TIMESTAMP:
+      result->u64 = q->end;
+      break;
+   default:
+      return false;
+   }
+   return true;
+}
+
+static void fp_set_active_query_state(struct pipe_context *pipe, bool enable)
+{
+   (void)pipe; (void)enable;
+}
+
+static void fp_render_condition(struct pipe_context *pipe, struct pipe_query *query,
+                                bool condition, enum pipe_render_cond_flag mode)
+{
+   struct fp_context *fp = fp_context(pipe);
+   fp->render_cond_query = query;
+   fp->render_cond_cond = condition;
+   fp->render_cond_mode = mode;
+}
+
+bool fp_check_render_cond(struct fp_context *fp)
+{
+   union pipe_query_result result;
+   if (!fp->render_cond_query)
+      return true;
+   if (!fp_get_query_result(&fp->pipe, fp->render_cond_query, true, &result))
+      return true;
+   struct fp_query *q = (struct fp_query *)fp->render_cond_query;
+   bool passed = (q->type == PIPE_QUERY_OCCLUSION_COUNTER || q->type == PIPE_QUERY_TIME_ELAPSED ||
+                  q->type == PIPE_QUERY_TIMESTAMP) ? result.u64 != 0 : result.b;
+   /* Draw when the result differs from `condition` (gallium's meaning). */
+   return passed != fp->render_cond_cond;
+}
+
+void fp_init_query_functions(struct fp_context *fp)
+{
+   struct pipe_context *p = &fp->pipe;
+   p->create_query = fp_create_query;
+   p->destroy_query = fp_destroy_query;
+   p->begin_query = fp_begin_query;
+   p->end_query = fp_end_query;
+   p->get_query_result = fp_get_query_result;
+   p->set_active_query_state = fp_set_active_query_state;
+   p->render_condition = fp_render_condition;
+}

@@ -1,0 +1,35 @@
+#ifndef FP_RESOURCE_H
+#define FP_RESOURCE_H
+
+#include "pipe/p_state.h"
+
+struct sw_displaytarget;
+
+/* Linear storage: level L, layer/face/slice Z starts at
+ * data + level_offset[L] + Z * img_stride[L]. */
+struct fp_resource {
+   struct pipe_resource base;
+   struct sw_displaytarget *dt;    /* winsys surfaces; kept mapped */
+   uint8_t *data;
+   bool user_memory;
+   unsigned stride[PIPE_MAX_TEXTURE_LEVELS];
+   size_t img_stride[PIPE_MAX_TEXTURE_LEVELS];
+   size_t level_offset[PIPE_MAX_TEXTURE_LEVELS];
+};
+
+static inline struct fp_resource *fp_resource(struct pipe_resource *r)
+{
+   return (struct fp_resource *)r;
+}
+
+static inline uint8_t *fp_resource_image(struct pipe_resource *r, unsigned level,
+                                         unsigned layer)
+{
+   struct fp_resource *fr = fp_resource(r);
+   return fr->data + fr->level_offset[level] + layer * fr->img_stride[level];
+}
+
+void fp_init_screen_resource_funcs(struct pipe_screen *screen);
+void fp_init_context_resource_funcs(struct pipe_context *pipe);
+
+#endif

@@ -1,0 +1,337 @@
+/*
+ * The fixpipe screen: capabilities honest for what the model draws
+ * (GL ES 2.0, desktop GL 2.1 / GLSL 1.20, single sample), formats, fences.
+ */
+#include <stdio.h>
+
+/* nir.h (for the compiler options type) trips -Wsign-compare and
+ * -Wmissing-field-initializers inside Mesa's own code. */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include "compiler/nir/nir.h"
+#pragma GCC diagnostic pop
+#include "util/u_memory.h"
+#include "util/u_math.h"
+#include "util/format/u_format.h"
+#include "util/u_screen.h"
+#include "util/os_misc.h"
+#include "util/os_time.h"
+#include "pipe/p_defines.h"
+#include "pipe/p_screen.h"
+#include "draw/draw_context.h"
+#include "frontend/sw_winsys.h"
+#include "tgsi/tgsi_exec.h"
+
+#include "fp_public.h"
+#include "fp_screen.h"
+#include "fp_context.h"
+#include "fp_resource.h"
+
+static const char *fp_get_vendor(struct pipe_screen *screen)
+{
+   (void)screen;
+   return "fixpipe";
+}
+
+static const char *fp_get_name(struct pipe_screen *screen)
+{
+   return fp_screen(screen)->name;
+}
+
+/* st/mesa compiles to NIR and converts to TGSI for us, as for softpipe. */
+static const nir_shader_compiler_options fp_compiler_options = {
+   .fdot_replicates = true,
+   .fuse_ffma32 = true,
+   .fuse_ffma64 = true,
+   .lower_extract_byte = true,
+   .lower_extract_word = true,
+   .lower_insert_byte = true,
+   .lower_insert_word = true,
+   .lower_fdph = true,
+   .lower_flrp64 = true,
+   .lower_fmod = true,
+   .lower_rotate = true,
+   .lower_uniforms_to_ubo = true,
+   .lower_vector_cmp = true,
+   .lower_int64_options = nir_lower_imul_2x32_64,
+   .max_unroll_iterations = 32,
+   .use_interpolated_input_intrinsics = true,
+};
+
+static const void *fp_get_compiler_options(struct pipe_screen *screen,
+                                           enum pipe_shader_ir ir,
+                                           enum pipe_shader_type shader)
+{
+   (void)screen; (void)ir; (void)shader;
+   return &fp_compiler_options;
+}
+
+static int fp_max_levels(const struct fp_screen *s)
+{
+   return util_logbase2(s->profile->max_target) + 1;
+}
+
+static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
+{
+   struct fp_screen *s = fp_screen(screen);
+   switch (param) {
+   case PIPE_CAP_NPOT_TEXTURES:
+   case PIPE_CAP_MIXED_FRAMEBUFFER_SIZES:
+   case PIPE_CAP_MIXED_COLOR_DEPTH_BITS:
+   case PIPE_CAP_FRAGMENT_SHADER_TEXTURE_LOD:
+   case PIPE_CAP_FRAGMENT_SHADER_DERIVATIVES:
+   case PIPE_CAP_OCCLUSION_QUERY:
+   case PIPE_CAP_QUERY_TIME_ELAPSED:
+   case PIPE_CAP_QUERY_TIMESTAMP:
+   case PIPE_CAP_TEXTURE_MIRROR_CLAMP:
+   case PIPE_CAP_TEXTURE_MIRROR_CLAMP_TO_EDGE:
+   case PIPE_CAP_TEXTURE_SWIZZLE:
+   case PIPE_CAP_TEXTURE_SHADOW_MAP:
+   case PIPE_CAP_BLEND_EQUATION_SEPARATE:
+   case PIPE_CAP_INDEP_BLEND_ENABLE:
+   case PIPE_CAP_INDEP_BLEND_FUNC:
+   case PIPE_CAP_FS_COORD_ORIGIN_UPPER_LEFT:
+   case PIPE_CAP_FS_COORD_PIXEL_CENTER_HALF_INTEGER:
+   case PIPE_CAP_FS_COORD_PIXEL_CENTER_INTEGER:
+   case PIPE_CAP_PRIMITIVE_RESTART:
+   case PIPE_CAP_PRIMITIVE_RESTART_FIXED_INDEX:
+   case PIPE_CAP_VS_INSTANCEID:
+   case PIPE_CAP_VERTEX_ELEMENT_INSTANCE_DIVISOR:
+   case PIPE_CAP_START_INSTANCE:
+   case PIPE_CAP_CONDITIONAL_RENDER:
+   case PIPE_CAP_CONDITIONAL_RENDER_INVERTED:
+   case PIPE_CAP_VERTEX_COLOR_UNCLAMPED:   /* draw module */
+   case PIPE_CAP_VERTEX_COLOR_CLAMPED:
+   case PIPE_CAP_USER_VERTEX_BUFFERS:
+   case PIPE_CAP_TEXTURE_FLOAT_LINEAR:
+   case PIPE_CAP_TEXTURE_HALF_FLOAT_LINEAR:
+   case PIPE_CAP_TEXTURE_BARRIER:
+   case PIPE_CAP_ANISOTROPIC_FILTER:       /* accepted; sampled isotropically */
+      return 1;
+   case PIPE_CAP_ALPHA_TEST:                 /* st lowers it into the shader */
+   case PIPE_CAP_SEAMLESS_CUBE_MAP:
+   case PIPE_CAP_TEXTURE_MULTISAMPLE:
+   case PIPE_CAP_MAX_STREAM_OUTPUT_BUFFERS:
+   case PIPE_CAP_TEXTURE_BUFFER_OBJECTS:
+   case PIPE_CAP_SHADER_STENCIL_EXPORT:
+   case PIPE_CAP_COMPUTE:
+   case PIPE_CAP_SHAREABLE_SHADERS:         /* draw's shaders are per context */
+   case PIPE_CAP_ACCELERATED:
+   case PIPE_CAP_UMA:
+   case PIPE_CAP_TEXTURE_TRANSFER_MODES:
+      return 0;
+   case PIPE_CAP_GLSL_FEATURE_LEVEL:
+   case PIPE_CAP_GLSL_FEATURE_LEVEL_COMPATIBILITY:
+      return 120;
+   case PIPE_CAP_MAX_RENDER_TARGETS:
+      return RAST_MAX_CBUFS;
+   case PIPE_CAP_MAX_DUAL_SOURCE_RENDER_TARGETS:
+      return 0;
+   case PIPE_CAP_MAX_TEXTURE_2D_SIZE:
+      return s->profile->max_target;
+   case PIPE_CAP_MAX_TEXTURE_3D_LEVELS:
+      return MIN2(fp_max_levels(s), 9);     /* 256^3 */
+   case PIPE_CAP_MAX_TEXTURE_CUBE_LEVELS:
+      return fp_max_levels(s);
+   case PIPE_CAP_MAX_TEXTURE_ARRAY_LAYERS:
+      return 256;
+   case PIPE_CAP_MIN_TEXEL_OFFSET:
+      return -8;
+   case PIPE_CAP_MAX_TEXEL_OFFSET:
+      return 7;
+   case PIPE_CAP_MAX_VERTEX_ATTRIB_STRIDE:
+      return 2048;
+   case PIPE_CAP_CONSTANT_BUFFER_OFFSET_ALIGNMENT:
+      return 16;
+   case PIPE_CAP_MIN_MAP_BUFFER_ALIGNMENT:
+      return 64;
+   case PIPE_CAP_MAX_VIEWPORTS:
+      return 1;
+   case PIPE_CAP_ENDIANNESS:
+      return PIPE_ENDIAN_NATIVE;
+   case PIPE_CAP_MAX_VARYINGS:
+      return MIN2(TGSI_EXEC_MAX_INPUT_ATTRIBS, RAST_MAX_VARYINGS) - 2;
+   case PIPE_CAP_VENDOR_ID:
+   case PIPE_CAP_DEVICE_ID:
+      return 0xFFFFFFFF;
+   case PIPE_CAP_VIDEO_MEMORY: {
+      uint64_t mem;
+      if (!os_get_total_physical_memory(&mem))
+         return 0;
+      return (int)(mem >> 20);
+   }
+   default:
+      return u_pipe_screen_get_param_defaults(screen, param);
+   }
+}
+
+static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type shader,
+                               enum pipe_shader_cap param)
+{
+   (void)screen;
+   switch (param) {
+   case PIPE_SHADER_CAP_PREFERRED_IR:
+      return PIPE_SHADER_IR_TGSI;
+   case PIPE_SHADER_CAP_SUPPORTED_IRS:
+      return 1 << PIPE_SHADER_IR_TGSI;
+   default:
+      break;
+   }
+   switch (shader) {
+   case PIPE_SHADER_FRAGMENT:
+      if (param == PIPE_SHADER_CAP_MAX_INPUTS)
+         return RAST_MAX_VARYINGS;
+      if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
+          param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
+         return 16;
+      if (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
+          param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
+         return 0;
+      return tgsi_exec_get_shader_param(param);
+   case PIPE_SHADER_VERTEX:
+      if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
+          param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
+         return 16;
+      if (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
+          param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
+         return 0;
+      return draw_get_shader_param_no_llvm(shader, param);
+   default:
+      return 0;
+   }
+}
+
+static float fp_get_paramf(struct pipe_screen *screen, enum pipe_capf param)
+{
+   (void)screen;
+   switch (param) {
+   case PIPE_CAPF_MIN_LINE_WIDTH:
+   case PIPE_CAPF_MIN_LINE_WIDTH_AA:
+   case PIPE_CAPF_MIN_POINT_SIZE:
+   case PIPE_CAPF_MIN_POINT_SIZE_AA:
+      return 1;
+   case PIPE_CAPF_POINT_SIZE_GRANULARITY:
+   case PIPE_CAPF_LINE_WIDTH_GRANULARITY:
+      return 0.1f;
+   case PIPE_CAPF_MAX_LINE_WIDTH:
+   case PIPE_CAPF_MAX_LINE_WIDTH_AA:
+   case PIPE_CAPF_MAX_POINT_SIZE:
+   case PIPE_CAPF_MAX_POINT_SIZE_AA:
+      return 255.0f;
+   case PIPE_CAPF_MAX_TEXTURE_ANISOTROPY:
+      return 16.0f;
+   case PIPE_CAPF_MAX_TEXTURE_LOD_BIAS:
+      return 16.0f;
+   default:
+      return 0.0f;
+   }
+}
+
+static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format format,
+                                   enum pipe_texture_target target, unsigned sample_count,
+                                   unsigned storage_sample_count, unsigned bind)
+{
+   struct sw_winsys *winsys = fp_screen(screen)->winsys;
+   const struct util_format_description *desc = util_format_description(format);
+
+   if (!desc || MAX2(1, sample_count) != 1 || MAX2(1, storage_sample_count) != 1)
+      return false;
+
+   if (bind & (PIPE_BIND_DISPLAY_TARGET | PIPE_BIND_SCANOUT | PIPE_BIND_SHARED)) {
+      if (!winsys->is_displaytarget_format_supported(winsys, bind, format))
+         return false;
+   }
+   if ((bind & PIPE_BIND_RENDER_TARGET) && !fp_format_renderable(format))
+      return false;
+   if ((bind & PIPE_BIND_DEPTH_STENCIL) && !fp_format_depth_supported(format))
+      return false;
+   if (bind & PIPE_BIND_SAMPLER_VIEW) {
+      if (target == PIPE_BUFFER || !fp_format_samplable(format))
+         return false;
+   }
+   if (bind & (PIPE_BIND_SHADER_IMAGE | PIPE_BIND_SHADER_BUFFER))
+      return false;
+   if (target != PIPE_BUFFER && desc->nr_channels == 3 && desc->is_array &&
+       (bind & (PIPE_BIND_RENDER_TARGET | PIPE_BIND_SAMPLER_VIEW)) &&
+       !(bind & PIPE_BIND_DISPLAY_TARGET)) {
+      /* As softpipe: keep RGB8-like formats for vertex data only, so copies
+       * between formats of one size stay possible. */
+      return false;
+   }
+   return true;
+}
+
+static void fp_destroy_screen(struct pipe_screen *screen)
+{
+   struct fp_screen *s = fp_screen(screen);
+   if (s->winsys->destroy)
+      s->winsys->destroy(s->winsys);
+   FREE(s);
+}
+
+static void fp_flush_frontbuffer(struct pipe_screen *screen, struct pipe_context *pipe,
+                                 struct pipe_resource *resource, unsigned level,
+                                 unsigned layer, void *context_private,
+                                 struct pipe_box *sub_box)
+{
+   struct fp_screen *s = fp_screen(screen);
+   struct fp_resource *r = fp_resource(resource);
+   (void)pipe; (void)level; (void)layer;
+   if (r->dt)
+      s->winsys->displaytarget_display(s->winsys, r->dt, context_private, sub_box);
+}
+
+/* Rendering is synchronous: every fence is signalled when it is made. */
+static void fp_fence_reference(struct pipe_screen *screen, struct pipe_fence_handle **ptr,
+                               struct pipe_fence_handle *fence)
+{
+   (void)screen;
+   *ptr = fence;
+}
+
+static bool fp_fence_finish(struct pipe_screen *screen, struct pipe_context *ctx,
+                            struct pipe_fence_handle *fence, uint64_t timeout)
+{
+   (void)screen; (void)ctx; (void)fence; (void)timeout;
+   return true;
+}
+
+static uint64_t fp_get_timestamp(struct pipe_screen *screen)
+{
+   (void)screen;
+   return os_time_get_nano();
+}
+
+struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
+{
+   struct fp_screen *s = CALLOC_STRUCT(fp_screen);
+   if (!s)
+      return NULL;
+
+   s->winsys = winsys;
+   s->profile = fp_env_profile();
+   if (!s->profile) {
+      FREE(s);
+      return NULL;
+   }
+   snprintf(s->name, sizeof(s->name), "fixpipe (%s)", s->profile->name);
+
+   s->base.destroy = fp_destroy_screen;
+   s->base.get_name = fp_get_name;
+   s->base.get_vendor = fp_get_vendor;
+   s->base.get_device_vendor = fp_get_vendor;
+   s->base.get_param = fp_get_param;
+   s->base.get_shader_param = fp_get_shader_param;
+   s->base.get_paramf = fp_get_paramf;
+   s->base.get_timestamp = fp_get_timestamp;
+   s->base.is_format_supported = fp_is_format_supported;
+   s->base.context_create = fp_create_context;
+   s->base.flush_frontbuffer = fp_flush_frontbuffer;
+   s->base.get_compiler_options = fp_get_compiler_options;
+   s->base.fence_reference = fp_fence_reference;
+   s->base.fence_finish = fp_fence_finish;
+
+   fp_init_screen_resource_funcs(&s->base);
+   return &s->base;
+}

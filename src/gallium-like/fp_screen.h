@@ -1,0 +1,31 @@
+#ifndef FP_SCREEN_H
+#define FP_SCREEN_H
+
+#include "pipe/p_screen.h"
+#include "rast/rast.h"
+
+struct sw_winsys;
+
+struct fp_screen {
+   struct pipe_screen base;
+   struct sw_winsys *winsys;
+   const struct rast_profile *profile;
+   char name[64];
+};
+
+static inline struct fp_screen *fp_screen(struct pipe_screen *s)
+{
+   return (struct fp_screen *)s;
+}
+
+/* FIXPIPE_* environment, parsed once per process; bad values are reported
+ * once on stderr with the accepted values. */
+const struct rast_profile *fp_env_profile(void);
+bool fp_env_stats(void);
+
+/* Render-target formats the driver can pack from float (fp_format.c). */
+bool fp_format_renderable(enum pipe_format format);
+bool fp_format_depth_supported(enum pipe_format format);
+bool fp_format_samplable(enum pipe_format format);
+
+#endif

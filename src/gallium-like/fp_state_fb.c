@@ -1,0 +1,85 @@
+/*
+ * The framebuffer: gallium surfaces become the model's direct pointers and
+ * layouts, chosen here once per set_framebuffer_state.
+ */
+#include "util/u_inlines.h"
+#include "util/u_framebuffer.h"
+#include "util/format/u_format.h"
+#include "draw/draw_context.h"
+#include "draw/draw_private.h"   /* draw->mrd: see fp_set_polygon_offset_unit */
+
+#include "fp_context.h"
+#include "fp_format.h"
+#include "fp_resource.h"
+#include "fp_screen.h"
+
+static uint8_t *fp_surface_base(struct pipe_surface *ps, int *stride)
+{
+   struct fp_resource *r = fp_resource(ps->texture);
+   if (!r->data)
+      return NULL;
+   if (ps->texture->target == PIPE_BUFFER) {
+      *stride = 0;
+      return r->data + ps->u.buf.first_element * util_format_get_blocksize(ps->format);
+   }
+   *stride = (int)r->stride[ps->u.tex.level];
+   return fp_resource_image(ps->texture, ps->u.tex.level, ps->u.tex.first_layer);
+}
+
+/* draw's polygon-offset stage adds offset_units * mrd to z.  The model
+ * resolves depth to 1 / (2^z_bits - 1) whatever the buffer's width, so a
+ * unit must be at least that, or an offset of one unit would vanish in the
+ * model's Z register (piglit polygon-offset). */
+static void fp_set_polygon_offset_unit(struct fp_context *fp, enum pipe_format zs_format)
+{
+   const struct rast_profile *prof = rast_get_profile(fp->rast);
+   draw_set_zs_format(fp->draw, zs_format);
+   if (!fp->draw->floating_point_depth) {
+      double model_mrd = 1.0 / (double)((1u << prof->z_bits) - 1);
+      if (fp->draw->mrd < model_mrd)
+         fp->draw->mrd = model_mrd;
+   }
+}
+
+static void fp_set_framebuffer_state(struct pipe_context *pipe,
+                                     const struct pipe_framebuffer_state *fb)
+{
+   struct fp_context *fp = fp_context(pipe);
+   const struct rast_profile *prof = rast_get_profile(fp->rast);
+   struct rast_framebuffer rfb;
+
+   draw_flush(fp->draw);
+   util_copy_framebuffer_state(&fp->framebuffer, fb);
+
+   memset(&rfb, 0, sizeof(rfb));
+   /* Beyond the profile's X_out range the model cannot address pixels;
+    * the screen never offers larger textures, but windows can be larger. */
+   rfb.width = MIN2(fb->width, prof->max_target);
+   rfb.height = MIN2(fb->height, prof->max_target);
+   rfb.nr_cbufs = MIN2(fb->nr_cbufs, RAST_MAX_CBUFS);
+   for (unsigned i = 0; i < rfb.nr_cbufs; i++) {
+      struct pipe_surface *ps = fb->cbufs[i];
+      struct rast_color_target *ct = &rfb.cbuf[i];
+      if (!ps || !ps->texture || !fp_format_color_target(ps->format, ct)) {
+         memset(ct, 0, sizeof(*ct));
+         continue;
+      }
+      ct->base = fp_surface_base(ps, &ct->stride);
+   }
+   rfb.zs.layout = RAST_ZS_NONE;
+   if (fb->zsbuf && fb->zsbuf->texture) {
+      enum rast_zs_layout l = fp_format_zs_layout(fb->zsbuf->format);
+      uint8_t *base = l != RAST_ZS_NONE ? fp_surface_base(fb->zsbuf, &rfb.zs.stride) : NULL;
+      if (base) {
+         rfb.zs.base = base;
+         rfb.zs.layout = l;
+      }
+   }
+   rast_set_framebuffer(fp->rast, &rfb);
+   fp_set_polygon_offset_unit(fp, fb->zsbuf ? fb->zsbuf->format : PIPE_FORMAT_NONE);
+}
+
+void fp_init_fb_functions(struct fp_context *fp)
+{
+   fp->pipe.set_framebuffer_state = fp_set_framebuffer_state;
+}

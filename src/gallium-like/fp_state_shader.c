@@ -1,0 +1,160 @@
+/*
+ * Shader CSOs and constant buffers.  Vertex shaders belong to draw;
+ * fragment shaders keep their TGSI for tgsi_exec plus draw's copy (which
+ * draw's wide-point stage reads to find sprite-coordinate inputs).
+ */
+#include "util/u_memory.h"
+#include "util/u_inlines.h"
+#include "draw/draw_context.h"
+#include "tgsi/tgsi_parse.h"
+#include "tgsi/tgsi_scan.h"
+#include "tgsi/tgsi_exec.h"
+
+#include "fp_context.h"
+#include "fp_resource.h"
+
+static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_fragment_shader *fs;
+
+   if (templ->type != PIPE_SHADER_IR_TGSI || !templ->tokens)
+      return NULL;
+   fs = CALLOC_STRUCT(fp_fragment_shader);
+   if (!fs)
+      return NULL;
+   fs->tokens = tgsi_dup_tokens(templ->tokens);
+   if (!fs->tokens) {
+      FREE(fs);
+      return NULL;
+   }
+   tgsi_scan_shader(fs->tokens, &fs->info);
+
+   struct pipe_shader_state dstate = *templ;
+   dstate.tokens = fs->tokens;
+   fs->draw_fs = draw_create_fragment_shader(fp->draw, &dstate);
+   if (!fs->draw_fs) {
+      FREE((void *)fs->tokens);
+      FREE(fs);
+      return NULL;
+   }
+
+   const struct tgsi_shader_info *info = &fs->info;
+   fs->pixel_center_integer =
+      info->properties[TGSI_PROPERTY_FS_COORD_PIXEL_CENTER] == TGSI_FS_COORD_PIXEL_CENTER_INTEGER;
+   fs->color0_to_all = info->properties[TGSI_PROPERTY_FS_COLOR0_WRITES_ALL_CBUFS] != 0;
+   fs->may_discard = info->uses_kill;
+   fs->depth_output = -1;
+   for (unsigned i = 0; i < RAST_MAX_CBUFS; i++)
+      fs->color_output[i] = -1;
+   for (unsigned i = 0; i < info->num_outputs; i++) {
+      unsigned idx = info->output_semantic_index[i];
+      switch (info->output_semantic_name[i]) {
+      case TGSI_SEMANTIC_COLOR:
+         if (idx < RAST_MAX_CBUFS) {
+            fs->color_output[idx] = i;
+            fs->num_color_outputs = MAX2(fs->num_color_outputs, idx + 1);
+         }
+         break;
+      case TGSI_SEMANTIC_POSITION:
+         fs->depth_output = i;
+         fs->writes_depth = true;
+         break;
+      default:
+         break;
+      }
+   }
+   return fs;
+}
+
+static void fp_bind_fs_state(struct pipe_context *pipe, void *cso)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_fragment_shader *fs = cso;
+   draw_bind_fragment_shader(fp->draw, fs ? fs->draw_fs : NULL);
+   fp->fs = fs;
+   fp->fs_dirty = true;
+   fp->vl_valid = false;
+}
+
+static void fp_delete_fs_state(struct pipe_context *pipe, void *cso)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_fragment_shader *fs = cso;
+   if (fp->fs_mach->Tokens == fs->tokens)
+      tgsi_exec_machine_bind_shader(fp->fs_mach, NULL, NULL, NULL, NULL);
+   if (fp->fs == fs)
+      fp->fs = NULL;
+   draw_delete_fragment_shader(fp->draw, fs->draw_fs);
+   FREE((void *)fs->tokens);
+   FREE(fs);
+}
+
+static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_vertex_shader *vs = CALLOC_STRUCT(fp_vertex_shader);
+   if (!vs)
+      return NULL;
+   vs->draw_vs = draw_create_vertex_shader(fp->draw, templ);
+   if (!vs->draw_vs) {
+      FREE(vs);
+      return NULL;
+   }
+   return vs;
+}
+
+static void fp_bind_vs_state(struct pipe_context *pipe, void *cso)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_vertex_shader *vs = cso;
+   fp->vs = vs;
+   draw_bind_vertex_shader(fp->draw, vs ? vs->draw_vs : NULL);
+   fp->vl_valid = false;
+}
+
+static void fp_delete_vs_state(struct pipe_context *pipe, void *cso)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_vertex_shader *vs = cso;
+   draw_delete_vertex_shader(fp->draw, vs->draw_vs);
+   FREE(vs);
+}
+
+static void fp_set_constant_buffer(struct pipe_context *pipe, enum pipe_shader_type shader,
+                                   uint index, bool take_ownership,
+                                   const struct pipe_constant_buffer *cb)
+{
+   struct fp_context *fp = fp_context(pipe);
+   if (shader >= PIPE_SHADER_TYPES || index >= PIPE_MAX_CONSTANT_BUFFERS)
+      return;
+   draw_flush(fp->draw);
+   util_copy_constant_buffer(&fp->constants[shader][index], cb, take_ownership);
+
+   const struct pipe_constant_buffer *c = &fp->constants[shader][index];
+   const void *data = NULL;
+   unsigned size = 0;
+   if (c->user_buffer) {
+      data = (const uint8_t *)c->user_buffer + c->buffer_offset;
+      size = c->buffer_size;
+   } else if (c->buffer) {
+      data = fp_resource(c->buffer)->data + c->buffer_offset;
+      size = c->buffer_size;
+   }
+   if (shader == PIPE_SHADER_VERTEX || shader == PIPE_SHADER_GEOMETRY)
+      draw_set_mapped_constant_buffer(fp->draw, shader, index, data, size);
+   if (shader == PIPE_SHADER_FRAGMENT)
+      fp->fs_dirty = true;
+}
+
+void fp_init_shader_functions(struct fp_context *fp)
+{
+   struct pipe_context *p = &fp->pipe;
+   p->create_fs_state = fp_create_fs_state;
+   p->bind_fs_state = fp_bind_fs_state;
+   p->delete_fs_state = fp_delete_fs_state;
+   p->create_vs_state = fp_create_vs_state;
+   p->bind_vs_state = fp_bind_vs_state;
+   p->delete_vs_state = fp_delete_vs_state;
+   p->set_constant_buffer = fp_set_constant_buffer;
+}

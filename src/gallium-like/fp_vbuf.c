@@ -1,0 +1,297 @@
+/*
+ * draw's back end: post-transform vertices (window x, y, z, 1/w in slot 0,
+ * then one float[4] slot per fragment-shader input) go to the model
+ * primitive by primitive.
+ */
+#include <string.h>
+
+#include "util/u_memory.h"
+#include "util/u_prim.h"
+#include "draw/draw_context.h"
+#include "draw/draw_vbuf.h"
+#include "draw/draw_vertex.h"
+
+#include "fp_context.h"
+
+/* draw passes vertex counts as ushort: a batch must stay far below 65536
+ * vertices (the smallest vertex is 16 bytes), or counts wrap and draw
+ * writes past the buffer. */
+#define FP_MAX_VBUF_INDICES 1024
+#define FP_MAX_VBUF_BYTES   (64 * 1024)
+
+struct fp_vbuf_render {
+   struct vbuf_render base;
+   struct fp_context *fp;
+   enum pipe_prim_type prim;
+   unsigned vertex_size;          /* bytes */
+   void *vertices;
+   size_t vertices_size;
+};
+
+static struct fp_vbuf_render *fp_vbuf(struct vbuf_render *r)
+{
+   return (struct fp_vbuf_render *)r;
+}
+
+static enum rast_interp fp_interp(unsigned tgsi_interp)
+{
+   switch (tgsi_interp) {
+   case TGSI_INTERPOLATE_CONSTANT: return RAST_INTERP_CONSTANT;
+   case TGSI_INTERPOLATE_LINEAR: return RAST_INTERP_LINEAR;
+   case TGSI_INTERPOLATE_COLOR: return RAST_INTERP_COLOR;
+   default: return RAST_INTERP_PERSPECTIVE;
+   }
+}
+
+/* The layout depends on the FS inputs, the VS outputs and on the extra
+ * attributes draw's wide-point stage allocates while a draw is running,
+ * so it is rebuilt whenever draw asks. */
+static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
+{
+   struct fp_context *fp = fp_vbuf(r)->fp;
+   struct draw_context *draw = fp->draw;
+   struct vertex_info *vinfo = &fp->vinfo;
+   struct rast_vertex_layout vl;
+
+   memset(vinfo, 0, sizeof(*vinfo));
+   memset(&vl, 0, sizeof(vl));
+   draw_emit_vertex_attr(vinfo, EMIT_4F,
+                         draw_find_shader_output(draw, TGSI_SEMANTIC_POSITION, 0));
+   vl.pos_slot = 0;
+
+   if (fp->fs) {
+      const struct tgsi_shader_info *info = &fp->fs->info;
+      unsigned n = MIN2(info->num_inputs, RAST_MAX_VARYINGS);
+      for (unsigned i = 0; i < n; i++) {
+         unsigned name = info->input_semantic_name[i];
+         unsigned index = info->input_semantic_index[i];
+         int src = draw_find_shader_output(draw, name, index);
+         if (name == TGSI_SEMANTIC_COLOR && src < 0)
+            src = draw_find_shader_output(draw, TGSI_SEMANTIC_BCOLOR, index);
+         vl.varying[i].slot = (uint8_t)vinfo->num_attribs;
+         vl.varying[i].interp = fp_interp(info->input_interpolate[i]);
+         /* fp_fs.c computes these itself: nothing to interpolate. */
+         vl.varying[i].usage_mask = (name == TGSI_SEMANTIC_POSITION ||
+                                     name == TGSI_SEMANTIC_FACE) ? 0
+                                    : info->input_usage_mask[i];
+         draw_emit_vertex_attr(vinfo, EMIT_4F, src);
+      }
+      vl.num_varyings = n;
+   }
+   draw_compute_vertex_size(vinfo);
+   vl.vertex_size = vinfo->num_attribs;
+
+   if (!fp->vl_valid || memcmp(&vl, &fp->vl, sizeof(vl)) != 0) {
+      fp->vl = vl;
+      fp->vl_valid = true;
+      rast_set_vertex_layout(fp->rast, &fp->vl);
+   }
+   return vinfo;
+}
+
+static boolean fp_vbuf_allocate_vertices(struct vbuf_render *r, ushort vertex_size,
+                                         ushort nr_vertices)
+{
+   struct fp_vbuf_render *v = fp_vbuf(r);
+   size_t size = (size_t)vertex_size * nr_vertices;
+   if (v->vertices_size < size) {
+      align_free(v->vertices);
+      v->vertices = align_malloc(size, 16);
+      v->vertices_size = v->vertices ? size : 0;
+   }
+   v->vertex_size = vertex_size;
+   return v->vertices != NULL;
+}
+
+static void *fp_vbuf_map_vertices(struct vbuf_render *r)
+{
+   return fp_vbuf(r)->vertices;
+}
+
+static void fp_vbuf_unmap_vertices(struct vbuf_render *r, ushort min_index, ushort max_index)
+{
+   (void)r; (void)min_index; (void)max_index;
+}
+
+static void fp_vbuf_release_vertices(struct vbuf_render *r)
+{
+   (void)r;   /* keep the allocation for the next batch */
+}
+
+static void fp_vbuf_set_primitive(struct vbuf_render *r, enum pipe_prim_type prim)
+{
+   fp_vbuf(r)->prim = prim;
+}
+
+typedef const float (*fp_vert)[4];
+
+/* A point that reached us after all (draw normally makes every point two
+ * triangles): its square, as two triangles. */
+static void fp_emit_point(struct fp_vbuf_render *v, fp_vert p)
+{
+   struct fp_context *fp = v->fp;
+   float size = fp->rasterizer ? fp->rasterizer->base.point_size : 1.0f;
+   float h = 0.5f * (size > 0.0f ? size : 1.0f);
+   unsigned slots = v->vertex_size / 16;
+   float quad[4][PIPE_MAX_SHADER_OUTPUTS + 4][4];
+   static const float dx[4] = { -1, 1, 1, -1 }, dy[4] = { -1, -1, 1, 1 };
+
+   if (slots > PIPE_MAX_SHADER_OUTPUTS + 4)
+      return;
+   for (unsigned c = 0; c < 4; c++) {
+      memcpy(quad[c], p, v->vertex_size);
+      quad[c][0][0] += dx[c] * h;
+      quad[c][0][1] += dy[c] * h;
+   }
+   rast_triangle(fp->rast, quad[0], quad[1], quad[2]);
+   rast_triangle(fp->rast, quad[0], quad[2], quad[3]);
+}
+
+#define V(i) ((fp_vert)((const uint8_t *)v->vertices + (size_t)(IDX(i)) * stride))
+
+/* One body for draw_elements and draw_arrays; IDX maps a position in the
+ * primitive stream to a vertex number. */
+#define FP_EMIT_PRIMS()                                                        \
+   do {                                                                        \
+      struct rast_context *rc = v->fp->rast;                                   \
+      const bool first = v->fp->rasterizer && v->fp->rasterizer->base.flatshade_first; \
+      unsigned i;                                                              \
+      switch (v->prim) {                                                       \
+      case PIPE_PRIM_POINTS:                                                   \
+         for (i = 0; i < nr; i++) fp_emit_point(v, V(i));                      \
+         break;                                                                \
+      case PIPE_PRIM_LINES:                                                    \
+         for (i = 1; i < nr; i += 2) rast_line(rc, V(i - 1), V(i));            \
+         break;                                                                \
+      case PIPE_PRIM_LINE_STRIP:                                               \
+         for (i = 1; i < nr; i++) rast_line(rc, V(i - 1), V(i));               \
+         break;                                                                \
+      case PIPE_PRIM_LINE_LOOP:                                                \
+         for (i = 1; i < nr; i++) rast_line(rc, V(i - 1), V(i));               \
+         if (nr > 1) rast_line(rc, V(nr - 1), V(0));                           \
+         break;                                                                \
+      case PIPE_PRIM_TRIANGLES:                                                \
+         for (i = 2; i < nr; i += 3) rast_triangle(rc, V(i - 2), V(i - 1), V(i)); \
+         break;                                                                \
+      case PIPE_PRIM_TRIANGLE_STRIP:                                           \
+         for (i = 2; i < nr; i++) {                                            \
+            if (first)                                                         \
+               rast_triangle(rc, V(i - 2), V(i + (i & 1) - 1), V(i - (i & 1))); \
+            else                                                               \
+               rast_triangle(rc, V(i + (i & 1) - 2), V(i - (i & 1) - 1), V(i)); \
+         }                                                                     \
+         break;                                                                \
+      case PIPE_PRIM_TRIANGLE_FAN:                                             \
+         for (i = 2; i < nr; i++) {                                            \
+            if (first)                                                         \
+               rast_triangle(rc, V(i - 1), V(i), V(0));                        \
+            else                                                               \
+               rast_triangle(rc, V(0), V(i - 1), V(i));                        \
+         }                                                                     \
+         break;                                                                \
+      case PIPE_PRIM_POLYGON:   /* GL: vertex 0 provokes, whatever the mode */ \
+         for (i = 2; i < nr; i++) {                                            \
+            if (first)                                                         \
+               rast_triangle(rc, V(0), V(i - 1), V(i));                        \
+            else                                                               \
+               rast_triangle(rc, V(i - 1), V(i), V(0));                        \
+         }                                                                     \
+         break;                                                                \
+      case PIPE_PRIM_QUADS:                                                    \
+         for (i = 3; i < nr; i += 4) {                                         \
+            if (first) {                                                       \
+               rast_triangle(rc, V(i), V(i - 3), V(i - 2));                    \
+               rast_triangle(rc, V(i), V(i - 2), V(i - 1));                    \
+            } else {                                                           \
+               rast_triangle(rc, V(i - 3), V(i - 2), V(i));                    \
+               rast_triangle(rc, V(i - 2), V(i - 1), V(i));                    \
+            }                                                                  \
+         }                                                                     \
+         break;                                                                \
+      case PIPE_PRIM_QUAD_STRIP:                                               \
+         for (i = 3; i < nr; i += 2) {                                         \
+            if (first) {                                                       \
+               rast_triangle(rc, V(i), V(i - 3), V(i - 2));                    \
+               rast_triangle(rc, V(i), V(i - 1), V(i - 3));                    \
+            } else {                                                           \
+               rast_triangle(rc, V(i - 3), V(i - 2), V(i));                    \
+               rast_triangle(rc, V(i - 1), V(i - 3), V(i));                    \
+            }                                                                  \
+         }                                                                     \
+         break;                                                                \
+      default:                                                                 \
+         break;                                                                \
+      }                                                                        \
+   } while (0)
+
+/* Also brings the fragment shader up to date: draw's stages (polygon
+ * stipple, smooth lines and points) bind their own variants mid-draw. */
+static bool fp_vbuf_discard(struct fp_vbuf_render *v)
+{
+   if (v->fp->fs_dirty)
+      fp_fs_validate(v->fp);
+   return v->fp->rasterizer && v->fp->rasterizer->base.rasterizer_discard;
+}
+
+static void fp_vbuf_draw_elements(struct vbuf_render *r, const ushort *indices, uint nr)
+{
+   struct fp_vbuf_render *v = fp_vbuf(r);
+   const size_t stride = v->vertex_size;
+   if (fp_vbuf_discard(v))
+      return;
+#define IDX(i) indices[i]
+   FP_EMIT_PRIMS();
+#undef IDX
+}
+
+static void fp_vbuf_draw_arrays(struct vbuf_render *r, unsigned start, uint nr)
+{
+   struct fp_vbuf_render *v = fp_vbuf(r);
+   const size_t stride = v->vertex_size;
+   if (fp_vbuf_discard(v))
+      return;
+#define IDX(i) (start + (i))
+   FP_EMIT_PRIMS();
+#undef IDX
+}
+
+static void fp_vbuf_set_so_info(struct vbuf_render *r, unsigned stream, unsigned primitives,
+                                unsigned generated)
+{
+   (void)r; (void)stream; (void)primitives; (void)generated;
+}
+
+static void fp_vbuf_pipeline_statistics(struct vbuf_render *r,
+                                        const struct pipe_query_data_pipeline_statistics *s)
+{
+   (void)r; (void)s;
+}
+
+static void fp_vbuf_destroy(struct vbuf_render *r)
+{
+   struct fp_vbuf_render *v = fp_vbuf(r);
+   align_free(v->vertices);
+   FREE(v);
+}
+
+struct vbuf_render *fp_create_vbuf_render(struct fp_context *fp)
+{
+   struct fp_vbuf_render *v = CALLOC_STRUCT(fp_vbuf_render);
+   if (!v)
+      return NULL;
+   v->fp = fp;
+   v->base.max_indices = FP_MAX_VBUF_INDICES;
+   v->base.max_vertex_buffer_bytes = FP_MAX_VBUF_BYTES;
+   v->base.get_vertex_info = fp_vbuf_get_vertex_info;
+   v->base.allocate_vertices = fp_vbuf_allocate_vertices;
+   v->base.map_vertices = fp_vbuf_map_vertices;
+   v->base.unmap_vertices = fp_vbuf_unmap_vertices;
+   v->base.set_primitive = fp_vbuf_set_primitive;
+   v->base.draw_elements = fp_vbuf_draw_elements;
+   v->base.draw_arrays = fp_vbuf_draw_arrays;
+   v->base.release_vertices = fp_vbuf_release_vertices;
+   v->base.set_stream_output_info = fp_vbuf_set_so_info;
+   v->base.pipeline_statistics = fp_vbuf_pipeline_statistics;
+   v->base.destroy = fp_vbuf_destroy;
+   return &v->base;
+}
