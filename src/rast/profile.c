@@ -5,6 +5,7 @@
  * snap vertices to the same 1/4096 pixel grid.
  */
 #include <stddef.h>
+#include <string.h>
 #include "rast/rast.h"
 
 static const struct rast_profile profile_seed = {
@@ -41,12 +42,9 @@ const struct rast_profile *rast_profile_by_name(const char *name)
 {
    if (!name)
       return NULL;
-   for (unsigned i = 0; profiles[i]; i++) {
-      const char *a = profiles[i]->name, *b = name;
-      while (*a && *a == *b) { a++; b++; }
-      if (*a == 0 && *b == 0)
+   for (unsigned i = 0; profiles[i]; i++)
+      if (strcmp(profiles[i]->name, name) == 0)
          return profiles[i];
-   }
    return NULL;
 }
 
