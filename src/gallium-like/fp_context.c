@@ -1,6 +1,6 @@
 /*
  * The fixpipe context: owns the model (rast_context), Mesa's draw module
- * (vertex shading, clipping, divide, viewport, wide points and lines) and
+ * (vertex shading, clipping, divide, viewport, smooth points and lines) and
  * the tgsi_exec machine that runs fragment shaders for the model's quads.
  */
 #include <stdio.h>
@@ -15,6 +15,7 @@
 #include "tgsi/tgsi_exec.h"
 
 #include "fp_context.h"
+#include "fixed/numsys.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
 
@@ -31,6 +32,8 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  quads %" PRIu64 " pixels covered %" PRIu64 " shaded %" PRIu64
            " samples passed %" PRIu64 "\n", st->quads, st->pixels_covered,
            st->pixels_shaded, st->samples_passed);
+   fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
+           fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
 }
 
 static void fp_destroy(struct pipe_context *pipe)
@@ -124,6 +127,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->rast = rast_create(s->profile);
    if (!fp->rast)
       goto fail;
+   rast_set_texfmt(fp->rast, fp_env_texfmt());
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
    if (!fp->pipe.stream_uploader)
@@ -156,12 +160,14 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    draw_set_rasterize_stage(fp->draw, fp->vbuf_stage);
    draw_set_render(fp->draw, fp->vbuf_render);
 
-   /* Every point reaches the model as two triangles (sprite coordinates
-    * from draw's wide-point stage); lines wider than one pixel likewise. */
-   draw_wide_point_threshold(fp->draw, 0.0f);
-   draw_wide_point_sprites(fp->draw, TRUE);
-   draw_enable_point_sprites(fp->draw, TRUE);
-   draw_wide_line_threshold(fp->draw, 1.0f);
+   /* Points of any size, sprites and non-smooth lines of any width reach
+    * the model (rast_point, rast_line draw them by llvmpipe's rules, as
+    * llvmpipe configures draw).  draw's wide-point stage would shift every
+    * square by (+1/8, -1/8) px, its wide-line quads are not llvmpipe's. */
+   draw_wide_point_threshold(fp->draw, 10000.0f);
+   draw_wide_point_sprites(fp->draw, FALSE);
+   draw_enable_point_sprites(fp->draw, FALSE);
+   draw_wide_line_threshold(fp->draw, 10000.0f);
 
    /* GL 1.x extras done by draw with a modified fragment shader, as in
     * softpipe: smooth lines and points, polygon stipple. */

@@ -10,9 +10,11 @@
 #include "util/u_call_once.h"
 #include "pipe/p_format.h"
 #include "fp_screen.h"
+#include "fixed/numsys.h"
 
 static const struct rast_profile *env_profile;
 static bool env_stats;
+static const struct numsys *env_texfmt;
 
 static void fp_env_parse(void)
 {
@@ -34,6 +36,17 @@ static void fp_env_parse(void)
       else if (strcmp(s, "0"))
          fprintf(stderr, "fixpipe: bad FIXPIPE_STATS '%s' (accepted: 0, 1); using 0\n", s);
    }
+
+   const char *t = getenv("FIXPIPE_TEXFMT");
+   env_texfmt = numsys_default();
+   if (t && *t) {
+      const struct numsys *ns = numsys_by_name(t);
+      if (ns)
+         env_texfmt = ns;
+      else
+         fprintf(stderr, "fixpipe: unknown FIXPIPE_TEXFMT '%s' (accepted: %s); using %s\n",
+                 t, numsys_names(), env_texfmt->name);
+   }
 }
 
 static util_once_flag env_once = UTIL_ONCE_FLAG_INIT;
@@ -48,4 +61,12 @@ bool fp_env_stats(void)
 {
    util_call_once(&env_once, fp_env_parse);
    return env_stats;
+}
+
+/* The texture path's number system: the unit (fp_sampler.c) and the
+ * perspective division (rast_set_texfmt). */
+const struct numsys *fp_env_texfmt(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_texfmt;
 }

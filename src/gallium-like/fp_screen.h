@@ -22,6 +22,8 @@ static inline struct fp_screen *fp_screen(struct pipe_screen *s)
  * once on stderr with the accepted values. */
 const struct rast_profile *fp_env_profile(void);
 bool fp_env_stats(void);
+struct numsys;
+const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 
 /* Render-target formats the driver can pack from float (fp_format.c). */
 bool fp_format_renderable(enum pipe_format format);

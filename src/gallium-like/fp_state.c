@@ -68,7 +68,12 @@ static enum rast_stencil_op fp_stencil_op(unsigned op)
    }
 }
 
-/* ---- blend (logic ops, alpha-to-coverage and dithering are ignored) ---- */
+/* ---- blend (alpha-to-coverage and dithering are ignored) ---- */
+
+_Static_assert((int)PIPE_LOGICOP_CLEAR == (int)RAST_LOGICOP_CLEAR &&
+               (int)PIPE_LOGICOP_COPY == (int)RAST_LOGICOP_COPY &&
+               (int)PIPE_LOGICOP_SET == (int)RAST_LOGICOP_SET,
+               "logic ops are translated by value");
 
 static void *fp_create_blend_state(struct pipe_context *pipe, const struct pipe_blend_state *b)
 {
@@ -78,6 +83,9 @@ static void *fp_create_blend_state(struct pipe_context *pipe, const struct pipe_
       return NULL;
    s->base = *b;
    s->rast.independent = b->independent_blend_enable;
+   /* PIPE_LOGICOP_* are GL's order, as are RAST_LOGICOP_*. */
+   s->rast.logicop_enable = b->logicop_enable;
+   s->rast.logicop_func = (enum rast_logicop)(b->logicop_func & 15);
    for (unsigned i = 0; i < RAST_MAX_CBUFS; i++) {
       const struct pipe_rt_blend_state *rt = &b->rt[b->independent_blend_enable ? i : 0];
       struct rast_blend_target *t = &s->rast.rt[i];
@@ -202,6 +210,10 @@ static void *fp_create_rasterizer_state(struct pipe_context *pipe,
    s->rast.flatshade = r->flatshade;
    s->rast.flatshade_first = r->flatshade_first;
    s->rast.line_width = r->line_width;
+   s->rast.point_size = r->point_size;
+   s->rast.point_size_per_vertex = r->point_size_per_vertex;
+   s->rast.point_quad_rasterization = r->point_quad_rasterization;
+   s->rast.sprite_coord_lower_left = r->sprite_coord_mode == PIPE_SPRITE_COORD_LOWER_LEFT;
    return s;
 }
 
@@ -214,7 +226,7 @@ static void fp_bind_rasterizer_state(struct pipe_context *pipe, void *cso)
    draw_set_rasterizer_state(fp->draw, s ? &s->draw : NULL, s);
    if (s)
       rast_set_raster_state(fp->rast, &s->rast);
-   fp->vl_valid = false;   /* flatshade changes the COLOR interpolation */
+   fp->vl_valid = false;   /* sprite_coord_enable changes the vertex layout */
 }
 
 /* ---- samplers and sampler views ---- */

@@ -1,7 +1,7 @@
 /*
  * draw's back end: post-transform vertices (window x, y, z, 1/w in slot 0,
- * then one float[4] slot per fragment-shader input) go to the model
- * primitive by primitive.
+ * then one float[4] slot per fragment-shader input, then the point size if
+ * the vertex shader writes one) go to the model primitive by primitive.
  */
 #include <string.h>
 
@@ -43,9 +43,23 @@ static enum rast_interp fp_interp(unsigned tgsi_interp)
    }
 }
 
-/* The layout depends on the FS inputs, the VS outputs and on the extra
- * attributes draw's wide-point stage allocates while a draw is running,
- * so it is rebuilt whenever draw asks. */
+/* On points, the inputs GL_COORD_REPLACE turns into sprite coordinates:
+ * gallium's sprite_coord_enable bits name GENERIC (or TEXCOORD) indices;
+ * PCOORD always is one (llvmpipe's setup_point_coefficients). */
+static bool fp_is_sprite_coord(const struct fp_context *fp, unsigned name, unsigned index)
+{
+   if (name == TGSI_SEMANTIC_PCOORD)
+      return true;
+   if (name != TGSI_SEMANTIC_GENERIC && name != TGSI_SEMANTIC_TEXCOORD)
+      return false;
+   return fp->rasterizer && index < 32 &&
+          (fp->rasterizer->base.sprite_coord_enable >> index & 1u);
+}
+
+/* The layout depends on the FS inputs, the VS outputs, the rasterizer's
+ * sprite coordinates and on the extra attributes draw's stages (smooth
+ * points and lines) allocate while a draw is running, so it is rebuilt
+ * whenever draw asks. */
 static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
 {
    struct fp_context *fp = fp_vbuf(r)->fp;
@@ -74,9 +88,18 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
          vl.varying[i].usage_mask = (name == TGSI_SEMANTIC_POSITION ||
                                      name == TGSI_SEMANTIC_FACE) ? 0
                                     : info->input_usage_mask[i];
+         if (fp_is_sprite_coord(fp, name, index))
+            vl.point_coord_mask |= 1u << i;
          draw_emit_vertex_attr(vinfo, EMIT_4F, src);
       }
       vl.num_varyings = n;
+   }
+   /* gl_PointSize, for rast_point when point_size_per_vertex is set. */
+   int psize = draw_find_shader_output(draw, TGSI_SEMANTIC_PSIZE, 0);
+   if (psize >= 0) {
+      vl.has_psize = true;
+      vl.psize_slot = vinfo->num_attribs;
+      draw_emit_vertex_attr(vinfo, EMIT_4F, psize);
    }
    draw_compute_vertex_size(vinfo);
    vl.vertex_size = vinfo->num_attribs;
@@ -125,28 +148,6 @@ static void fp_vbuf_set_primitive(struct vbuf_render *r, enum pipe_prim_type pri
 
 typedef const float (*fp_vert)[4];
 
-/* A point that reached us after all (draw normally makes every point two
- * triangles): its square, as two triangles. */
-static void fp_emit_point(struct fp_vbuf_render *v, fp_vert p)
-{
-   struct fp_context *fp = v->fp;
-   float size = fp->rasterizer ? fp->rasterizer->base.point_size : 1.0f;
-   float h = 0.5f * (size > 0.0f ? size : 1.0f);
-   unsigned slots = v->vertex_size / 16;
-   float quad[4][PIPE_MAX_SHADER_OUTPUTS + 4][4];
-   static const float dx[4] = { -1, 1, 1, -1 }, dy[4] = { -1, -1, 1, 1 };
-
-   if (slots > PIPE_MAX_SHADER_OUTPUTS + 4)
-      return;
-   for (unsigned c = 0; c < 4; c++) {
-      memcpy(quad[c], p, v->vertex_size);
-      quad[c][0][0] += dx[c] * h;
-      quad[c][0][1] += dy[c] * h;
-   }
-   rast_triangle(fp->rast, quad[0], quad[1], quad[2]);
-   rast_triangle(fp->rast, quad[0], quad[2], quad[3]);
-}
-
 #define V(i) ((fp_vert)((const uint8_t *)v->vertices + (size_t)(IDX(i)) * stride))
 
 /* One body for draw_elements and draw_arrays; IDX maps a position in the
@@ -158,7 +159,7 @@ static void fp_emit_point(struct fp_vbuf_render *v, fp_vert p)
       unsigned i;                                                              \
       switch (v->prim) {                                                       \
       case PIPE_PRIM_POINTS:                                                   \
-         for (i = 0; i < nr; i++) fp_emit_point(v, V(i));                      \
+         for (i = 0; i < nr; i++) rast_point(rc, V(i));                        \
          break;                                                                \
       case PIPE_PRIM_LINES:                                                    \
          for (i = 1; i < nr; i += 2) rast_line(rc, V(i - 1), V(i));            \

@@ -329,6 +329,16 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       if (src >= rc->fs.num_outputs)
          continue;
 
+      enum rast_color_layout layout = t->layout;
+      if (layout != RAST_CL_GENERIC && t->cpp != 4)
+         layout = RAST_CL_GENERIC;
+      /* Logic ops replace blending, and act on normalized targets only;
+       * COPY is the plain store and NOOP leaves the buffer as it is. */
+      const bool lop = rc->blend.logicop_enable && (t->clamp || layout != RAST_CL_GENERIC);
+      const enum rast_logicop lop_func = rc->blend.logicop_func;
+      if (lop && lop_func == RAST_LOGICOP_NOOP)
+         continue;
+
       struct rast_cbuf_plan *p = &be->cbuf[be->ncbufs++];
       memset(p, 0, sizeof *p);
       p->base = t->base;
@@ -341,14 +351,15 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       p->bt = *bt;
       p->src = src;
 
-      enum rast_color_layout layout = t->layout;
-      if (layout != RAST_CL_GENERIC && t->cpp != 4)
-         layout = RAST_CL_GENERIC;
-      const bool blend = bt->blend_enable && !blend_is_replace(bt, t->clamp || layout != RAST_CL_GENERIC);
+      const bool blend = !rc->blend.logicop_enable && bt->blend_enable &&
+                         !blend_is_replace(bt, t->clamp || layout != RAST_CL_GENERIC);
       if (layout != RAST_CL_GENERIC)
          p->clamp = true;     /* unorm8 by definition */
       p->clamp_dst = p->clamp && layout == RAST_CL_GENERIC;
       p->uses_src1 = uses_src1(bt);
+
+      if (lop && lop_func != RAST_LOGICOP_COPY && rast_logicop_plan(p, layout, lop_func))
+         continue;
 
       switch (layout) {
       case RAST_CL_RGBA8:

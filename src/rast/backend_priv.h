@@ -34,6 +34,12 @@ typedef unsigned (*rast_zs_func)(const struct rast_backend *be, int x, int y,
 
 struct rast_cbuf_plan;
 
+/* A logic op on n bytes: r = op(s, d), bit for bit. */
+typedef void (*rast_lop_func)(const uint8_t *s, const uint8_t *d, uint8_t *r, unsigned n);
+
+/* Largest pixel the logic op handles (RGBA32: float, which it leaves alone). */
+#define RAST_LOP_MAX_CPP 16
+
 /* Blend, colour mask and store of one colour buffer.  src and src1 are
  * [chan][pixel], the layout of rast_shaded_quad. */
 typedef void (*rast_color_func)(const struct rast_cbuf_plan *p, int x, int y,
@@ -60,6 +66,13 @@ struct rast_cbuf_plan {
    unsigned src;                  /* index into rast_shaded_quad.color */
    enum rast_color_layout fast8;  /* no blend, full mask, 8-bit: the quad's fast store;
                                      RAST_CL_GENERIC otherwise */
+   /* Logic op: the stored pixel becomes ((op(s, d) | lop_set) & lop_wmask) |
+    * (d & ~lop_wmask), byte k of a pixel with mask byte k.  lop_wmask holds
+    * the bits of the channels the colour mask writes; lop_set the X byte of
+    * BGRX8, which every store fills with 255. */
+   rast_lop_func lop;
+   uint8_t lop_wmask[RAST_LOP_MAX_CPP];
+   uint8_t lop_set[RAST_LOP_MAX_CPP];
 };
 
 /* Where the depth and stencil of the bound zs buffer live. */
@@ -112,6 +125,12 @@ uint32_t rast_float_to_unorm(float d, unsigned nbits);
 /* backend_color.c */
 void rast_color_plan(struct rast_backend *be, const struct rast_context *rc);
 uint8_t rast_float_to_ubyte(float f);
+
+/* backend_logicop.c: sets p->func and the lop fields for `op` on a target of
+ * `layout` (p's cpp, store and colormask already set); false when the pixel
+ * is too large, and p is left alone. */
+bool rast_logicop_plan(struct rast_cbuf_plan *p, enum rast_color_layout layout,
+                       enum rast_logicop op);
 
 static inline unsigned rast_popcount4(unsigned mask)
 {

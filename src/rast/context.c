@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rast/rast_priv.h"
+#include "fixed/numsys.h"
 
 struct rast_context *rast_create(const struct rast_profile *profile)
 {
@@ -17,7 +18,10 @@ struct rast_context *rast_create(const struct rast_profile *profile)
    rc->profile = profile;
    rc->rs.half_pixel_center = true;
    rc->rs.line_width = 1.0f;
+   rc->rs.point_size = 1.0f;
+   rc->rs.point_quad_rasterization = true;
    rc->vl.vertex_size = 1;
+   rc->texfmt = numsys_default();
    rc->dirty = true;
    return rc;
 }
@@ -88,6 +92,12 @@ void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_la
 void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs)
 {
    rc->fs = *fs;
+   rc->dirty = true;
+}
+
+void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns)
+{
+   rc->texfmt = ns ? ns : numsys_default();
    rc->dirty = true;
 }
 

@@ -16,6 +16,7 @@
 
 #include "rast/rast_priv.h"
 #include "fixed/fx_wide.h"
+#include "fixed/numsys.h"
 
 #define FR_MAX_COMP  (RAST_MAX_VARYINGS * 4)
 #define FR_MAX_FIX   (1 + FR_MAX_COMP)
@@ -73,8 +74,32 @@ struct fr_row {
 struct rast_front;
 typedef void (*fr_pair_func)(struct rast_context *rc, struct rast_front *fr, int64_t y);
 
+/* The texture path's perspective registers (interp.c): 1/w and the A/w of
+ * the PERSPECTIVE components in the number system of rast_set_texfmt,
+ * loaded from the float walk at each quad row's first quad, then stepped by
+ * adds in that system; the division is (A/w) * recip(1/w) in it.  The
+ * functions are chosen per number system at validation. */
+typedef void (*fr_tex_begin_func)(struct rast_front *fr, const float *row0, const float *row1);
+typedef void (*fr_tex_quad_func)(struct rast_front *fr, struct rast_quad *q, bool divide);
+
+struct fr_tex {
+   const struct numsys *ns;
+   fr_tex_begin_func begin;
+   fr_tex_quad_func quad;
+   ns_val ow[2], ow_dx;                 /* 1/w of both scan lines, ∂/∂x */
+   ns_val aw[2][FR_MAX_COMP], aw_dx[FR_MAX_COMP];
+   /* COLOR components (wide profile: perspective colour) are not texture
+    * coordinates: they keep binary32, with their own float 1/w. */
+   bool any_color, is_color[FR_MAX_COMP];
+   float fow[2], fow_dx;
+   struct ns_stats st;                  /* moved to rast_stats per quad row */
+   struct dfx_stats dst;
+};
+
 struct rast_front {
-   /* ---- chosen in rast_front_validate ---- */
+   /* ---- chosen in rast_front_validate, and again when the primitive
+    *      changes between points and the rest (rast_front_begin) ---- */
+   bool points;                /* the inputs are classified for rast_point */
    unsigned ncolor, nlin, npersp, nconst;
    struct fr_comp color[FR_MAX_COMP], lin[FR_MAX_COMP], persp[FR_MAX_COMP],
                   cnst[FR_MAX_COMP];
@@ -89,6 +114,7 @@ struct rast_front {
    float color_scale;          /* colour register -> [0, 1] */
    float inv_S;
    fr_pair_func pair;          /* span processor specialised for the inputs */
+   struct fr_tex tex;          /* the perspective division's registers */
 
    /* ---- the primitive being drawn ---- */
    unsigned nverts;
@@ -125,6 +151,31 @@ static inline int64_t fr_fix_sat(const struct rast_front *fr, unsigned k, fx_i12
                       &fr->fix_sat[k]->high, &fr->fix_sat[k]->low);
 }
 
+/* setup.c: which attribute registers the inputs use, and the span processor
+ * that walks them.  Points keep every input constant except the varyings of
+ * point_coord_mask, which walk as LINEAR (the sprite coordinate's plane). */
+void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool points);
+
+/* The front end ready for a primitive: state validated, inputs classified
+ * for points or for lines and triangles. */
+static inline struct rast_front *rast_front_begin(struct rast_context *rc, bool points)
+{
+   rast_validate(rc);
+   struct rast_front *fr = rast_front(rc);
+   if (fr->points != points)
+      rast_front_classify(rc, fr, points);
+   return fr;
+}
+
+/* llvmpipe's util_iround on x86-64 (its generic branch): halves away from
+ * zero, after a float addition.  Lines and points snap with it. */
+static inline int64_t rast_lp_iround(float f)
+{
+   if (!(f > -1e15f && f < 1e15f))      /* NaN, off any target: saturates later */
+      f = f > 0 ? 1e15f : -1e15f;
+   return f >= 0.0f ? (int64_t)(f + 0.5f) : (int64_t)(f - 0.5f);
+}
+
 /* setup.c: the attribute registers of vertex k from its float slots, and
  * the flat inputs from the provoking vertex. */
 void rast_setup_attribs(struct rast_context *rc, struct rast_front *fr,
@@ -138,8 +189,7 @@ void rast_scan_convex(struct rast_context *rc, struct rast_front *fr);
 
 /* interp.c */
 fr_pair_func rast_interp_choose(const struct rast_front *fr);
-void rast_interp_perspective(struct rast_quad *q, const struct rast_front *fr,
-                             const float (*aw)[RAST_QUAD_SIZE],
-                             const float oow[RAST_QUAD_SIZE]);
+/* interp.c: the perspective division's functions for rc->texfmt */
+void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *fr);
 
 #endif

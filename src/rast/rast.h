@@ -111,8 +111,24 @@ struct rast_blend_target {
    uint8_t colormask;                     /* bit 0 R, 1 G, 2 B, 3 A */
 };
 
+/* GL's order (GL_CLEAR .. GL_SET, gallium's PIPE_LOGICOP_*).  The value is
+ * the op's truth table: bit (2*s + d) is the result for source bit s and
+ * destination bit d. */
+enum rast_logicop {
+   RAST_LOGICOP_CLEAR, RAST_LOGICOP_NOR, RAST_LOGICOP_AND_INVERTED,
+   RAST_LOGICOP_COPY_INVERTED, RAST_LOGICOP_AND_REVERSE, RAST_LOGICOP_INVERT,
+   RAST_LOGICOP_XOR, RAST_LOGICOP_NAND, RAST_LOGICOP_AND, RAST_LOGICOP_EQUIV,
+   RAST_LOGICOP_NOOP, RAST_LOGICOP_OR_INVERTED, RAST_LOGICOP_COPY,
+   RAST_LOGICOP_OR_REVERSE, RAST_LOGICOP_OR, RAST_LOGICOP_SET
+};
+
 struct rast_blend_state {
    bool independent;                      /* else rt[0] applies to all */
+   /* Replaces blending on every normalized (clamp) target: the op works on
+    * the stored bits of the pixel.  Float targets get the source, unblended
+    * (GL: no effect on floating-point buffers; llvmpipe, softpipe). */
+   bool logicop_enable;
+   enum rast_logicop logicop_func;
    struct rast_blend_target rt[RAST_MAX_CBUFS];
 };
 
@@ -180,7 +196,14 @@ struct rast_raster_state {
    bool bottom_edge_rule;        /* gallium: pixel centres on bottom edges are in */
    bool flatshade;               /* COLOR inputs are constant */
    bool flatshade_first;         /* provoking vertex is the first, else the last */
-   float line_width;             /* lines wider than 1 come as triangles */
+   float line_width;             /* rast_line: non-smooth lines of any width (llvmpipe's rule) */
+   /* Points (rast_point), as llvmpipe draws them. */
+   float point_size;             /* unless point_size_per_vertex and the vertex has a size */
+   bool point_size_per_vertex;   /* the vertex layout's psize slot gives the size */
+   bool point_quad_rasterization;   /* squares of any size on the 1/256 grid (GL ES, point
+                                       sprites); else GL 2.1's whole-pixel point rule */
+   bool sprite_coord_lower_left; /* the sprite coordinate t grows up the window (gallium's
+                                    PIPE_SPRITE_COORD_LOWER_LEFT), else down */
 };
 
 struct rast_scissor { int minx, miny, maxx, maxy; };   /* max exclusive */
@@ -204,6 +227,12 @@ struct rast_vertex_layout {
    unsigned pos_slot;            /* window x, y, z in [0,1], and 1/w */
    unsigned num_varyings;        /* shader inputs, in shader input order */
    struct rast_varying varying[RAST_MAX_VARYINGS];
+   bool has_psize;               /* the vertex carries a point size ... */
+   unsigned psize_slot;          /* ... in this slot's x */
+   /* Bit i: on points, varying i (unless CONSTANT) is the sprite coordinate
+    * (s, t, 0, 1) generated across the square, not the vertex's value
+    * (gl_PointCoord, GL_COORD_REPLACE).  Other primitives ignore it. */
+   uint32_t point_coord_mask;
 };
 
 /* ------------------------------------------------------------------ */
@@ -245,6 +274,9 @@ struct rast_stats {
    uint64_t triangles, culled, lines, points;
    uint64_t quads, pixels_covered, pixels_shaded;
    uint64_t samples_passed;          /* for occlusion queries */
+   /* Range events of the texture path's number system (rast_set_texfmt):
+    * saturation or overflow, and flush/underflow to zero. */
+   uint64_t tex_sat, tex_flush;
 };
 
 /* ------------------------------------------------------------------ */
@@ -267,14 +299,24 @@ void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blen
 void rast_set_blend_color(struct rast_context *rc, const float color[4]);
 void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl);
 void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs);
+/* The number system of the texture path (fixed/numsys.h: FIXPIPE_TEXFMT):
+ * the perspective division of PERSPECTIVE varyings computes in it.  NULL
+ * selects the default, dfx24. */
+struct numsys;
+void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns);
 
 /* Primitives: each vertex is vertex_size float[4] slots. */
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],
                    const float (*v1)[4], const float (*v2)[4]);
-/* A one-pixel-wide line by GL's diamond-exit rule.  Points, wide lines and
- * point sprites reach the model as triangles from draw's wide-point and
- * wide-line stages. */
+/* A line of rs.line_width by GL's diamond-exit rule, as llvmpipe draws it
+ * (smooth lines reach the model as triangles from draw's aaline stage). */
 void rast_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[4]);
+/* A point: the square (or, without point_quad_rasterization, GL 2.1's
+ * whole-pixel point) of the vertex's or the state's size, as llvmpipe
+ * builds it, every input constant except the point_coord_mask varyings.  Sizes
+ * above RAST_MAX_POINT_SIZE draw at that size. */
+#define RAST_MAX_POINT_SIZE 255.0f
+void rast_point(struct rast_context *rc, const float (*v0)[4]);
 
 const struct rast_stats *rast_get_stats(const struct rast_context *rc);
 void rast_reset_stats(struct rast_context *rc);

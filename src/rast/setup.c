@@ -60,13 +60,29 @@ void rast_front_validate(struct rast_context *rc)
    fr->z_scale = 1.0 / (((double)(INT64_C(1) << prof->z_bits) - 1.0) *
                         (double)fx_one(prof->z));
    fr->color_scale = (float)(1.0 / (255.0 * (double)fx_one(prof->color)));
+   rast_front_classify(rc, fr, fr->points);
+   compute_clip(rc);
+}
 
+void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool points)
+{
+   const struct rast_profile *prof = rc->profile;
+   fr->points = points;
    fr->ncolor = fr->nlin = fr->npersp = fr->nconst = 0;
    for (unsigned i = 0; i < rc->vl.num_varyings && i < RAST_MAX_VARYINGS; i++) {
       const struct rast_varying *vr = &rc->vl.varying[i];
       for (unsigned c = 0; c < 4; c++) {
          if (!(vr->usage_mask & (1u << c)))
             continue;
+         if (points) {
+            /* llvmpipe's point setup: constant planes, the sprite
+             * coordinate's plane for the coordinate-replaced inputs. */
+            if ((rc->vl.point_coord_mask >> i & 1u) && vr->interp != RAST_INTERP_CONSTANT)
+               add_comp(fr->lin, &fr->nlin, i, c, vr->slot);
+            else
+               add_comp(fr->cnst, &fr->nconst, i, c, vr->slot);
+            continue;
+         }
          switch (vr->interp) {
          case RAST_INTERP_LINEAR:
             add_comp(fr->lin, &fr->nlin, i, c, vr->slot);
@@ -95,7 +111,7 @@ void rast_front_validate(struct rast_context *rc)
       set_fix_class(rc, fr, k, prof->color, RAST_REG_COLOR);
 
    fr->pair = rast_interp_choose(fr);
-   compute_clip(rc);
+   rast_interp_perspective_choose(rc, fr);
 }
 
 void rast_front_destroy(struct rast_context *rc)
@@ -205,8 +221,7 @@ static void tri_sections(struct rast_front *fr)
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],
                    const float (*v1)[4], const float (*v2)[4])
 {
-   rast_validate(rc);
-   struct rast_front *fr = rast_front(rc);
+   struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;
    const float (*v[3])[4] = { v0, v1, v2 };
    unsigned ps = rc->vl.pos_slot;

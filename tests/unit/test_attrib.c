@@ -5,8 +5,21 @@
  *                      (each Δ/Δy and ∂/∂x step rounds by at most 1/2 ulp;
  *                      the subpixel correction starts from X_left's floor)
  *   colour (seed, 9.12 walk): the same bound in colour ulps
- *   linear and perspective varyings, 1/w: relative error <= 1e-4 of the
- *                      largest vertex magnitude (float walk over <= 256 px)
+ *   linear varyings, 1/w: relative error <= 1e-4 of the largest vertex
+ *                      magnitude (float walk over <= 256 px)
+ *   perspective varyings: the same 1e-4 with texfmt float; with the default
+ *                      dfx24 (rast_set_texfmt) the registers A/w and 1/w walk
+ *                      in dfx24, whose adds truncate to its mantissa (worst
+ *                      16 significant bits: ulp 2^-15 for values in [1, 16)),
+ *                      so each of the n <= size + 4 steps of a quad row adds
+ *                      < 17/16 ulp to each register (docs/dfx.md); with
+ *                      |A/w|, 1/w <= 2 each register is off by at most
+ *                      e = (n + 1) * 17/16 * 2^-15, the truncating recip and
+ *                      mul add 2^-15 each (relative), so at a pixel with
+ *                      plane values P and 1/w the error is below
+ *                      1e-4 * max(|P|, 1) + (1 + |P|) * e / (1/w) + 2^-14 * |P|
+ *                      (1/w, not its smallest vertex value: helpers
+ *                      extrapolate it towards 0)
  * for covered pixels and for helpers (extrapolated values, also on scan
  * lines outside the triangle).  Also: flat inputs take the provoking vertex,
  * COLOR is flat under flatshade, front_facing follows softpipe's rule.
@@ -15,6 +28,7 @@
 #include <string.h>
 #include "tutil.h"
 #include "fixed/fx.h"
+#include "fixed/numsys.h"
 
 static struct tctx t;
 static int64_t X[3], Y[3];
@@ -23,7 +37,7 @@ static bool wide;
 static double worst_z, worst_c, worst_p, worst_l, worst_w;
 static uint64_t helpers_checked, covered_checked, bad_face;
 static bool expect_front;
-static double zbound, cbound;
+static double zbound, cbound, pwalk, pdiv;
 static unsigned sat_tris;
 
 static void bary(double px, double py, double l[3])
@@ -64,7 +78,9 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
       double pw = l[0] * P[0] * OW[0] + l[1] * P[1] * OW[1] + l[2] * P[2] * OW[2];
       double pe = fabs(q->in[1][0][i] - pw / ow) / (fabs(pw / ow) > 1 ? fabs(pw / ow) : 1);
       if (pe > worst_p) worst_p = pe;
-      CHECK(pe <= 1e-4, "perspective: %g vs %g (%s)", q->in[1][0][i], pw / ow, cov ? "covered" : "helper");
+      double pbound = 1e-4 + ((1 + fabs(pw / ow)) * pwalk / fabs(ow) + pdiv * fabs(pw / ow)) /
+                            (fabs(pw / ow) > 1 ? fabs(pw / ow) : 1);
+      CHECK(pe <= pbound, "perspective: %g vs %g (%s) 1/w %g bound %g", q->in[1][0][i], pw / ow, cov ? "covered" : "helper", ow, pbound);
       double lv = l[0] * L[0] + l[1] * L[1] + l[2] * L[2];
       double le = fabs(q->in[2][1][i] - lv);
       if (le > worst_l) worst_l = le;
@@ -87,9 +103,11 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
    }
 }
 
-static void run(const char *profile)
+static void run(const char *profile, const char *texfmt)
 {
    t_init(&t, profile, 1024, 1024);
+   bool tex_dfx = strcmp(texfmt, "float") != 0;
+   rast_set_texfmt(t.rc, numsys_by_name(texfmt));
    wide = strcmp(profile, "wide") == 0;
    t.hook = hook;
    struct rast_vertex_layout vl;
@@ -160,6 +178,8 @@ static void run(const char *profile)
       double walk = 2 * size + 8;
       zbound = 2 + walk / 2 + dzdx / S + 1;
       cbound = 2 + walk / 2 + dcdx / S + 1;
+      pwalk = tex_dfx ? (size + 5) * (17.0 / 16) * ldexp(1, -15) : 0;
+      pdiv = tex_dfx ? ldexp(1, -14) : 0;
       uint64_t sat0 = t_sat_total(rast_get_stats(t.rc));
       t_begin(&t);
       t_tri(t.rc, v[0], v[1], v[2]);
@@ -228,13 +248,17 @@ static void flat_and_cull(void)
 int main(void)
 {
    t_seed(4242);
-   run("seed");
+   run("seed", "dfx24");
    printf("seed: worst Z %.2f ulps, colour %.2f ulps, perspective %.2e, linear %.2e, 1/w %.2e\n",
           worst_z, worst_c, worst_p, worst_l, worst_w);
    worst_z = worst_c = worst_p = worst_l = worst_w = 0;
-   run("wide");
+   run("wide", "dfx24");
    printf("wide: worst Z %.2f ulps, colour %.2e, perspective %.2e, linear %.2e, 1/w %.2e\n",
           worst_z, worst_c, worst_p, worst_l, worst_w);
+   worst_z = worst_c = worst_p = worst_l = worst_w = 0;
+   t_seed(4242);                     /* the first run's triangles */
+   run("seed", "float");
+   printf("seed, texfmt float: perspective %.2e\n", worst_p);
    printf("triangles with a counted saturation (helpers beyond the format): %u\n", sat_tris);
    printf("pixels checked: %llu covered, %llu helpers\n",
           (unsigned long long)covered_checked, (unsigned long long)helpers_checked);

@@ -10,6 +10,7 @@
 static struct tctx t;
 static int minx, maxx, miny, maxy;
 static unsigned colcount[1024], rowcount[1024];
+static int colrow[1024];          /* the row of the last pixel seen in a column */
 static double worst_attr;
 static double la1, la2, lx1, lx2, ly1, ly2;
 static bool lxmajor, bad_face;
@@ -29,6 +30,7 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
       if (y > maxy) maxy = y;
       colcount[x]++;
       rowcount[y]++;
+      colrow[x] = y;
       /* the attribute follows the major axis */
       double f = lxmajor ? (x + 0.5 - lx1) / (lx2 - lx1) : (y + 0.5 - ly1) / (ly2 - ly1);
       double e = fabs(q->in[0][0][i] - (la1 + f * (la2 - la1)));
@@ -77,6 +79,17 @@ int main(void)
    CHECK(rast_get_stats(t.rc)->lines == 4, "lines counted");
    line(7.5f, 7.5f, 7.5f, 7.5f);
    CHECK(t.count == 0, "zero-length line drew %llu px", (unsigned long long)t.count);
+
+   /* Corners snapped to llvmpipe's 1/256 (util_iround: halves away from
+    * zero), not to the XY register's 1/4096: both lines pass exactly through
+    * a pixel boundary at a pixel centre's column, so the snapped diamond
+    * offset alone picks the row.  Pixels as llvmpipe draws them. */
+   line(110.5f, 85.5f, 72.5f, 84.5f);        /* y_offset 0.5/38: 3/256, not 54/4096 */
+   CHECK(t.count == 38 && colcount[91] == 1 && colrow[91] == 84,
+         "snapped offset: %llu px, column 91 at row %d", (unsigned long long)t.count, colrow[91]);
+   line(1014.5f, 523.5f, 246.5f, 460.5f);    /* y_offset 10.5/256 exactly: rounds to 11 */
+   CHECK(colcount[374] == 1 && colrow[374] == 471,
+         "half-step offset: column 374 at row %d", colrow[374]);
 
    /* random lines: one pixel per major-axis step, none twice, attribute
     * linear along the major axis */

@@ -1,0 +1,428 @@
+#!/usr/bin/env python3
+"""Runs a piglit list on one driver and compares the results with the driver's expectations.
+
+usage: run.py LIST [--driver D] [--shard I/N] [--jobs J] [options]
+       run.py --merge DIR...      combine the summary.json files of the shards of one run
+
+The `piglit` command of ./fixpipe calls this; docs/piglit.md describes the lists, the
+expectation files, sharding, the exit status and summary.json.
+"""
+import argparse
+import bz2
+import datetime
+import glob
+import gzip
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+PIGLIT_DIR = os.environ.get("FIXPIPE_PIGLIT_DIR", "/usr/lib/x86_64-linux-gnu/piglit")
+DRIVERS = ("fixpipe", "softpipe", "llvmpipe")
+FORMAT = "fixpipe-piglit-summary/1"
+# piglit results that count as another one
+ALIASES = {"incomplete": "crash", "dmesg-fail": "crash", "dmesg-warn": "crash"}
+COUNT_KEYS = ("pass", "warn", "fail", "crash", "timeout", "skip", "notrun", "excluded")
+EXPECT = {"Fail": "fail", "Crash": "crash", "Timeout": "timeout"}
+
+
+# ------------------------------------------------------------------ inputs
+def read_list(path):
+    """Test names (piglit strips everything after '#' the same way) and the header directives."""
+    names, directives = [], set()
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            m = re.match(r"\s*#\s*(require-run)\s*$", line)
+            if m:
+                directives.add(m.group(1))
+            name = line.split("#")[0].strip()
+            if name:
+                names.append(name)
+    seen = set()
+    return [n for n in names if not (n in seen or seen.add(n))], directives
+
+
+def bad_input(msg):
+    """A broken list or expectation file: exit status 2, not the 1 of a test failure."""
+    print(f"fixpipe: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_entries(path):
+    """(entry, reason) for each non-comment line; reason is the '#' line(s) just above."""
+    entries, comment = [], []
+    if not os.path.exists(path):
+        return entries
+    with open(path, encoding="utf-8") as f:
+        for n, line in enumerate(f, 1):
+            s = line.strip()
+            if not s:
+                comment = []
+            elif s.startswith("#"):
+                comment.append(s.lstrip("#").strip())
+            else:
+                entries.append((s, " ".join(comment), n))
+                comment = []
+    return entries
+
+
+def read_fails(path):
+    fails = {}
+    for line, reason, n in read_entries(path):
+        name, sep, status = line.rpartition(",")
+        if not sep or status not in EXPECT:
+            bad_input(f"{path}:{n}: expected '<test name>,Fail|Crash|Timeout', got {line!r}")
+        fails[name.lower()] = (EXPECT[status], reason)
+    return fails
+
+
+def read_regexes(path):
+    out = []
+    for line, reason, n in read_entries(path):
+        try:
+            out.append((re.compile(line), reason))
+        except re.error as e:
+            bad_input(f"{path}:{n}: bad regex {line!r}: {e}")
+    return out
+
+
+def matching(regexes, name):
+    for r, reason in regexes:
+        if r.search(name):
+            return reason or r.pattern
+    return None
+
+
+def shard(names, i, n):
+    """Round-robin over the sorted names: every test in exactly one shard, sizes within one."""
+    return [t for k, t in enumerate(sorted(names)) if k % n == i - 1]
+
+
+def profile_index(names):
+    """name -> (piglit profile, runs on the window system) for the names in piglit's profiles.
+
+    piglit gives -fbo only to its 'concurrent' tests; the others draw to a window, which the
+    surfaceless platform does not have, so they run under Xvfb.
+    """
+    wanted, index = set(names), {}
+    for profile in ("quick_gl", "quick_shader", "glslparser"):
+        path = os.path.join(PIGLIT_DIR, "tests", profile + ".xml.gz")
+        if not os.path.exists(path):
+            continue
+        with gzip.open(path, "rt") as f:
+            for _, e in ET.iterparse(f):
+                if e.tag != "Test":
+                    continue
+                name = e.get("name")
+                if name in wanted and name not in index:
+                    conc = [o.get("value") for o in e.findall("option")
+                            if o.get("name") == "run_concurrent"]
+                    index[name] = (profile, conc == ["False"])
+                e.clear()
+        if len(index) == len(wanted):
+            break
+    return index
+
+
+# ------------------------------------------------------------------ running piglit
+def read_results(results_dir):
+    """piglit's results of one run: the final file, or the per-test files of a cut-short run."""
+    for name in ("results.json.bz2", "results.json"):
+        path = os.path.join(results_dir, name)
+        if os.path.exists(path):
+            opener = bz2.open if name.endswith(".bz2") else open
+            with opener(path, "rt", encoding="utf-8") as f:
+                return json.load(f).get("tests", {})
+    tests = {}
+    for path in glob.glob(os.path.join(results_dir, "tests", "*.json")):
+        try:
+            with open(path, encoding="utf-8") as f:
+                tests.update(json.load(f))
+        except (ValueError, OSError):
+            pass  # the test being written when the run stopped
+    return tests
+
+
+def run_piglit(args, names, platform, profile, results_dir):
+    os.makedirs(results_dir, exist_ok=True)
+    list_file = results_dir + ".list"
+    with open(list_file, "w", encoding="utf-8") as f:
+        f.write("".join(n + "\n" for n in names))
+    piglit = args.piglit.split()
+    cmd = [args.launcher, "run", "--driver", args.driver]
+    if platform == "x11":
+        cmd += ["--xvfb", "--"] + piglit + ["run", "-p", "glx"]
+    else:
+        cmd += ["--no-xvfb", "--"] + piglit + ["run", "-p", "surfaceless_egl"]
+    cmd += ["--process-isolation", "true", "-j", str(args.jobs), "--timeout", str(args.timeout),
+            "-l", "dummy", "-o", "--ignore-missing", "-n", f"{args.driver}-{args.label}",
+            "--test-list", list_file, profile, results_dir]
+    log = results_dir + ".log"
+    start = time.time()
+    with open(log, "w", encoding="utf-8") as f:
+        f.write(" ".join(cmd) + "\n")
+        f.flush()
+        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT)
+    results = read_results(results_dir)
+    print(f"  {platform}: {len(names)} tests ({profile}) in {time.time() - start:.0f} s"
+          + (f", piglit exit {rc}" if rc else ""), flush=True)
+    if not results:
+        with open(log, encoding="utf-8", errors="replace") as f:
+            tail = f.read().splitlines()[-15:]
+        print("\n".join("  | " + ln for ln in tail))
+        print(f"  piglit wrote no results (log: {os.path.relpath(log, REPO)})")
+    return {k.lower(): v for k, v in results.items()}
+
+
+NO_DISPLAY = "XOpenDisplay failed"
+
+
+def _output(res):
+    return ((res or {}).get("out") or "") + ((res or {}).get("err") or "")
+
+
+# ------------------------------------------------------------------ comparing
+def classify(name, res, fails, flakes, require_run):
+    """(result, expected, status, reason) of one test."""
+    actual = res["result"] if res else "notrun"
+    actual = ALIASES.get(actual, actual)
+    if actual == "notrun" and res and res.get("returncode") not in (None, 0):
+        # piglit says notrun when a test enumerates subtests and then reports only a
+        # whole-test result; it ran and exited with an error: a failure.
+        actual = "fail"
+    if actual not in COUNT_KEYS:
+        actual = "notrun"
+    flake = matching(flakes, name)
+    if flake is not None:
+        return actual, "flake", "flake", flake
+    expected, reason = fails.get(name.lower(), ("pass", ""))
+    if actual in ("pass", "warn"):
+        return actual, expected, "ok" if expected == "pass" else "unexpected_pass", reason
+    if actual == "skip" and not require_run:
+        return actual, expected, "skip", reason
+    if actual == expected:
+        return actual, expected, "expected", reason
+    return actual, expected, "unexpected", reason
+
+
+def report(summary, label, fails_file, raw=None):
+    """Prints the differences and the counts; returns the exit status."""
+    raw = raw or {}
+    for name, t in sorted(summary["tests"].items()):
+        st = t["status"]
+        if st == "unexpected_pass":
+            print(f"  UnexpectedPass {name} (expected {t['expected']}: remove it from "
+                  f"{fails_file})")
+        elif st == "unexpected":
+            print(f"  {t['result'].upper():<12} {name} (expected {t['expected']})")
+            res = raw.get(name.lower()) or {}
+            if res.get("command"):
+                print(f"               {res['command']}")
+            out = (res.get("out") or "") + (res.get("err") or "")
+            for line in out.strip().splitlines()[-6:]:
+                print(f"               | {line}")
+    c = summary["counts"]
+    print(f"{label}: " + ", ".join(f"{c[k]} {k}" for k in COUNT_KEYS
+                                   if c[k] or k in ("pass", "fail", "crash", "skip")))
+    e = summary["expected"]
+    print(f"{label}: {e['met']} passed, {e['unexpected']} failed")
+    return 1 if e["unexpected"] else 0
+
+
+def tally(tests):
+    counts = dict.fromkeys(COUNT_KEYS, 0)
+    expected = {"met": 0, "unexpected": 0, "unexpected_pass": 0}
+    for t in tests.values():
+        counts[t["result"]] += 1
+        if t["status"] == "unexpected":
+            expected["unexpected"] += 1
+        else:
+            expected["met"] += 1
+            if t["status"] == "unexpected_pass":
+                expected["unexpected_pass"] += 1
+    return counts, expected
+
+
+# ------------------------------------------------------------------ commands
+def cmd_run(args):
+    if os.sep in args.list:
+        list_file = args.list
+        args.label = re.sub(r"\.txt$", "", os.path.basename(args.list))
+    else:
+        args.label = re.sub(r"\.txt$", "", args.list)
+        list_file = os.path.join(HERE, args.label + ".txt")
+    if not os.path.exists(list_file):
+        avail = sorted(f[:-4] for f in os.listdir(HERE) if f.endswith(".txt"))
+        print(f"fixpipe: no list {list_file} (lists: {', '.join(avail)})", file=sys.stderr)
+        return 2
+    names, directives = read_list(list_file)
+    require_run = "require-run" in directives
+    exp = args.expectations
+    fails_file = os.path.join(exp, f"{args.driver}-fails.txt")
+    fails = read_fails(fails_file)
+    skips = read_regexes(os.path.join(exp, f"{args.driver}-skips.txt"))
+    flakes = read_regexes(os.path.join(exp, f"{args.driver}-flakes.txt"))
+
+    tests = {}
+    excluded = {}
+    for n in names:
+        reason = matching(skips, n)
+        if reason is not None:
+            excluded[n] = reason
+    to_run = [n for n in names if n not in excluded]
+    si, sn = args.shard
+    out_name = f"{args.driver}-{args.label}" + (f"-s{si}of{sn}" if sn > 1 else "")
+    if sn > 1:
+        # The split is over the whole list, so the excluded tests are shared out too.
+        mine = set(shard(names, si, sn))
+        to_run = [n for n in to_run if n in mine]
+        excluded = {n: r for n, r in excluded.items() if n in mine}
+    out_dir = os.path.join(args.out, out_name)
+    os.makedirs(out_dir, exist_ok=True)
+    for stale in ("summary.json",):
+        if os.path.exists(os.path.join(out_dir, stale)):
+            os.remove(os.path.join(out_dir, stale))
+
+    started = datetime.datetime.now(datetime.timezone.utc)
+    t0 = time.time()
+    print(f"fixpipe: piglit {args.label} on {args.driver}"
+          + (f", shard {si}/{sn}" if sn > 1 else "")
+          + f": {len(to_run)} tests, {len(excluded)} excluded, "
+          f"results in {os.path.relpath(out_dir, REPO)}", flush=True)
+
+    index = profile_index(to_run)
+    parts = {}
+    for n in to_run:
+        profile, window = index.get(n, ("quick_gl", False))
+        parts.setdefault("x11" if window else "surfaceless", {}).setdefault(profile, []).append(n)
+    raw, platform_of, profiles_used = {}, {}, set()
+    for platform in ("surfaceless", "x11"):
+        by_profile = parts.get(platform, {})
+        if not by_profile:
+            continue
+        # one piglit run a platform: its meta profile 'quick' holds the three
+        profile = next(iter(by_profile)) if len(by_profile) == 1 else "quick"
+        part = [n for p in by_profile.values() for n in p]
+        profiles_used.update(by_profile)
+        results = run_piglit(args, part, platform, profile, os.path.join(out_dir, platform))
+        # Xvfb now and then refuses a connection under load: such a test never ran, so it
+        # gets one more go rather than a failure.
+        again = [n for n in part if NO_DISPLAY in _output(results.get(n.lower()))]
+        if again:
+            results.update(run_piglit(args, again, platform, profile,
+                                      os.path.join(out_dir, platform + "-again")))
+        for n in part:
+            platform_of[n] = platform
+            if n.lower() in results:
+                raw[n.lower()] = results[n.lower()]
+
+    for n in names:
+        if sn > 1 and n not in excluded and n not in platform_of:
+            continue  # another shard's
+        if n in excluded:
+            tests[n] = {"result": "excluded", "expected": "excluded", "status": "excluded",
+                        "reason": excluded[n]}
+            continue
+        res = raw.get(n.lower())
+        result, expected, status, reason = classify(n, res, fails, flakes, require_run)
+        t = {"result": result, "expected": expected, "status": status,
+             "platform": platform_of[n]}
+        if res and isinstance(res.get("time"), dict):
+            t["seconds"] = round(res["time"].get("end", 0) - res["time"].get("start", 0), 3)
+        if reason:
+            t["reason"] = reason
+        tests[n] = t
+
+    counts, expected = tally(tests)
+    summary = {
+        "format": FORMAT, "list": args.label, "driver": args.driver,
+        "profile": os.environ.get("FIXPIPE_PROFILE") or "seed",
+        "shard": [si, sn], "started": started.strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "seconds": round(time.time() - t0, 1), "jobs": args.jobs,
+        "piglit_profiles": sorted(profiles_used), "require_run": require_run,
+        "total": len(tests), "counts": counts, "expected": expected, "tests": tests,
+    }
+    label = f"piglit-{args.label}-{args.driver}" + (f"-s{si}of{sn}" if sn > 1 else "")
+    status = report(summary, label, os.path.basename(fails_file), raw)
+    summary["exit_status"] = status
+    with open(os.path.join(out_dir, "summary.json"), "w", encoding="utf-8") as f:
+        json.dump(summary, f, indent=1, sort_keys=True)
+        f.write("\n")
+    print(f"fixpipe: piglit {args.label} on {args.driver} took {summary['seconds']:.0f} s")
+    return status
+
+
+def cmd_merge(dirs):
+    tests, first, seen = {}, None, []
+    for d in dirs:
+        path = d if d.endswith(".json") else os.path.join(d, "summary.json")
+        with open(path, encoding="utf-8") as f:
+            s = json.load(f)
+        if s.get("format") != FORMAT:
+            bad_input(f"{path}: not a {FORMAT} file")
+        first = first or s
+        if (s["list"], s["driver"]) != (first["list"], first["driver"]):
+            bad_input(f"{path}: {s['driver']}-{s['list']}, not {first['driver']}-{first['list']}")
+        seen.append(s["shard"][0])
+        for n, t in s["tests"].items():
+            if n in tests:
+                bad_input(f"{path}: {n!r} is in two shards")
+            tests[n] = t
+    n_shards = first["shard"][1]
+    missing = sorted(set(range(1, n_shards + 1)) - set(seen))
+    counts, expected = tally(tests)
+    summary = dict(first, shard=[0, n_shards], tests=tests, counts=counts, expected=expected,
+                   total=len(tests))
+    status = report(summary, f"piglit-{first['list']}-{first['driver']}",
+                    f"{first['driver']}-fails.txt")
+    if missing:
+        print(f"fixpipe: shards {missing} of {n_shards} are missing")
+        status = 1
+    return status
+
+
+def parse_shard(s):
+    m = re.fullmatch(r"(\d+)/(\d+)", s)
+    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
+        raise argparse.ArgumentTypeError(f"--shard wants I/N with 1 <= I <= N, got {s!r}")
+    return int(m.group(1)), int(m.group(2))
+
+
+def main(argv):
+    if argv[:1] == ["--merge"]:
+        if len(argv) < 2:
+            print("usage: run.py --merge DIR...", file=sys.stderr)
+            return 2
+        return cmd_merge(argv[1:])
+    ap = argparse.ArgumentParser(prog="./fixpipe piglit", description=__doc__.splitlines()[0])
+    ap.add_argument("list")
+    ap.add_argument("--driver", default="fixpipe")
+    ap.add_argument("--shard", type=parse_shard, default=(1, 1))
+    ap.add_argument("--jobs", type=int, default=int(os.environ.get("FIXPIPE_PIGLIT_JOBS", 2)))
+    ap.add_argument("--timeout", type=int,
+                    default=int(os.environ.get("FIXPIPE_PIGLIT_TIMEOUT", 300)))
+    ap.add_argument("--out", default=os.environ.get("FIXPIPE_PIGLIT_OUT",
+                                                    os.path.join(REPO, "out", "piglit")))
+    ap.add_argument("--expectations", default=os.environ.get(
+        "FIXPIPE_PIGLIT_EXPECTATIONS", os.path.join(HERE, "expectations")))
+    ap.add_argument("--launcher", default=os.path.join(REPO, "fixpipe"))
+    ap.add_argument("--piglit", default=os.environ.get("FIXPIPE_PIGLIT", "piglit"),
+                    help="piglit command (the runner's tests give a fake one)")
+    try:
+        args = ap.parse_args(argv)
+    except SystemExit as e:
+        return 2 if e.code else 0
+    if args.driver not in DRIVERS:
+        print(f"fixpipe: unknown driver '{args.driver}' (accepted: {', '.join(DRIVERS)})",
+              file=sys.stderr)
+        return 2
+    return cmd_run(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,195 @@
+/*
+ * The modeled texture unit (spec section 4): coordinates in the texture
+ * path's number system (struct numsys, dfx24 by default), wrap modes,
+ * texel addresses, bilinear weights, LOD and mip selection as the unit
+ * computes them; texels come through a fetch function chosen when the
+ * unit is bound.  No Mesa header: the driver's glue (fp_sampler.c)
+ * translates gallium state into the descriptors below.
+ *
+ * Precisions (docs/texture-unit.md):
+ *   bilinear weights     TEX_WEIGHT_BITS fraction bits, truncated
+ *   LOD                  signed fixed point, TEX_LOD_FRAC_BITS fraction bits
+ *   log2                 leading one + a 256-entry ROM of log2(1 + i/256)
+ *   filtering of texels  binary32 (the colour data path is not modelled)
+ */
+#ifndef FIXPIPE_TEX_H
+#define FIXPIPE_TEX_H
+
+#include <stdint.h>
+#include <stdbool.h>
+#include "fixed/numsys.h"
+
+#define TEX_QUAD 4
+#define TEX_MAX_LEVELS 16
+#define TEX_WEIGHT_BITS 8
+#define TEX_WEIGHT_ONE (1u << TEX_WEIGHT_BITS)
+#define TEX_LOD_FRAC_BITS 8
+#define TEX_LOD_ONE (1 << TEX_LOD_FRAC_BITS)
+#define TEX_LOD_NONE (-(1 << 24))   /* log2(0): below any min_lod clamp */
+
+enum tex_target {
+   TEX_TARGET_1D, TEX_TARGET_2D, TEX_TARGET_3D, TEX_TARGET_CUBE,
+   TEX_TARGET_1D_ARRAY, TEX_TARGET_2D_ARRAY, TEX_TARGET_RECT,
+};
+
+/* Same order as gallium's and GL's lists. */
+enum tex_wrap {
+   TEX_WRAP_REPEAT, TEX_WRAP_CLAMP, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_BORDER,
+   TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_CLAMP, TEX_WRAP_MIRROR_CLAMP_TO_EDGE,
+   TEX_WRAP_MIRROR_CLAMP_TO_BORDER,
+   TEX_WRAP_COUNT
+};
+
+enum tex_filter { TEX_FILTER_NEAREST, TEX_FILTER_LINEAR };
+enum tex_mip { TEX_MIP_NONE, TEX_MIP_NEAREST, TEX_MIP_LINEAR };
+
+/* Comparison functions in GL's order. */
+enum tex_func {
+   TEX_FUNC_NEVER, TEX_FUNC_LESS, TEX_FUNC_EQUAL, TEX_FUNC_LEQUAL,
+   TEX_FUNC_GREATER, TEX_FUNC_NOTEQUAL, TEX_FUNC_GEQUAL, TEX_FUNC_ALWAYS,
+};
+
+/* Texel layouts decoded inside the model; anything else is TEX_FMT_CALLBACK
+ * and decoded by the driver.  Packed 16-bit names list the fields from the
+ * least significant bit (gallium's convention). */
+enum tex_format {
+   TEX_FMT_CALLBACK,
+   TEX_FMT_RGBA8, TEX_FMT_RGBX8, TEX_FMT_BGRA8, TEX_FMT_BGRX8,
+   TEX_FMT_L8, TEX_FMT_A8, TEX_FMT_I8, TEX_FMT_R8, TEX_FMT_LA8,
+   TEX_FMT_B5G6R5, TEX_FMT_A4B4G4R4, TEX_FMT_B4G4R4A4, TEX_FMT_A1B5G5R5, TEX_FMT_B5G5R5A1,
+   TEX_FMT_COUNT
+};
+
+/* Swizzle sources: channels 0..3, then the constants 0 and 1. */
+enum { TEX_SWZ_0 = 4, TEX_SWZ_1 = 5 };
+
+/* One mip level.  Layer or slice z, row y and texel x are at
+ * data + z * img_stride + y * row_stride + x * texel size. */
+struct tex_level {
+   const uint8_t *data;
+   uint32_t row_stride, img_stride;
+   int32_t w, h, d;
+};
+
+struct tex_view_desc;
+/* A texel, coordinates inside the level; a depth view returns the depth in
+ * out[0]. */
+typedef void (*tex_fetch_fn)(const struct tex_view_desc *v, const struct tex_level *lv,
+                             int x, int y, int z, float out[4]);
+
+struct tex_view_desc {
+   enum tex_target target;
+   enum tex_format format;
+   tex_fetch_fn fetch;          /* the driver's, for TEX_FMT_CALLBACK */
+   const void *fetch_ctx;       /* the driver's, for its fetch */
+   bool depth;                  /* texels are depths: shadow compare applies */
+   unsigned num_levels;         /* the view's levels, level[0] its base */
+   struct tex_level level[TEX_MAX_LEVELS];
+   int32_t layers;              /* array layers; 6 for a cube */
+   uint8_t swizzle[4];
+};
+
+struct tex_sampler_desc {
+   enum tex_wrap wrap[3];
+   enum tex_filter min_filter, mag_filter;
+   enum tex_mip mip;
+   bool normalized;             /* false: texel coordinates (RECT) */
+   bool compare;
+   enum tex_func func;
+   float lod_bias, min_lod, max_lod;
+   float border[4];             /* already clamped to the format's range */
+};
+
+enum tex_lod_control {
+   TEX_LOD_IMPLICIT,            /* from the quad's coordinate differences */
+   TEX_LOD_BIAS,                /* implicit + quad.lod */
+   TEX_LOD_EXPLICIT,            /* quad.lod */
+   TEX_LOD_ZERO,
+   TEX_LOD_DERIVS,              /* from quad.ddx / quad.ddy */
+};
+
+/* One 2x2 quad of requests (pixel order of rast: 0 1 / 2 3). */
+struct tex_quad {
+   float s[TEX_QUAD], t[TEX_QUAD], r[TEX_QUAD];   /* r: 3D coordinate or cube z */
+   float layer[TEX_QUAD];                         /* array layer, unrounded */
+   float ref[TEX_QUAD];                           /* shadow reference */
+   float lod[TEX_QUAD];                           /* bias or explicit LOD */
+   float ddx[3][TEX_QUAD], ddy[3][TEX_QUAD];      /* explicit derivatives */
+};
+
+/* What address computation gives for one axis: two texel indices (-1: the
+ * border colour) and the weight of i1 in units of 2^-TEX_WEIGHT_BITS. */
+struct tex_addr {
+   int32_t i0, i1;
+   uint32_t w;
+};
+
+/* Per level and axis, in the number system: the scale from the coordinate
+ * to texels and the clamp bounds of the clamp modes. */
+struct tex_axis {
+   int32_t size;
+   ns_val scale;
+   ns_val lo, hi;
+};
+
+struct tex_unit;
+typedef void (*tex_addr_fn)(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
+                            struct tex_addr *a);
+typedef void (*tex_tap_fn)(const struct tex_unit *u, const struct tex_level *lv,
+                           int x, int y, int z, float ref, float out[4]);
+typedef void (*tex_level_fn)(const struct tex_unit *u, unsigned level, const ns_val c[3],
+                             int layer, float ref, float out[4]);
+
+struct tex_unit {
+   const struct numsys *ns;
+   struct ns_stats *stats;        /* range events of the number system */
+   struct tex_view_desc view;
+   struct tex_sampler_desc samp;
+
+   /* Chosen at bind: filter x wrap per axis, target, tap kind. */
+   unsigned dims;                 /* filtered axes */
+   tex_addr_fn addr[2][3];        /* [filter][axis] */
+   tex_level_fn sample_level[2];   /* [filter] */
+   tex_tap_fn tap;
+   tex_fetch_fn fetch;
+   struct tex_axis axis[TEX_MAX_LEVELS][3];
+   int32_t lod_bias, min_lod, max_lod;   /* units of 2^-TEX_LOD_FRAC_BITS */
+   int kind;                      /* the number system's family (tex_ns.h) */
+   ns_val k_zero, k_one, k_half, k_two, k_minus_one;
+};
+
+/* Bind: copies the descriptors, converts constants into the number system
+ * and chooses the functions.  The view's level data must stay valid. */
+void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
+                   const struct tex_sampler_desc *s, struct ns_stats *stats);
+
+/* Sample a quad; rgba[channel][pixel], swizzled. */
+void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
+                     enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
+
+/* texelFetch: integer coordinates, level relative to the view; outside
+ * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */
+void tex_view_texel(const struct tex_view_desc *v, const int x[TEX_QUAD], const int y[TEX_QUAD],
+                    const int z[TEX_QUAD], const int level[TEX_QUAD], float rgba[4][TEX_QUAD]);
+
+/* The fetch function of a format decoded by the model, NULL for
+ * TEX_FMT_CALLBACK; bytes per texel of those formats. */
+tex_fetch_fn tex_format_fetch(enum tex_format f);
+unsigned tex_format_bytes(enum tex_format f);
+
+/* Adds the unit's range events to the model's counters (rast_stats
+ * tex_sat / tex_flush, printed by FIXPIPE_STATS). */
+struct rast_context;
+void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush);
+
+/* Pieces of the data path, for tests. */
+int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */
+int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q);
+unsigned tex_cube_face(const struct tex_unit *u, ns_val rx, ns_val ry, ns_val rz,
+                       ns_val *s, ns_val *t);
+void tex_cube_on_face(const struct tex_unit *u, unsigned face, ns_val rx, ns_val ry, ns_val rz,
+                      ns_val *s, ns_val *t);
+void tex_unit_select(const struct tex_unit *u, int32_t lod, unsigned *level0, unsigned *level1,
+                     uint32_t *frac, enum tex_filter *filter);
+
+#endif

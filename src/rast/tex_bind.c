@@ -1,0 +1,101 @@
+/*
+ * Binding: the unit's constants in the number system and its functions,
+ * chosen once per (view, sampler) pair so that sampling never branches on
+ * state.
+ */
+#include <string.h>
+#include "rast/tex_priv.h"
+
+static unsigned target_dims(enum tex_target t)
+{
+   switch (t) {
+   case TEX_TARGET_1D: case TEX_TARGET_1D_ARRAY: return 1;
+   case TEX_TARGET_3D: return 3;
+   default: return 2;
+   }
+}
+
+/* Clamp bounds of a mode, in coordinate units: normalized [0,1]-based, or
+ * texels for unnormalized coordinates.  Border modes keep one period
+ * beyond the edge, enough for both taps to be outside; nothing further
+ * changes the result, and nothing larger can saturate the scaled value. */
+static void axis_bounds(const struct tex_unit *u, enum tex_wrap w, int32_t size,
+                        struct tex_axis *ax)
+{
+   const float span = u->samp.normalized ? 1.0f : (float)size;
+   float lo = 0.0f, hi = span;
+   switch (w) {
+   case TEX_WRAP_CLAMP_TO_BORDER:
+      lo = -1.0f;
+      hi = u->samp.normalized ? 2.0f : span + 1.0f;
+      break;
+   case TEX_WRAP_MIRROR_CLAMP_TO_BORDER:
+      hi = u->samp.normalized ? 2.0f : span + 1.0f;
+      break;
+   default:
+      break;
+   }
+   ax->lo = u->ns->from_float(u->ns, lo, u->stats);
+   ax->hi = u->ns->from_float(u->ns, hi, u->stats);
+}
+
+void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
+                   const struct tex_sampler_desc *s, struct ns_stats *stats)
+{
+   memset(u, 0, sizeof(*u));
+   u->ns = ns;
+   u->stats = stats;
+   u->view = *v;
+   u->samp = *s;
+   u->kind = tex_ns_kind(ns);
+   if (u->view.num_levels < 1)
+      u->view.num_levels = 1;
+   if (u->view.num_levels > TEX_MAX_LEVELS)
+      u->view.num_levels = TEX_MAX_LEVELS;
+
+   u->k_zero = ns->from_float(ns, 0.0f, stats);
+   u->k_one = ns->from_float(ns, 1.0f, stats);
+   u->k_half = ns->from_float(ns, 0.5f, stats);
+   u->k_two = ns->from_float(ns, 2.0f, stats);
+   u->k_minus_one = ns->from_float(ns, -1.0f, stats);
+
+   /* Targets without coordinates to wrap on some axis, and the rules GL
+    * and llvmpipe apply: cube faces clamp to their edge; rectangles
+    * (texel coordinates) know no periodic modes. */
+   if (v->target == TEX_TARGET_CUBE)
+      u->samp.wrap[0] = u->samp.wrap[1] = TEX_WRAP_CLAMP_TO_EDGE;
+   if (v->target == TEX_TARGET_RECT)
+      u->samp.normalized = false;
+   if (!u->samp.normalized) {
+      u->samp.mip = TEX_MIP_NONE;
+      for (unsigned a = 0; a < 3; a++)
+         if (u->samp.wrap[a] == TEX_WRAP_REPEAT || u->samp.wrap[a] == TEX_WRAP_MIRROR_REPEAT)
+            u->samp.wrap[a] = TEX_WRAP_CLAMP_TO_EDGE;
+   }
+   u->dims = target_dims(v->target);
+
+   for (unsigned f = 0; f < 2; f++) {
+      for (unsigned a = 0; a < 3; a++)
+         u->addr[f][a] = tex_addr_choose(u->samp.wrap[a], (enum tex_filter)f);
+      u->sample_level[f] = tex_level_choose(u->dims, (enum tex_filter)f);
+   }
+   u->tap = tex_tap_choose(u->samp.compare && v->depth);
+   u->fetch = tex_format_fetch(v->format);
+   if (!u->fetch)
+      u->fetch = v->fetch;
+
+   for (unsigned l = 0; l < u->view.num_levels; l++) {
+      const struct tex_level *lv = &u->view.level[l];
+      const int32_t size[3] = { lv->w, lv->h, lv->d };
+      for (unsigned a = 0; a < 3; a++) {
+         struct tex_axis *ax = &u->axis[l][a];
+         ax->size = size[a] > 0 ? size[a] : 1;
+         ax->scale = u->samp.normalized ? ns->from_float(ns, (float)ax->size, stats) : u->k_one;
+         axis_bounds(u, u->samp.wrap[a], ax->size, ax);
+      }
+   }
+
+   u->lod_bias = tex_lod_fixed(s->lod_bias);
+   u->min_lod = tex_lod_fixed(s->min_lod);
+   u->max_lod = tex_lod_fixed(s->max_lod);
+}

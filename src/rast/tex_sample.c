@@ -1,0 +1,206 @@
+/*
+ * The unit's quad: coordinates into the number system, cube face
+ * selection, LOD per quad (implicit) or per pixel (explicit), level
+ * selection, filtering, swizzle.
+ */
+#include <math.h>
+#include <string.h>
+#include "rast/tex_priv.h"
+
+static inline ns_val nsf(const struct tex_unit *u, float v)
+{
+   return tex_ns_coord(u->ns, u->kind, v, u->stats);
+}
+
+static inline ns_val neg(const struct tex_unit *u, ns_val a)
+{
+   return u->ns->sub(u->ns, u->k_zero, a, u->stats);
+}
+
+/* GL's table of cube face coordinates; s = (sc / |ma| + 1) / 2. */
+void tex_cube_on_face(const struct tex_unit *u, unsigned face, ns_val rx, ns_val ry, ns_val rz,
+                      ns_val *s, ns_val *t)
+{
+   ns_val sc, tc, ma;
+   switch (face) {
+   case 0: ma = rx; sc = neg(u, rz); tc = neg(u, ry); break;
+   case 1: ma = rx; sc = rz; tc = neg(u, ry); break;
+   case 2: ma = ry; sc = rx; tc = rz; break;
+   case 3: ma = ry; sc = rx; tc = neg(u, rz); break;
+   case 4: ma = rz; sc = rx; tc = neg(u, ry); break;
+   default: ma = rz; sc = neg(u, rx); tc = neg(u, ry); break;
+   }
+   ma = tex_ns_abs(u->kind, ma);
+   if (tex_ns_cmp(u->kind, ma, u->k_zero) == 0) {
+      *s = *t = u->k_half;
+      return;
+   }
+   const struct numsys *ns = u->ns;
+   ns_val k = ns->mul(ns, ns->recip(ns, ma, u->stats), u->k_half, u->stats);
+   *s = ns->add(ns, ns->mul(ns, sc, k, u->stats), u->k_half, u->stats);
+   *t = ns->add(ns, ns->mul(ns, tc, k, u->stats), u->k_half, u->stats);
+}
+
+/* The major axis; ties go to x, then y (GL leaves them open). */
+unsigned tex_cube_face(const struct tex_unit *u, ns_val rx, ns_val ry, ns_val rz,
+                       ns_val *s, ns_val *t)
+{
+   const int k = u->kind;
+   ns_val ax = tex_ns_abs(k, rx), ay = tex_ns_abs(k, ry), az = tex_ns_abs(k, rz);
+   unsigned face;
+   if (tex_ns_cmp(k, ax, ay) >= 0 && tex_ns_cmp(k, ax, az) >= 0)
+      face = tex_ns_neg(k, rx) ? 1 : 0;
+   else if (tex_ns_cmp(k, ay, az) >= 0)
+      face = tex_ns_neg(k, ry) ? 3 : 2;
+   else
+      face = tex_ns_neg(k, rz) ? 5 : 4;
+   tex_cube_on_face(u, face, rx, ry, rz, s, t);
+   return face;
+}
+
+static int32_t layer_of(const struct tex_unit *u, float l)
+{
+   /* GL: clamp(floor(layer + 0.5), 0, layers - 1); an integer path. */
+   float f = floorf(l + 0.5f);
+   if (!(f > 0.0f))
+      return 0;
+   return f >= (float)(u->view.layers - 1) ? u->view.layers - 1 : (int32_t)f;
+}
+
+/* Implicit LOD of a cube quad: pixels 0, 1, 2 projected on one face, so
+ * that a quad across a cube edge still gets one smooth LOD.  Which face: a
+ * quad on a face's edge has helper pixels beyond it, on another face, and a
+ * projection on that face stretches the differences (up to a level too
+ * far: piglit cubemap npot, 3x3 faces).  The faces of the quad's pixels are
+ * tried and the smallest LOD kept: the projection on the face the covered
+ * pixels are on is the undistorted one. */
+static int32_t cube_lod(const struct tex_unit *u, const int face[TEX_QUAD],
+                        ns_val dir[TEX_QUAD][3])
+{
+   int32_t best = 0;
+   unsigned tried = 0;
+   for (unsigned k = 0; k < TEX_QUAD; k++) {
+      if (tried & (1u << face[k]))
+         continue;
+      tried |= 1u << face[k];
+      ns_val c[TEX_QUAD][3];
+      for (unsigned p = 0; p < 3; p++)
+         tex_cube_on_face(u, (unsigned)face[k], dir[p][0], dir[p][1], dir[p][2], &c[p][0],
+                          &c[p][1]);
+      int32_t l = tex_lod_diffs(u, c, 2);
+      if (k == 0 || l < best)
+         best = l;
+   }
+   return best;
+}
+
+int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q)
+{
+   ns_val c[TEX_QUAD][3];
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      c[p][0] = nsf(u, q->s[p]);
+      c[p][1] = nsf(u, q->t[p]);
+      c[p][2] = nsf(u, q->r[p]);
+   }
+   if (u->view.target == TEX_TARGET_CUBE) {
+      int face[TEX_QUAD];
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         ns_val s, t;
+         face[p] = (int)tex_cube_face(u, c[p][0], c[p][1], c[p][2], &s, &t);
+      }
+      return cube_lod(u, face, c);
+   }
+   return tex_lod_diffs(u, c, u->dims);
+}
+
+static inline int32_t clamp_lod(const struct tex_unit *u, int32_t l)
+{
+   l += u->lod_bias;
+   if (l > u->max_lod)
+      l = u->max_lod;
+   if (l < u->min_lod)
+      l = u->min_lod;
+   return l;
+}
+
+void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
+                     enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
+{
+   const bool cube = u->view.target == TEX_TARGET_CUBE;
+   ns_val c[TEX_QUAD][3], dir[TEX_QUAD][3];
+   int layer[TEX_QUAD];
+   int32_t lod[TEX_QUAD];
+   float out[TEX_QUAD][4];
+
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      layer[p] = 0;
+      if (cube) {
+         dir[p][0] = nsf(u, q->s[p]);
+         dir[p][1] = nsf(u, q->t[p]);
+         dir[p][2] = nsf(u, q->r[p]);
+         layer[p] = (int)tex_cube_face(u, dir[p][0], dir[p][1], dir[p][2], &c[p][0], &c[p][1]);
+         continue;
+      }
+      c[p][0] = nsf(u, q->s[p]);
+      if (u->dims > 1)
+         c[p][1] = nsf(u, q->t[p]);
+      if (u->dims > 2)
+         c[p][2] = nsf(u, q->r[p]);
+      if (u->view.target == TEX_TARGET_1D_ARRAY || u->view.target == TEX_TARGET_2D_ARRAY)
+         layer[p] = layer_of(u, q->layer[p]);
+   }
+
+   switch (ctl) {
+   case TEX_LOD_IMPLICIT:
+   case TEX_LOD_BIAS: {
+      int32_t l = cube ? cube_lod(u, layer, dir) : tex_lod_diffs(u, c, u->dims);
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         lod[p] = l == TEX_LOD_NONE ? l
+                  : l + (ctl == TEX_LOD_BIAS ? tex_lod_fixed(q->lod[p]) : 0);
+      break;
+   }
+   case TEX_LOD_EXPLICIT:
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         lod[p] = tex_lod_fixed(q->lod[p]);
+      break;
+   case TEX_LOD_DERIVS:
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         float dx[3], dy[3];
+         ns_val scale[3];
+         unsigned n = cube ? 3 : u->dims;
+         for (unsigned a = 0; a < n; a++) {
+            dx[a] = q->ddx[a][p];
+            dy[a] = q->ddy[a][p];
+            /* Cube: direction derivatives on a unit major axis, so one
+             * unit of direction spans half a face. */
+            scale[a] = cube ? u->ns->mul(u->ns, u->axis[0][0].scale, u->k_half, u->stats)
+                            : u->axis[0][a].scale;
+         }
+         lod[p] = tex_lod_derivs(u, dx, dy, n, scale);
+      }
+      break;
+   default:
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         lod[p] = 0;
+      break;
+   }
+
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      unsigned l0, l1;
+      uint32_t frac;
+      enum tex_filter f;
+      tex_unit_select(u, clamp_lod(u, lod[p]), &l0, &l1, &frac, &f);
+      u->sample_level[f](u, l0, c[p], layer[p], q->ref[p], out[p]);
+      if (frac) {
+         float b[4];
+         u->sample_level[f](u, l1, c[p], layer[p], q->ref[p], b);
+         tex_lerp4(out[p], out[p], b, frac);
+      }
+   }
+
+   for (unsigned ch = 0; ch < 4; ch++) {
+      const unsigned s = u->view.swizzle[ch];
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         rgba[ch][p] = s < 4 ? out[p][s] : s == TEX_SWZ_1 ? 1.0f : 0.0f;
+   }
+}

@@ -1,0 +1,12 @@
+/*
+ * The texture unit's range events join the model's counters, next to those
+ * of the perspective division (same number system, same rast_stats fields).
+ */
+#include "rast/rast_priv.h"
+#include "rast/tex.h"
+
+void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush)
+{
+   rc->stats.tex_sat += sat;
+   rc->stats.tex_flush += flush;
+}

@@ -1,0 +1,201 @@
+#!/usr/bin/env python3
+"""Tests of the piglit runner (piglit-lists/run.py, `./fixpipe piglit`) with a fake piglit.
+
+Each case runs the real runner on a tiny list in a temporary directory; tests/harness/fake-piglit
+decides each result from the test's name. Ends with 'harness: N passed, N failed'.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+RUNNER = os.path.join(REPO, "piglit-lists", "run.py")
+FAKE = os.path.join(HERE, "fake-piglit")
+
+passed = failed = 0
+
+
+def check(name, cond, detail=""):
+    global passed, failed
+    if cond:
+        passed += 1
+        print(f"  ok   {name}")
+    else:
+        failed += 1
+        print(f"  FAIL {name}" + (f"\n{detail}" if detail else ""))
+
+
+class Case:
+    """A temporary list + expectations, run through the runner."""
+
+    def __init__(self, names, fails="", skips="", flakes="", header=""):
+        self.tmp = tempfile.TemporaryDirectory(prefix="fixpipe-harness-")
+        d = self.tmp.name
+        self.list = os.path.join(d, "tiny.txt")
+        with open(self.list, "w") as f:
+            f.write(header + "".join(n + "\n" for n in names))
+        self.exp = os.path.join(d, "exp")
+        os.makedirs(self.exp)
+        for kind, text in (("fails", fails), ("skips", skips), ("flakes", flakes)):
+            with open(os.path.join(self.exp, f"llvmpipe-{kind}.txt"), "w") as f:
+                f.write(text)
+        self.out = os.path.join(d, "out")
+
+    def run(self, *extra, via_launcher=False):
+        env = dict(os.environ, FIXPIPE_PIGLIT=FAKE, FIXPIPE_PIGLIT_DIR=os.path.join(
+            self.tmp.name, "no-piglit"), FIXPIPE_PIGLIT_OUT=self.out,
+            FIXPIPE_PIGLIT_EXPECTATIONS=self.exp)
+        env.pop("DISPLAY", None)
+        if via_launcher:
+            cmd = [os.path.join(REPO, "fixpipe"), "piglit", self.list, "--driver", "llvmpipe"]
+        else:
+            cmd = [sys.executable, RUNNER, self.list, "--driver", "llvmpipe"]
+        p = subprocess.run(cmd + list(extra), env=env, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True, timeout=120)
+        self.rc, self.output = p.returncode, p.stdout
+        return self
+
+    def summary(self, sub="llvmpipe-tiny"):
+        with open(os.path.join(self.out, sub, "summary.json")) as f:
+            return json.load(f)
+
+    def received(self, sub="llvmpipe-tiny"):
+        path = os.path.join(self.out, sub, "surfaceless", "received.txt")
+        return open(path).read().split("\n")[:-1] if os.path.exists(path) else []
+
+
+BASE = ["fake@a@pass-1", "fake@a@pass-2", "fake@b@fail-known", "fake@b@pass-was-failing",
+        "fake@c@skip-nogl", "fake@c@timeout-known", "fake@d@slow-excluded",
+        "fake@d@fail-flaky"]
+FAILS = """# reason: planted failure
+fake@b@fail-known,Fail
+# fixed since: must be reported
+fake@b@pass-was-failing,Fail
+# hangs in the fake
+fake@c@timeout-known,Timeout
+"""
+SKIPS = "# too slow\nslow-excluded$\n"
+FLAKES = "# random\nflaky$\n"
+
+
+def test_expected_results_exit_zero():
+    c = Case(BASE, FAILS, SKIPS, FLAKES).run()
+    check("listed failures only: exit 0", c.rc == 0, c.output)
+    check("a new pass is reported",
+          "UnexpectedPass fake@b@pass-was-failing" in c.output, c.output)
+    check("the tally line counts the met expectations",
+          "piglit-tiny-llvmpipe: 8 passed, 0 failed" in c.output, c.output)
+    check("an excluded test is not given to piglit",
+          "fake@d@slow-excluded" not in c.received()
+          and len(c.received()) == len(BASE) - 1, repr(c.received()))
+    s = c.summary()
+    t = s["tests"]
+    check("summary: documented fields",
+          all(k in s for k in ("format", "list", "driver", "profile", "shard", "started",
+                               "seconds", "jobs", "total", "counts", "expected", "tests",
+                               "exit_status")) and s["format"] == "fixpipe-piglit-summary/1",
+          json.dumps(s, indent=1)[:800])
+    check("summary: statuses",
+          (t["fake@a@pass-1"]["status"], t["fake@b@fail-known"]["status"],
+           t["fake@b@pass-was-failing"]["status"], t["fake@c@skip-nogl"]["status"],
+           t["fake@d@slow-excluded"]["status"], t["fake@d@fail-flaky"]["status"],
+           t["fake@c@timeout-known"]["status"])
+          == ("ok", "expected", "unexpected_pass", "skip", "excluded", "flake", "expected"),
+          json.dumps(t, indent=1))
+    check("summary: reason of a listed failure",
+          t["fake@b@fail-known"].get("reason") == "reason: planted failure", repr(t))
+    check("summary: counts",
+          s["counts"] == {"pass": 3, "warn": 0, "fail": 2, "crash": 0, "timeout": 1,
+                          "skip": 1, "notrun": 0, "excluded": 1} and s["total"] == 8,
+          repr(s["counts"]))
+
+
+def test_new_failure_exits_nonzero():
+    for planted, word in (("fake@e@fail-new", "FAIL"), ("fake@e@crash-new", "CRASH"),
+                          ("fake@e@vanish-new", "NOTRUN"), ("fake@e@timeout-new", "TIMEOUT")):
+        c = Case(BASE + [planted], FAILS, SKIPS, FLAKES).run()
+        check(f"a new {word.lower()} exits 1 and is listed",
+              c.rc == 1 and f"{word:<12} {planted} (expected pass)" in c.output
+              and c.summary()["tests"][planted]["status"] == "unexpected"
+              and c.summary()["exit_status"] == 1, c.output)
+
+
+def test_expected_crash_differs_from_fail():
+    c = Case(["fake@f@fail-x"], "# r\nfake@f@fail-x,Crash\n").run()
+    check("a failure listed as Crash is a difference", c.rc == 1, c.output)
+
+
+def test_require_run():
+    c = Case(["fake@a@pass-1", "fake@c@skip-nogl"], header="# require-run\n").run()
+    check("require-run: a run-time skip exits 1", c.rc == 1 and "SKIP" in c.output, c.output)
+
+
+def test_bad_expectations():
+    c = Case(["fake@a@pass-1"], "fake@a@pass-1,Skip\n").run()
+    check("a malformed fails line is refused", c.rc == 2 and "Fail|Crash|Timeout"
+          in c.output, c.output)
+
+
+def test_usage_errors():
+    c = Case(["fake@a@pass-1"])
+    check("unknown driver: exit 2", c.run("--driver", "nopipe").rc == 2, c.output)
+    check("bad shard: exit 2", c.run("--shard", "5/4").rc == 2, c.output)
+    check("bad shard syntax: exit 2", c.run("--shard", "x").rc == 2, c.output)
+
+
+def test_sharding():
+    names = [f"fake@s{k % 5}@pass-{k:02d}" for k in range(23)] + ["fake@s@slow-excluded"]
+    c = Case(names, skips=SKIPS)
+    n = 4
+    seen, sizes = [], []
+    for i in range(1, n + 1):
+        c.run("--shard", f"{i}/{n}")
+        s = c.summary(f"llvmpipe-tiny-s{i}of{n}")
+        seen += list(s["tests"])
+        sizes.append(len(s["tests"]))
+        check(f"shard {i}/{n} exits 0 and says which it is",
+              c.rc == 0 and s["shard"] == [i, n], c.output)
+    check("the shards cover the list exactly once",
+          sorted(seen) == sorted(names) and len(seen) == len(set(seen)), repr(sorted(seen)))
+    check("shard sizes differ by at most one", max(sizes) - min(sizes) <= 1, repr(sizes))
+    c.run("--shard", f"2/{n}")
+    again = sorted(c.summary(f"llvmpipe-tiny-s2of{n}")["tests"])
+    c.run("--shard", f"2/{n}")
+    check("a shard is the same on every run",
+          again == sorted(c.summary(f"llvmpipe-tiny-s2of{n}")["tests"]))
+    dirs = [os.path.join(c.out, f"llvmpipe-tiny-s{i}of{n}") for i in range(1, n + 1)]
+    p = subprocess.run([sys.executable, RUNNER, "--merge"] + dirs, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    check("--merge of all shards: exit 0, whole-list tally",
+          p.returncode == 0 and "piglit-tiny-llvmpipe: 24 passed, 0 failed" in p.stdout,
+          p.stdout)
+    p = subprocess.run([sys.executable, RUNNER, "--merge"] + dirs[:-1], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    check("--merge with a shard missing: exit 1", p.returncode == 1, p.stdout)
+
+
+def test_launcher():
+    c = Case(BASE + ["fake@e@fail-new"], FAILS, SKIPS, FLAKES).run(via_launcher=True)
+    check("./fixpipe piglit: a new failure exits 1",
+          c.rc == 1 and "FAIL         fake@e@fail-new" in c.output, c.output)
+    c = Case(BASE, FAILS, SKIPS, FLAKES).run(via_launcher=True)
+    check("./fixpipe piglit: expected results exit 0", c.rc == 0, c.output)
+
+
+def main():
+    for name, fn in sorted(globals().items()):
+        if name.startswith("test_"):
+            print(f"{name}:")
+            try:
+                fn()
+            except Exception as e:  # a broken case is a failure, not the end of the suite
+                check(name, False, f"{type(e).__name__}: {e}")
+    print(f"harness: {passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

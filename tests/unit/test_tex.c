@@ -1,0 +1,582 @@
+/* The texture unit (src/rast/tex*.c) against the float reference sampler of
+ * test_tex_ref.h: texel choice, bilinear weights, every wrap mode on
+ * coordinates from -2^20 to 2^20, LOD and level selection, cube faces,
+ * shadow compare, border colour, texel formats, texelFetch.  The same
+ * address sweep is reported for the fixed-point number systems. */
+#include <math.h>
+#include <string.h>
+#include "tutil.h"
+#include "test_tex_ref.h"
+#include "rast/tex.h"
+#include "rast/tex_ns.h"
+#include "fixed/numsys.h"
+
+static struct ns_stats st;
+
+static const char *wrap_name[TEX_WRAP_COUNT] = {
+   "REPEAT", "CLAMP", "CLAMP_TO_EDGE", "CLAMP_TO_BORDER", "MIRRORED_REPEAT",
+   "MIRROR_CLAMP", "MIRROR_CLAMP_TO_EDGE", "MIRROR_CLAMP_TO_BORDER",
+};
+
+static void view_1level(struct tex_view_desc *v, enum tex_target t, enum tex_format f,
+                        const void *data, int w, int h, int d)
+{
+   memset(v, 0, sizeof(*v));
+   v->target = t;
+   v->format = f;
+   v->num_levels = 1;
+   v->layers = t == TEX_TARGET_CUBE ? 6 : d;
+   v->level[0].data = data;
+   v->level[0].w = w;
+   v->level[0].h = h;
+   v->level[0].d = d;
+   v->level[0].row_stride = (uint32_t)w * (tex_format_bytes(f) ? tex_format_bytes(f) : 4);
+   v->level[0].img_stride = v->level[0].row_stride * (uint32_t)h;
+   for (unsigned c = 0; c < 4; c++)
+      v->swizzle[c] = (uint8_t)c;
+}
+
+static void samp_init(struct tex_sampler_desc *s, enum tex_wrap w, enum tex_filter f)
+{
+   memset(s, 0, sizeof(*s));
+   s->wrap[0] = s->wrap[1] = s->wrap[2] = w;
+   s->min_filter = s->mag_filter = f;
+   s->mip = TEX_MIP_NONE;
+   s->normalized = true;
+   s->min_lod = -1000;
+   s->max_lod = 1000;
+}
+
+/* A coordinate spread over [-2^20, 2^20] on a log scale, or near [-2, 2]. */
+static double rand_coord(void)
+{
+   double r = t_rand();
+   double sign = t_rand() < 0.5 ? -1.0 : 1.0;
+   if (r < 0.4)
+      return 4.0 * t_rand() - 2.0;
+   return sign * ldexp(1.0 + t_rand(), (int)(t_rand() * 20.0));
+}
+
+static struct ref_taps unit_taps(const struct tex_unit *u, enum tex_filter f, ns_val c)
+{
+   struct tex_addr a;
+   struct ref_taps r;
+   u->addr[f][0](u, &u->axis[0][0], c, &a);
+   if (f == TEX_FILTER_NEAREST) {
+      r.n = 1; r.i[0] = a.i0; r.w[0] = 1.0;
+   } else {
+      r.n = 2; r.i[0] = a.i0; r.i[1] = a.i1;
+      r.w[1] = a.w / 256.0; r.w[0] = 1.0 - r.w[1];
+   }
+   return r;
+}
+
+/* The unit's weight precision at texel coordinate u: 8 bits, or the
+ * register's own ulp when coarser (a dfx24 mantissa's leading one may sit
+ * 3 bits above u's, leaving W - 4 = 15 bits below it). */
+static double weight_tol(const struct numsys *ns, int size)
+{
+   /* the unit's scaled register stays below 2 * size in every mode */
+   double lead = floor(log2(2.0 * size));
+   if (!strncmp(ns->name, "dfx", 3))
+      return 1.0 / 256 + ldexp(1.0, (int)lead + 3 - (ns->dfx.mant_bits - 1)) + 1e-9;
+   return 1.0 / 256 + ldexp(1.0, (int)lead - 22) + 1e-9;
+}
+
+static bool nearest_tie(double u)
+{
+   double m = fabs(u) > 1 ? fabs(u) : 1;
+   return fabs(u - floor(u + 0.5)) <= m * ldexp(1.0, -14);
+}
+
+/* Every wrap mode x filter x size on coordinates up to 2^20.  On the value
+ * the register holds, the unit must agree with the reference (asserted for
+ * `strict` systems); against the coordinate the application gave, the
+ * mismatches are counted per magnitude bucket and reported. */
+static void wrap_sweep(const char *name, bool strict, unsigned n)
+{
+   const struct numsys *ns = numsys_by_name(name);
+   static const int sizes[] = { 1, 2, 3, 5, 16, 100, 256, 1000 };
+   unsigned long bad_held = 0, bad_orig[4] = { 0, 0, 0, 0 }, tot[4] = { 0, 0, 0, 0 };
+   CHECK(ns != NULL, "%s", name);
+   if (!ns)
+      return;
+   t_seed(7);
+   for (unsigned w = 0; w < TEX_WRAP_COUNT; w++)
+      for (unsigned f = 0; f < 2; f++)
+         for (unsigned si = 0; si < sizeof(sizes) / sizeof(sizes[0]); si++) {
+            struct tex_view_desc v;
+            struct tex_sampler_desc s;
+            struct tex_unit u;
+            view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, sizes[si], 1, 1);
+            samp_init(&s, (enum tex_wrap)w, (enum tex_filter)f);
+            tex_unit_bind(&u, ns, &v, &s, &st);
+            for (unsigned k = 0; k < n; k++) {
+               float c = (float)rand_coord();
+               ns_val h = tex_ns_coord(ns, tex_ns_kind(ns), c, &st);
+               double held = ns->to_float(ns, h);
+               struct ref_taps got = unit_taps(&u, (enum tex_filter)f, h);
+               struct ref_taps want = ref_axis((enum tex_wrap)w, f, held, sizes[si], true);
+               struct ref_taps orig = ref_axis((enum tex_wrap)w, f, c, sizes[si], true);
+               double tol = f ? weight_tol(ns, sizes[si]) : 0.0;
+               bool tie = !f && nearest_tie(want.u);
+               double d = ref_taps_diff(got, want);
+               if (!tie && d > tol) {
+                  bad_held++;
+                  if (strict)
+                     CHECK(0, "%s %s %s size %d c %.9g (held %.9g): diff %.5f tol %.5f "
+                           "got %d,%d w %.4f want %d,%d w %.4f", name, wrap_name[w],
+                           f ? "LINEAR" : "NEAREST", sizes[si], (double)c, held, d, tol,
+                           got.i[0], got.n > 1 ? got.i[1] : -9, got.n > 1 ? got.w[1] : 0,
+                           want.i[0], want.n > 1 ? want.i[1] : -9, want.n > 1 ? want.w[1] : 0);
+               }
+               double ac = fabs(c);
+               unsigned b = ac < 128 ? 0 : ac < 32768 ? 1 : ac < 8388608 ? 2 : 3;
+               tot[b]++;
+               if (!(!f && nearest_tie(orig.u)) && ref_taps_diff(got, orig) > (f ? 2.0 / 256 : 0))
+                  bad_orig[b]++;
+            }
+         }
+   printf("  %-8s wrong vs held value %6lu | vs app coordinate, |c|<2^7: %lu/%lu  "
+          "2^7..2^15: %lu/%lu  2^15..2^20: %lu/%lu\n", name, bad_held, bad_orig[0], tot[0],
+          bad_orig[1], tot[1], bad_orig[2] + bad_orig[3], tot[2] + tot[3]);
+}
+
+/* Exactly representable coordinates: the unit must match the reference on
+ * the application's own value, all the way to 2^20. */
+static void wrap_exact_dfx24(void)
+{
+   const struct numsys *ns = numsys_default();
+   static const int sizes[] = { 1, 3, 64, 100, 256 };
+   unsigned checked = 0;
+   t_seed(11);
+   for (unsigned w = 0; w < TEX_WRAP_COUNT; w++)
+      for (unsigned f = 0; f < 2; f++)
+         for (unsigned si = 0; si < 5; si++) {
+            struct tex_view_desc v;
+            struct tex_sampler_desc s;
+            struct tex_unit u;
+            view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, sizes[si], 1, 1);
+            samp_init(&s, (enum tex_wrap)w, (enum tex_filter)f);
+            tex_unit_bind(&u, ns, &v, &s, &st);
+            for (int e = -8; e <= 20; e++)
+               for (unsigned k = 0; k < 40; k++) {
+                  /* 15 significant bits fit any digit alignment of a
+                   * 19-bit mantissa */
+                  double m = (double)((1 << 14) + (int)(t_rand() * (1 << 14)));
+                  double c = ldexp(m, e - 14) * (k & 1 ? -1 : 1);
+                  ns_val h = tex_ns_coord(ns, tex_ns_kind(ns), (float)c, &st);
+                  CHECK(ns->to_float(ns, h) == c, "representable %.9g", c);
+                  struct ref_taps got = unit_taps(&u, (enum tex_filter)f, h);
+                  struct ref_taps want = ref_axis((enum tex_wrap)w, f, c, sizes[si], true);
+                  if (!f && nearest_tie(want.u))
+                     continue;
+                  checked++;
+                  CHECK(ref_taps_diff(got, want) <= (f ? weight_tol(ns, sizes[si]) : 0.0),
+                        "exact %s %s size %d c %.9g", wrap_name[w], f ? "LINEAR" : "NEAREST",
+                        sizes[si], c);
+               }
+         }
+   CHECK(checked > 10000, "enough exact cases: %u", checked);
+}
+
+/* Weights are the fraction's top 8 bits, truncated. */
+static void weight_bits(const char *name)
+{
+   const struct numsys *ns = numsys_by_name(name);
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   struct tex_unit u;
+   view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, 64, 1, 1);
+   samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
+   tex_unit_bind(&u, ns, &v, &s, &st);
+   for (int k = 0; k < 63; k += 7)
+      for (int j = 0; j < 256; j++)
+         for (int extra = 0; extra < 2; extra++) {
+            double uu = k + 0.5 + j / 256.0 + (extra ? 3.0 / 1024 : 0);
+            struct tex_addr a;
+            u.addr[1][0](&u, &u.axis[0][0], tex_ns_coord(ns, u.kind, (float)(uu / 64), &st), &a);
+            CHECK(a.w == (uint32_t)j && a.i0 == k, "%s u %.6f: w %u want %d, i0 %d want %d",
+                  name, uu, a.w, j, a.i0, k);
+         }
+}
+
+/* 2D RGBA8 sampling of an NPOT texture vs the reference blend. */
+static void sample_2d(void)
+{
+   enum { W = 37, H = 23 };
+   static uint8_t tex[W * H * 4];
+   const struct numsys *ns = numsys_default();
+   t_seed(3);
+   for (unsigned i = 0; i < sizeof(tex); i++)
+      tex[i] = (uint8_t)(t_rand() * 256);
+   const float border[4] = { 0.25f, 0.5f, 0.75f, 1.0f };
+   for (unsigned w = 0; w < TEX_WRAP_COUNT; w++)
+      for (unsigned f = 0; f < 2; f++) {
+         struct tex_view_desc v;
+         struct tex_sampler_desc s;
+         struct tex_unit u;
+         view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, tex, W, H, 1);
+         samp_init(&s, (enum tex_wrap)w, (enum tex_filter)f);
+         memcpy(s.border, border, sizeof(border));
+         tex_unit_bind(&u, ns, &v, &s, &st);
+         for (unsigned k = 0; k < 400; k++) {
+            struct tex_quad q;
+            float rgba[4][TEX_QUAD];
+            memset(&q, 0, sizeof(q));
+            for (unsigned p = 0; p < 4; p++) {
+               q.s[p] = (float)(6 * t_rand() - 3);
+               q.t[p] = (float)(6 * t_rand() - 3);
+            }
+            tex_unit_sample(&u, &q, TEX_LOD_ZERO, rgba);
+            for (unsigned p = 0; p < 4; p++) {
+               struct ref_taps a = ref_axis((enum tex_wrap)w, f, q.s[p], W, true);
+               struct ref_taps b = ref_axis((enum tex_wrap)w, f, q.t[p], H, true);
+               if (!f && (nearest_tie(a.u) || nearest_tie(b.u)))
+                  continue;
+               for (unsigned c = 0; c < 4; c++) {
+                  double want = 0;
+                  for (int i = 0; i < a.n; i++)
+                     for (int j = 0; j < b.n; j++) {
+                        double texel = (a.i[i] < 0 || b.i[j] < 0) ? border[c]
+                                       : tex[(b.i[j] * W + a.i[i]) * 4 + c] / 255.0;
+                        want += a.w[i] * b.w[j] * texel;
+                     }
+                  CHECK(fabs(rgba[c][p] - want) <= (f ? 2.5 / 256 : 1e-6),
+                        "2D %s %s (%g,%g) ch %u: %g want %g", wrap_name[w],
+                        f ? "LINEAR" : "NEAREST", q.s[p], q.t[p], c, rgba[c][p], want);
+               }
+            }
+         }
+      }
+}
+
+/* LOD: log2 of the largest scaled derivative within 0.02; level choice. */
+static void lod_select(void)
+{
+   static uint8_t tex[4];
+   const struct numsys *ns = numsys_default();
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   struct tex_unit u;
+   view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, tex, 256, 256, 1);
+   v.num_levels = 9;
+   for (unsigned l = 0; l < 9; l++) {
+      v.level[l] = v.level[0];
+      v.level[l].w = v.level[l].h = 256 >> l;
+   }
+   samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
+   s.mip = TEX_MIP_NEAREST;
+   tex_unit_bind(&u, ns, &v, &s, &st);
+   double worst = 0;
+   unsigned lvl_checked = 0;
+   t_seed(5);
+   for (unsigned k = 0; k < 20000; k++) {
+      struct tex_quad q;
+      memset(&q, 0, sizeof(q));
+      double s0 = t_rand(), t0 = t_rand();
+      double d[4];
+      for (unsigned i = 0; i < 4; i++)
+         d[i] = ldexp((t_rand() < 0.5 ? -1 : 1) * (0.5 + t_rand()), (int)(t_rand() * 16) - 14);
+      q.s[0] = (float)s0; q.t[0] = (float)t0;
+      q.s[1] = (float)(s0 + d[0]); q.t[1] = (float)(t0 + d[1]);
+      q.s[2] = (float)(s0 + d[2]); q.t[2] = (float)(t0 + d[3]);
+      q.s[3] = q.s[1] + q.s[2] - q.s[0]; q.t[3] = q.t[1] + q.t[2] - q.t[0];
+      double h[3][2];
+      for (unsigned p = 0; p < 3; p++) {
+         h[p][0] = ns->to_float(ns, tex_ns_coord(ns, u.kind, q.s[p], &st));
+         h[p][1] = ns->to_float(ns, tex_ns_coord(ns, u.kind, q.t[p], &st));
+      }
+      double rho = 0;
+      for (unsigned a = 0; a < 2; a++) {
+         rho = fmax(rho, fabs(h[1][a] - h[0][a]) * 256);
+         rho = fmax(rho, fabs(h[2][a] - h[0][a]) * 256);
+      }
+      double ref = log2(rho);
+      int32_t lod = tex_lod_quad(&u, &q);
+      double err = fabs(lod / 256.0 - ref);
+      worst = fmax(worst, err);
+      CHECK(err <= 0.02, "lod %.4f want %.4f (rho %g)", lod / 256.0, ref, rho);
+      /* GL's nearest level: ceil(lod + 1/2) - 1, clamped */
+      if (fabs(ref - floor(ref) - 0.5) > 0.02 && fabs(ref - floor(ref + 0.5)) > 0.02) {
+         int want = ref <= 0.5 ? 0 : (int)ceil(ref + 0.5) - 1;
+         want = want > 8 ? 8 : want;
+         unsigned l0, l1;
+         uint32_t fr;
+         enum tex_filter flt;
+         tex_unit_select(&u, lod, &l0, &l1, &fr, &flt);
+         CHECK((int)l0 == want && l1 == l0, "level %u want %d (lod %.3f)", l0, want, ref);
+         lvl_checked++;
+      }
+   }
+   CHECK(lvl_checked > 10000, "levels checked %u", lvl_checked);
+   printf("  LOD: worst |lod - log2(rho)| %.4f over 20000 quads\n", worst);
+}
+
+/* Mip selection with explicit LOD, bias and clamps on solid levels. */
+static void mip_levels(void)
+{
+   static uint8_t lv[4][8 * 8 * 4];
+   const struct numsys *ns = numsys_default();
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   struct tex_unit u;
+   for (unsigned l = 0; l < 4; l++)
+      memset(lv[l], 40 + 60 * l, sizeof(lv[l]));
+   view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, lv[0], 8, 8, 1);
+   v.num_levels = 4;
+   for (unsigned l = 0; l < 4; l++) {
+      v.level[l].data = lv[l];
+      v.level[l].w = v.level[l].h = 8 >> l;
+      v.level[l].row_stride = 4u * (8 >> l);
+   }
+   struct { enum tex_mip mip; float bias, minl, maxl, lod; double want; } cases[] = {
+      { TEX_MIP_LINEAR, 0, -1000, 1000, 1.25f, 0.75 * 100 + 0.25 * 160 },
+      { TEX_MIP_LINEAR, 0, -1000, 1000, 7.0f, 220 },
+      { TEX_MIP_LINEAR, 0, -1000, 1000, -3.0f, 40 },
+      { TEX_MIP_NEAREST, 0, -1000, 1000, 1.5f, 100 },
+      { TEX_MIP_NEAREST, 0, -1000, 1000, 1.5f + 1.0f / 256, 160 },
+      { TEX_MIP_NEAREST, 0, -1000, 1000, 0.5f, 40 },
+      { TEX_MIP_NEAREST, 1.0f, -1000, 1000, 0.75f, 160 },
+      { TEX_MIP_NEAREST, 0, 2.0f, 1000, 0.0f, 160 },
+      { TEX_MIP_LINEAR, 0, -1000, 1.5f, 3.0f, 0.5 * 100 + 0.5 * 160 },
+      { TEX_MIP_NONE, 0, -1000, 1000, 3.0f, 40 },
+   };
+   for (unsigned k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
+      samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
+      s.mip = cases[k].mip;
+      s.lod_bias = cases[k].bias;
+      s.min_lod = cases[k].minl;
+      s.max_lod = cases[k].maxl;
+      tex_unit_bind(&u, ns, &v, &s, &st);
+      struct tex_quad q;
+      float rgba[4][TEX_QUAD];
+      memset(&q, 0, sizeof(q));
+      for (unsigned p = 0; p < 4; p++) {
+         q.s[p] = 0.3f; q.t[p] = 0.6f; q.lod[p] = cases[k].lod;
+      }
+      tex_unit_sample(&u, &q, TEX_LOD_EXPLICIT, rgba);
+      CHECK(fabs(rgba[0][0] * 255 - cases[k].want) < 1.0, "mip case %u: %g want %g", k,
+            rgba[0][0] * 255, cases[k].want);
+   }
+}
+
+static void cube_faces(void)
+{
+   const struct numsys *ns = numsys_default();
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   struct tex_unit u;
+   view_1level(&v, TEX_TARGET_CUBE, TEX_FMT_RGBA8, NULL, 16, 16, 1);
+   samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_NEAREST);
+   tex_unit_bind(&u, ns, &v, &s, &st);
+   unsigned checked = 0;
+   t_seed(9);
+   for (unsigned k = 0; k < 100000; k++) {
+      double r[3];
+      for (unsigned a = 0; a < 3; a++)
+         r[a] = ldexp(2 * t_rand() - 1, (int)(t_rand() * 20) - 10);
+      if (k % 4 == 0)   /* near the cube's edges and corners */
+         r[1] = r[0] * (1 + ldexp(2 * t_rand() - 1, -10));
+      ns_val h[3], ss, tt;
+      double hd[3], rs, rt;
+      for (unsigned a = 0; a < 3; a++) {
+         h[a] = ns->from_float(ns, (float)r[a], &st);
+         hd[a] = ns->to_float(ns, h[a]);
+      }
+      unsigned want = ref_cube(hd[0], hd[1], hd[2], &rs, &rt);
+      unsigned got = tex_cube_face(&u, h[0], h[1], h[2], &ss, &tt);
+      double m[3] = { fabs(hd[0]), fabs(hd[1]), fabs(hd[2]) };
+      bool tie = (m[0] == m[1] && m[0] >= m[2]) || (m[0] == m[2] && m[0] >= m[1]) ||
+                 (m[1] == m[2] && m[1] >= m[0]);
+      if (fmax(fmax(m[0], m[1]), m[2]) == 0)
+         continue;
+      CHECK(got == want || tie, "face %u want %u (%g %g %g)", got, want, hd[0], hd[1], hd[2]);
+      if (got == want) {
+         checked++;
+         CHECK(fabs(ns->to_float(ns, ss) - rs) <= ldexp(1, -13) &&
+               fabs(ns->to_float(ns, tt) - rt) <= ldexp(1, -13),
+               "face %u coords (%g %g) want (%g %g)", got, ns->to_float(ns, ss),
+               ns->to_float(ns, tt), rs, rt);
+      }
+   }
+   CHECK(checked > 90000, "cube cases %u", checked);
+}
+
+/* Depth texels through the driver-style fetch callback. */
+static float depth_tex[8 * 8];
+static void depth_fetch(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
+                        int z, float out[4])
+{
+   (void)v; (void)lv; (void)z;
+   out[0] = out[1] = out[2] = depth_tex[y * 8 + x];
+   out[3] = 1.0f;
+}
+
+static bool ref_cmp(enum tex_func f, double r, double d)
+{
+   switch (f) {
+   case TEX_FUNC_NEVER: return false;
+   case TEX_FUNC_LESS: return r < d;
+   case TEX_FUNC_EQUAL: return r == d;
+   case TEX_FUNC_LEQUAL: return r <= d;
+   case TEX_FUNC_GREATER: return r > d;
+   case TEX_FUNC_NOTEQUAL: return r != d;
+   case TEX_FUNC_GEQUAL: return r >= d;
+   default: return true;
+   }
+}
+
+static void shadow(void)
+{
+   const struct numsys *ns = numsys_default();
+   t_seed(13);
+   for (unsigned i = 0; i < 64; i++)
+      depth_tex[i] = (float)((int)(t_rand() * 8) / 8.0);
+   for (unsigned fn = 0; fn < 8; fn++)
+      for (unsigned f = 0; f < 2; f++) {
+         struct tex_view_desc v;
+         struct tex_sampler_desc s;
+         struct tex_unit u;
+         view_1level(&v, TEX_TARGET_2D, TEX_FMT_CALLBACK, NULL, 8, 8, 1);
+         v.fetch = depth_fetch;
+         v.depth = true;
+         samp_init(&s, TEX_WRAP_CLAMP_TO_BORDER, (enum tex_filter)f);
+         s.compare = true;
+         s.func = (enum tex_func)fn;
+         s.border[0] = 0.5f;
+         tex_unit_bind(&u, ns, &v, &s, &st);
+         for (unsigned k = 0; k < 500; k++) {
+            struct tex_quad q;
+            float rgba[4][TEX_QUAD];
+            memset(&q, 0, sizeof(q));
+            for (unsigned p = 0; p < 4; p++) {
+               q.s[p] = (float)(1.4 * t_rand() - 0.2);
+               q.t[p] = (float)(1.4 * t_rand() - 0.2);
+               q.ref[p] = (float)((int)(t_rand() * 9) / 8.0);
+            }
+            tex_unit_sample(&u, &q, TEX_LOD_ZERO, rgba);
+            for (unsigned p = 0; p < 4; p++) {
+               struct ref_taps a = ref_axis(TEX_WRAP_CLAMP_TO_BORDER, f, q.s[p], 8, true);
+               struct ref_taps b = ref_axis(TEX_WRAP_CLAMP_TO_BORDER, f, q.t[p], 8, true);
+               if (!f && (nearest_tie(a.u) || nearest_tie(b.u)))
+                  continue;
+               double want = 0;
+               for (int i = 0; i < a.n; i++)
+                  for (int j = 0; j < b.n; j++) {
+                     double d = (a.i[i] < 0 || b.i[j] < 0) ? 0.5 : depth_tex[b.i[j] * 8 + a.i[i]];
+                     want += a.w[i] * b.w[j] * (ref_cmp((enum tex_func)fn, q.ref[p], d) ? 1 : 0);
+                  }
+               CHECK(fabs(rgba[0][p] - want) <= (f ? 2.5 / 256 : 0) && rgba[3][p] == 1.0f,
+                     "shadow func %u %s (%g,%g) ref %g: %g want %g", fn, f ? "LINEAR" : "NEAREST",
+                     q.s[p], q.t[p], q.ref[p], rgba[0][p], want);
+            }
+         }
+      }
+}
+
+static void border_colour(void)
+{
+   static uint8_t tex[4 * 4 * 4];
+   const float border[4] = { 0.1f, 0.2f, 0.3f, 0.4f };
+   memset(tex, 255, sizeof(tex));
+   for (unsigned f = 0; f < 2; f++) {
+      struct tex_view_desc v;
+      struct tex_sampler_desc s;
+      struct tex_unit u;
+      view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, tex, 4, 4, 1);
+      samp_init(&s, TEX_WRAP_CLAMP_TO_BORDER, (enum tex_filter)f);
+      memcpy(s.border, border, sizeof(border));
+      tex_unit_bind(&u, numsys_default(), &v, &s, &st);
+      struct tex_quad q;
+      float rgba[4][TEX_QUAD];
+      memset(&q, 0, sizeof(q));
+      q.s[0] = -0.5f; q.t[0] = 0.5f;          /* outside: the border */
+      q.s[1] = 0.5f; q.t[1] = 1.75f;
+      q.s[2] = 0.0f; q.t[2] = 0.5f;           /* on the edge: half border (linear) */
+      q.s[3] = 0.5f; q.t[3] = 0.5f;           /* inside */
+      tex_unit_sample(&u, &q, TEX_LOD_ZERO, rgba);
+      for (unsigned c = 0; c < 4; c++) {
+         CHECK(rgba[c][0] == border[c] && rgba[c][1] == border[c], "border ch %u", c);
+         double edge = f ? 0.5 * border[c] + 0.5 : 1.0;
+         CHECK(fabs(rgba[c][2] - edge) < 1e-6, "edge ch %u %s: %g want %g", c,
+               f ? "LINEAR" : "NEAREST", rgba[c][2], edge);
+         CHECK(rgba[c][3] == 1.0f, "inside ch %u", c);
+      }
+   }
+}
+
+static void formats(void)
+{
+   static const struct { enum tex_format f; uint8_t b[4]; float want[4]; } cases[] = {
+      { TEX_FMT_RGBA8, { 255, 0, 51, 102 }, { 1, 0, 0.2f, 0.4f } },
+      { TEX_FMT_RGBX8, { 255, 0, 51, 102 }, { 1, 0, 0.2f, 1 } },
+      { TEX_FMT_BGRA8, { 255, 0, 51, 102 }, { 0.2f, 0, 1, 0.4f } },
+      { TEX_FMT_BGRX8, { 255, 0, 51, 102 }, { 0.2f, 0, 1, 1 } },
+      { TEX_FMT_L8, { 51 }, { 0.2f, 0.2f, 0.2f, 1 } },
+      { TEX_FMT_A8, { 51 }, { 0, 0, 0, 0.2f } },
+      { TEX_FMT_I8, { 51 }, { 0.2f, 0.2f, 0.2f, 0.2f } },
+      { TEX_FMT_R8, { 51 }, { 0.2f, 0, 0, 1 } },
+      { TEX_FMT_LA8, { 51, 102 }, { 0.2f, 0.2f, 0.2f, 0.4f } },
+      /* 0xF800 little endian: R = 31 */
+      { TEX_FMT_B5G6R5, { 0x00, 0xF8 }, { 1, 0, 0, 1 } },
+      { TEX_FMT_B5G6R5, { 0x1F, 0x00 }, { 0, 0, 1, 1 } },
+      { TEX_FMT_A4B4G4R4, { 0x0F, 0xF0 }, { 1, 0, 0, 1 } },
+      { TEX_FMT_B4G4R4A4, { 0x0F, 0xF0 }, { 0, 0, 1, 1 } },
+      { TEX_FMT_A1B5G5R5, { 0x01, 0xF8 }, { 1, 0, 0, 1 } },
+      { TEX_FMT_B5G5R5A1, { 0x00, 0x80 }, { 0, 0, 0, 1 } },
+      { TEX_FMT_B5G5R5A1, { 0xE0, 0x03 }, { 0, 1, 0, 0 } },
+   };
+   for (unsigned k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
+      struct tex_view_desc v;
+      float out[4];
+      view_1level(&v, TEX_TARGET_2D, cases[k].f, cases[k].b, 1, 1, 1);
+      tex_format_fetch(cases[k].f)(&v, &v.level[0], 0, 0, 0, out);
+      for (unsigned c = 0; c < 4; c++)
+         CHECK(fabs(out[c] - cases[k].want[c]) < 1e-6, "format case %u ch %u: %g want %g", k, c,
+               out[c], cases[k].want[c]);
+   }
+}
+
+static void texel_fetch_and_swizzle(void)
+{
+   static uint8_t tex[3 * 2 * 4];
+   struct tex_view_desc v;
+   float rgba[4][TEX_QUAD];
+   for (unsigned i = 0; i < sizeof(tex); i++)
+      tex[i] = (uint8_t)(i * 10);
+   view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, tex, 3, 2, 1);
+   v.swizzle[0] = 2; v.swizzle[1] = TEX_SWZ_1; v.swizzle[2] = TEX_SWZ_0; v.swizzle[3] = 0;
+   const int x[4] = { 2, 3, 0, 1 }, y[4] = { 1, 0, -1, 0 }, z[4] = { 0, 0, 0, 0 };
+   const int l[4] = { 0, 0, 0, 1 };
+   tex_view_texel(&v, x, y, z, l, rgba);
+   /* texel (2,1) = bytes 20..23 -> 200, 210, 220, 230 */
+   CHECK(fabs(rgba[0][0] - 220 / 255.0) < 1e-6 && rgba[1][0] == 1 && rgba[2][0] == 0 &&
+         fabs(rgba[3][0] - 200 / 255.0) < 1e-6, "texelFetch + swizzle");
+   for (unsigned p = 1; p < 4; p++)
+      CHECK(rgba[0][p] == 0 && rgba[3][p] == 0 && rgba[1][p] == 1, "out of range %u", p);
+}
+
+int main(void)
+{
+   wrap_exact_dfx24();
+   printf("address sweep, 8 wraps x 2 filters x 8 sizes x 2000 coordinates in [-2^20, 2^20]:\n");
+   wrap_sweep("dfx24", true, 2000);
+   wrap_sweep("float", true, 2000);
+   wrap_sweep("fx16.16", false, 2000);
+   wrap_sweep("fx8.24", false, 2000);
+   wrap_sweep("fx24.8", false, 2000);
+   weight_bits("dfx24");
+   weight_bits("float");
+   sample_2d();
+   lod_select();
+   mip_levels();
+   cube_faces();
+   shadow();
+   border_colour();
+   formats();
+   texel_fetch_and_swizzle();
+   printf("  range events counted: sat %llu flush %llu\n", (unsigned long long)st.sat,
+          (unsigned long long)st.flush);
+   return t_summary("tex");
+}
