@@ -170,8 +170,8 @@ spec@!opengl 1.1@polygon-offset
 spec@!opengl 1.0@gl-1.0-polygon-line-aa
 spec@!opengl 1.0@gl-1.0-front-invalidate-back
 spec@!opengl 1.1@polygon-mode
-spec@!opengl 1.1@polygon-mode-offset
-spec@!opengl 1.1@polygon-mode-facing
+spec@!opengl 1.4@triangle-rasterization-fbo
+spec@!opengl 1.4@gl-1.4-polygon-offset
 spec@!opengl 1.1@line-flat-clip-color
 spec@!opengl 1.1@linestipple
 spec@!opengl 2.0@gl-2.0-edgeflag
@@ -191,7 +191,8 @@ spec@!opengl 1.1@readpix-z
 spec@!opengl 2.0@early-z
 spec@!opengl 1.1@depthstencil-default_fb-clear
 spec@ext_packed_depth_stencil@fbo-clear-formats
-spec@arb_depth_clamp@depth-clamp-range
+spec@glsl-1.10@execution@interpolation@interpolation-none-gl_frontcolor-flat-fixed
+spec@glsl-1.10@execution@interpolation@interpolation-none-gl_frontcolor-smooth-none
 spec@ext_frag_depth@fragdepth_gles2
 shaders@glsl-fs-fragcoord
 
@@ -205,6 +206,7 @@ spec@ext_packed_depth_stencil@fbo-stencil-gl_depth24_stencil8-clear
 spec@!opengl 1.4@blendminmax
 spec@!opengl 1.4@blendsquare
 spec@ext_framebuffer_object@fbo-drawbuffers-blend-add
+spec@ext_framebuffer_object@fbo-blending-formats
 spec@!opengl 1.0@gl-1.0-blend-func
 spec@arb_draw_buffers_blend@fbo-draw-buffers-blend
 
@@ -219,8 +221,6 @@ spec@!opengl 1.1@clear-accum
 
 # read-back
 spec@!opengl 1.0@gl-1.0-readpixsanity
-spec@!opengl 1.1@read-front
-spec@!opengl 1.0@gl-1.0-swapbuffers-behavior
 
 # textures
 spec@!opengl 1.0@gl-1.0-textured-triangle
@@ -254,6 +254,8 @@ spec@!opengl 1.0@gl-1.0-long-line-loop
 spec@!opengl 1.1@line-aa-width
 spec@arb_point_sprite@arb_point_sprite-checkerboard
 spec@arb_point_sprite@arb_point_sprite-mipmap
+spec@arb_point_parameters@arb_point_parameters-point-attenuation
+spec@!opengl 2.0@vs-point_size-zero
 shaders@glsl-vs-point-size
 
 # GLSL 1.10/1.20 basics

@@ -35,6 +35,16 @@ static ns_val d_from_float(const struct numsys *ns, float v, struct ns_stats *st
    return r;
 }
 
+static ns_val d_from_scaled(const struct numsys *ns, int64_t n, unsigned k, struct ns_stats *st)
+{
+   struct dfx_stats d = { 0, 0 };
+   struct fx_format f = { 0, (uint8_t)k };
+   ns_val r;
+   r.d = dfx_from_fixed(ns->dfx, f, n, &d);
+   dfx_count(st, d);
+   return r;
+}
+
 static float d_to_float(const struct numsys *ns, ns_val a)
 {
    return (float)dfx_to_double(ns->dfx, a.d);
@@ -94,6 +104,18 @@ static ns_val x_from_float(const struct numsys *ns, float v, struct ns_stats *st
    r.x = fx_from_double(ns->fx, v, &s);
    fx_count(st, s);
    if (!r.x && v != 0 && !isnan(v))
+      st->flush++;
+   return r;
+}
+
+static ns_val x_from_scaled(const struct numsys *ns, int64_t n, unsigned k, struct ns_stats *st)
+{
+   struct fx_sat s = { 0, 0 };
+   struct fx_format f = { 0, (uint8_t)k };
+   ns_val r;
+   r.x = fx_convert(ns->fx, f, n, &s);
+   fx_count(st, s);
+   if (!r.x && n)
       st->flush++;
    return r;
 }
@@ -175,6 +197,16 @@ static ns_val f_from_float(const struct numsys *ns, float v, struct ns_stats *st
    return r;
 }
 
+/* (float)n is correctly rounded; the power of two is exact unless the
+ * result leaves the normal range. */
+static ns_val f_from_scaled(const struct numsys *ns, int64_t n, unsigned k, struct ns_stats *st)
+{
+   (void)ns;
+   ns_val r;
+   r.f = f_count(ldexpf((float)n, -(int)k), st);
+   return r;
+}
+
 static float f_to_float(const struct numsys *ns, ns_val a)
 {
    (void)ns;
@@ -243,13 +275,15 @@ static int64_t f_floor_frac(const struct numsys *ns, ns_val a, uint32_t *frac,
 
 #define NS_DFX(nm, w)                                                          \
    { .name = nm, .summary = "seed 003 dynamic fixed point, 1+4+" #w " bits",  \
-     .dfx = { w }, .from_float = d_from_float, .to_float = d_to_float,        \
+     .dfx = { w }, .from_float = d_from_float, .from_scaled = d_from_scaled,  \
+     .to_float = d_to_float,                                                  \
      .add = d_add, .sub = d_sub, .mul = d_mul, .recip = d_recip,              \
      .floor_frac = d_floor_frac }
 
 #define NS_FX(nm, m, n, sum)                                                   \
    { .name = nm, .summary = sum, .fx = { m, n },                              \
-     .from_float = x_from_float, .to_float = x_to_float, .add = x_add,        \
+     .from_float = x_from_float, .from_scaled = x_from_scaled,                \
+     .to_float = x_to_float, .add = x_add,                                    \
      .sub = x_sub, .mul = x_mul, .recip = x_recip, .floor_frac = x_floor_frac }
 
 static const struct numsys ns_main[] = {
@@ -258,7 +292,8 @@ static const struct numsys ns_main[] = {
    NS_FX("fx8.24", 8, 24, "8.24 fixed point (seed 003: distorts under perspective)"),
    NS_FX("fx24.8", 24, 8, "24.8 fixed point"),
    { .name = "float", .summary = "IEEE binary32",
-     .from_float = f_from_float, .to_float = f_to_float, .add = f_add, .sub = f_sub,
+     .from_float = f_from_float, .from_scaled = f_from_scaled, .to_float = f_to_float,
+     .add = f_add, .sub = f_sub,
      .mul = f_mul, .recip = f_recip, .floor_frac = f_floor_frac },
 };
 

@@ -35,6 +35,10 @@ struct numsys {
    struct fx_format fx;               /* for fixed */
 
    ns_val (*from_float)(const struct numsys *ns, float v, struct ns_stats *st);
+   /* n * 2^-k for an exact integer n (k < 64), rounded as from_float: how
+    * the rasterizer's exact integers (edge functions, the doubled area)
+    * enter the system. */
+   ns_val (*from_scaled)(const struct numsys *ns, int64_t n, unsigned k, struct ns_stats *st);
    float  (*to_float)(const struct numsys *ns, ns_val a);
    ns_val (*add)(const struct numsys *ns, ns_val a, ns_val b, struct ns_stats *st);
    ns_val (*sub)(const struct numsys *ns, ns_val a, ns_val b, struct ns_stats *st);

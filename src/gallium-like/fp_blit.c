@@ -63,28 +63,66 @@ static void fp_blit_fetch(const struct fp_blit_image *im, int x, int y, int z, f
       util_format_unpack_rgba(im->format, rgba, p, 1);
 }
 
-static void fp_blit_color(const struct fp_blit_image *src, const struct fp_blit_image *dst,
-                          const struct pipe_blit_info *info, float sx, float sy, int sz,
-                          int dx, int dy, int dz)
+static float fp_blit_fetch_z(const struct fp_blit_image *im, int x, int y, int z)
 {
-   float c[4];
-   if (info->filter == PIPE_TEX_FILTER_LINEAR && src->fetch) {
-      float u = sx - 0.5f, v = sy - 0.5f;
-      int x0 = (int)floorf(u), y0 = (int)floorf(v);
-      float fu = u - x0, fv = v - y0;
+   x = CLAMP(x, 0, (int)im->width - 1);
+   y = CLAMP(y, 0, (int)im->height - 1);
+   z = CLAMP(z, 0, (int)im->depth - 1);
+   float d;
+   util_format_unpack_z_float(im->format, &d, fp_blit_texel_ptr(im, x, y, z), 1);
+   return d;
+}
+
+/*
+ * Bilinear at (sx, sy), and trilinear through the slices of a 3D source, as
+ * util_blitter's linear sampler does: mipmap generation of a 3D texture must
+ * average pairs of slices, not pick one (piglit fbo-generatemipmap-3d).
+ * Layers of arrays and cube faces are never filtered across.  depth_only
+ * filters the Z value of a depth format instead of colour.
+ */
+static void fp_blit_linear(const struct fp_blit_image *src, float sx, float sy, float sz,
+                           bool depth_only, float c[4])
+{
+   float u = sx - 0.5f, v = sy - 0.5f;
+   int x0 = (int)floorf(u), y0 = (int)floorf(v), z0 = (int)floorf(sz);
+   float fu = u - x0, fv = v - y0, fw = 0.0f;
+   unsigned slices = 1;
+   if (src->res->target == PIPE_TEXTURE_3D) {
+      float w = sz - 0.5f;
+      z0 = (int)floorf(w);
+      fw = w - z0;
+      slices = 2;
+   }
+   float s[2][4];
+   for (unsigned k = 0; k < slices; k++) {
       float t[4][4];
-      fp_blit_fetch(src, x0, y0, sz, t[0]);
-      fp_blit_fetch(src, x0 + 1, y0, sz, t[1]);
-      fp_blit_fetch(src, x0, y0 + 1, sz, t[2]);
-      fp_blit_fetch(src, x0 + 1, y0 + 1, sz, t[3]);
+      for (unsigned i = 0; i < 4; i++) {
+         int x = x0 + (int)(i & 1), y = y0 + (int)(i >> 1);
+         if (depth_only)
+            t[i][0] = t[i][1] = t[i][2] = t[i][3] = fp_blit_fetch_z(src, x, y, z0 + (int)k);
+         else
+            fp_blit_fetch(src, x, y, z0 + (int)k, t[i]);
+      }
       for (unsigned ch = 0; ch < 4; ch++) {
          float a = t[0][ch] + fu * (t[1][ch] - t[0][ch]);
          float b = t[2][ch] + fu * (t[3][ch] - t[2][ch]);
-         c[ch] = a + fv * (b - a);
+         s[k][ch] = a + fv * (b - a);
       }
-   } else {
-      fp_blit_fetch(src, (int)floorf(sx), (int)floorf(sy), sz, c);
    }
+   for (unsigned ch = 0; ch < 4; ch++)
+      c[ch] = slices == 1 ? s[0][ch] : s[0][ch] + fw * (s[1][ch] - s[0][ch]);
+}
+
+/* sz: the source's z coordinate in slices (centre of slice k is k + 0.5). */
+static void fp_blit_color(const struct fp_blit_image *src, const struct fp_blit_image *dst,
+                          const struct pipe_blit_info *info, float sx, float sy, float sz,
+                          int dx, int dy, int dz)
+{
+   float c[4];
+   if (info->filter == PIPE_TEX_FILTER_LINEAR && src->fetch)
+      fp_blit_linear(src, sx, sy, sz, false, c);
+   else
+      fp_blit_fetch(src, (int)floorf(sx), (int)floorf(sy), (int)floorf(sz), c);
 
    uint8_t *p = fp_blit_texel_ptr(dst, dx, dy, dz);
    unsigned mask = info->mask & PIPE_MASK_RGBA;
@@ -102,19 +140,32 @@ static void fp_blit_color(const struct fp_blit_image *src, const struct fp_blit_
    util_format_pack_rgba(dst->format, p, c, 1);
 }
 
+/*
+ * LINEAR filters depth as util_blitter does for a scaled blit of a source
+ * without stencil (mipmap generation of depth textures averages 2x2, piglit
+ * fbo-generatemipmap-formats GL_ARB_depth_texture); stencil is never filtered.
+ */
 static void fp_blit_zs(const struct fp_blit_image *src, const struct fp_blit_image *dst,
-                       unsigned mask, int sx, int sy, int sz, int dx, int dy, int dz)
+                       const struct pipe_blit_info *info, float sx, float sy, float sz,
+                       int dx, int dy, int dz)
 {
-   sx = CLAMP(sx, 0, (int)src->width - 1);
-   sy = CLAMP(sy, 0, (int)src->height - 1);
-   sz = CLAMP(sz, 0, (int)src->depth - 1);
-   const uint8_t *s = fp_blit_texel_ptr(src, sx, sy, sz);
+   int ix = CLAMP((int)floorf(sx), 0, (int)src->width - 1);
+   int iy = CLAMP((int)floorf(sy), 0, (int)src->height - 1);
+   int iz = CLAMP((int)floorf(sz), 0, (int)src->depth - 1);
+   const uint8_t *s = fp_blit_texel_ptr(src, ix, iy, iz);
    uint8_t *d = fp_blit_texel_ptr(dst, dx, dy, dz);
+   unsigned mask = info->mask;
    /* util's Z and S packers keep the other component of combined formats. */
    if ((mask & PIPE_MASK_Z) && util_format_has_depth(src->desc) &&
        util_format_has_depth(dst->desc)) {
       float z;
-      util_format_unpack_z_float(src->format, &z, s, 1);
+      if (info->filter == PIPE_TEX_FILTER_LINEAR && !util_format_has_stencil(src->desc)) {
+         float c[4];
+         fp_blit_linear(src, sx, sy, sz, true, c);
+         z = c[0];
+      } else {
+         util_format_unpack_z_float(src->format, &z, s, 1);
+      }
       util_format_pack_z_float(dst->format, d, &z, 1);
    }
    if ((mask & PIPE_MASK_S) && util_format_has_stencil(src->desc) &&
@@ -187,14 +238,13 @@ static void fp_blit(struct pipe_context *pipe, const struct pipe_blit_info *info
    for (int z = db->z; z < db->z + db->depth; z++) {
       if (z < 0 || z >= (int)dst.depth)
          continue;
-      int sz = sb->z + (int)floorf((z - db->z + 0.5f) * scale_z);
+      float sz = sb->z + (z - db->z + 0.5f) * scale_z;
       for (int y = y0; y < y1; y++) {
          float sy = sb->y + (y - db->y + 0.5f) * scale_y;
          for (int x = x0; x < x1; x++) {
             float sx = sb->x + (x - db->x + 0.5f) * scale_x;
             if (zs)
-               fp_blit_zs(&src, &dst, info->mask, (int)floorf(sx), (int)floorf(sy), sz,
-                          x, y, z);
+               fp_blit_zs(&src, &dst, info, sx, sy, sz, x, y, z);
             else if (info->mask & PIPE_MASK_RGBA)
                fp_blit_color(&src, &dst, info, sx, sy, sz, x, y, z);
          }

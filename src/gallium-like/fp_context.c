@@ -86,6 +86,13 @@ static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
    (void)pipe; (void)flags;
 }
 
+/* EGLImage export (dri2_create_from_texture) calls this unconditionally; the
+ * model keeps nothing cached outside the resource, so there is nothing to do. */
+static void fp_flush_resource(struct pipe_context *pipe, struct pipe_resource *resource)
+{
+   (void)pipe; (void)resource;
+}
+
 static void fp_set_debug_callback(struct pipe_context *pipe,
                                   const struct util_debug_callback *cb)
 {
@@ -111,6 +118,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->pipe.texture_barrier = fp_texture_barrier;
    fp->pipe.memory_barrier = fp_memory_barrier;
    fp->pipe.set_debug_callback = fp_set_debug_callback;
+   fp->pipe.flush_resource = fp_flush_resource;
    fp->sample_mask = ~0u;
    fp->fs_dirty = true;
    fp->print_stats = fp_env_stats();

@@ -7,9 +7,10 @@
  * (left-edge register + Δ/Δy per scan line, then ∂/∂x per pixel):
  *   fix[]: fixed point, saturating.  fix[0] is Z (profile Z format); the
  *          rest are colour components (profile colour format, units 1/255).
- *   flt[]: float.  flt[0] is 1/w (gl_FragCoord.w, and the perspective
- *          divisor); then the LINEAR components; then the PERSPECTIVE ones,
- *          held as A/w.
+ *   flt[]: float.  flt[0] is 1/w (gl_FragCoord.w); then the LINEAR
+ *          components; then the PERSPECTIVE ones, held as A/w.  The
+ *          perspective division does not use the walked 1/w and A/w: it
+ *          evaluates each pixel from the vertex values (fr_tex, interp.c).
  */
 #ifndef FIXPIPE_FRONT_H
 #define FIXPIPE_FRONT_H
@@ -74,24 +75,47 @@ struct fr_row {
 struct rast_front;
 typedef void (*fr_pair_func)(struct rast_context *rc, struct rast_front *fr, int64_t y);
 
-/* The texture path's perspective registers (interp.c): 1/w and the A/w of
- * the PERSPECTIVE components in the number system of rast_set_texfmt,
- * loaded from the float walk at each quad row's first quad, then stepped by
- * adds in that system; the division is (A/w) * recip(1/w) in it.  The
- * functions are chosen per number system at validation. */
-typedef void (*fr_tex_begin_func)(struct rast_front *fr, const float *row0, const float *row1);
+/* The texture path's perspective division (interp.c): the vector method of
+ * seed 002, in the number system of rast_set_texfmt.  Per primitive, the
+ * vertex values 1/w and A/w in the system with their differences
+ * Δ1 = v1 - v0, Δ2 = v2 - v0, and the reciprocal of the doubled area; per
+ * pixel, the edge-vector coefficients a, b from exact integer edge
+ * functions, then v0 + a·Δ1 + b·Δ2 and (A/w) · recip(1/w).  Nothing rounded
+ * is carried from one pixel to the next.  The functions are chosen per
+ * number system at validation. */
+typedef void (*fr_tex_begin_func)(struct rast_front *fr, int64_t x, int64_t y);
 typedef void (*fr_tex_quad_func)(struct rast_front *fr, struct rast_quad *q, bool divide);
+
+/* One plane in the system: its value at V0 and the differences to V1, V2. */
+struct fr_plane {
+   ns_val v0, d1, d2;
+};
 
 struct fr_tex {
    const struct numsys *ns;
+   const struct numsys *fns;            /* binary32, for COLOR components */
    fr_tex_begin_func begin;
    fr_tex_quad_func quad;
-   ns_val ow[2], ow_dx;                 /* 1/w of both scan lines, ∂/∂x */
-   ns_val aw[2][FR_MAX_COMP], aw_dx[FR_MAX_COMP];
+   /* ---- per primitive ---- */
+   int64_t x0, y0;                      /* V0, XY format */
+   int64_t e1x, e1y, e2x, e2y;          /* V1 - V0, V2 - V0 */
+   int64_t a_dx, a_dy, b_dx, b_dy;      /* exact steps of a's, b's numerator per pixel */
+   /* det·2^-k lies in [1/2, 1): numerators and det enter the system with the
+    * same exact scale, so a fixed format holds a, b in [0, 1] whatever the
+    * triangle's size */
+   unsigned k;
+   struct fx_format kfmt;               /* { 0, k }: the numerators as fixed point */
+   float fscale;                        /* 2^-k */
+   ns_val rdet;                         /* recip(det·2^-k) */
+   float frdet;                         /* the same in binary32, for COLOR */
+   struct fr_plane pl[1 + FR_MAX_COMP]; /* 0: 1/w; 1 + j: PERSPECTIVE component j */
+   struct fr_plane fow;                 /* 1/w in binary32, for COLOR */
+   /* ---- per quad row: a's and b's numerators at the current quad's left
+    *      pixel centres, both scan lines (exact integers, stepped) ---- */
+   int64_t an[2], bn[2];
    /* COLOR components (wide profile: perspective colour) are not texture
-    * coordinates: they keep binary32, with their own float 1/w. */
+    * coordinates: they keep binary32 (their planes hold floats). */
    bool any_color, is_color[FR_MAX_COMP];
-   float fow[2], fow_dx;
    struct ns_stats st;                  /* moved to rast_stats per quad row */
    struct dfx_stats dst;
 };
@@ -191,5 +215,10 @@ void rast_scan_convex(struct rast_context *rc, struct rast_front *fr);
 fr_pair_func rast_interp_choose(const struct rast_front *fr);
 /* interp.c: the perspective division's functions for rc->texfmt */
 void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *fr);
+/* interp.c: the perspective division's per-primitive set-up, with vertices
+ * i0, i1, i2 of fr->X/Y and fr->vflt as V0, V1, V2 (a line: two corners along
+ * it and one across, where every attribute is constant, so Δ2 = 0). */
+void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
+                                   unsigned i0, unsigned i1, unsigned i2);
 
 #endif

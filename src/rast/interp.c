@@ -14,42 +14,69 @@
 #include <math.h>
 #include <string.h>
 #include "rast/front.h"
+#include "fixed/dfx_ops.h"
 
-/* ---- The perspective division of the texture path (seed 003) ----
+/* ---- The perspective division of the texture path (seeds 002, 003) ----
  *
- * The one place where A/w is divided by 1/w: as (A/w) * recip(1/w) in the
- * number system of rast_set_texfmt, once per pixel for the reciprocal and
- * once per component for the multiply.  The registers 1/w and A/w enter the
- * system at the first quad of each quad row (from the float edge walk) and
- * are stepped by ∂/∂x with the system's own adds, so a format that cannot
- * hold a small step or a far-away 1/w shows it on the screen (seed 003:
- * 8.24 underflows, the dynamic format does not).  Range events go to
- * rast_stats.tex_sat / tex_flush.
+ * The one place where texture coordinates are divided: the vector method
+ * of seed 002 in the number system of rast_set_texfmt (seed 003).  Per
+ * primitive (rast_interp_perspective_setup): det, the doubled area of
+ * V0 V1 V2 from the fixed-point vertices (an exact integer), recip(det) in
+ * the system, and for 1/w and each A/w the value at V0 and the differences
+ * Δ1 = v1 - v0, Δ2 = v2 - v0, all in the system.  Per pixel centre p:
  *
- * One body, specialised three ways at validation: binary32 inline (the same
- * float operations, in the same order, as the float walk had), dfx through
- * dfx.c directly, and any other system through its numsys table. */
-enum tex_kind { TEX_FLOAT, TEX_DFX, TEX_NS };
+ *    a = ((p - V0) x (V2 - V0)) / det,   b = ((V1 - V0) x (p - V0)) / det
+ *
+ * (Cramer's rule: Vp = V0 + a·(V1 - V0) + b·(V2 - V0)), whose numerators
+ * are exact integers stepped per pixel; each enters the system and is
+ * multiplied by recip(det); then v = v0 + a·Δ1 + b·Δ2 for 1/w and every
+ * A/w, and A = (A/w) · recip(1/w), one reciprocal per pixel.  Each pixel
+ * rounds a fixed number of operations (no error grows along a span), and a
+ * helper gets the plane's value at its own centre.  A format that cannot
+ * hold a coordinate, its 1/w or their reciprocal shows it on the screen
+ * (seed 003: 8.24 saturates w > 128); range events go to rast_stats.tex_sat
+ * and tex_flush.
+ *
+ * One body, specialised at validation: binary32 inline on float vectors,
+ * dfx through dfx_ops.h inline (the seed's W = 19 as a constant, other
+ * widths at run time), any other system through its numsys table. */
+enum tex_kind { TEX_FLOAT, TEX_DFX19, TEX_DFX, TEX_NS };
+
+static inline __attribute__((always_inline)) bool tex_is_dfx(const enum tex_kind k)
+{
+   return k == TEX_DFX19 || k == TEX_DFX;
+}
+
+static inline __attribute__((always_inline)) struct dfx_format
+tex_df(const struct fr_tex *t, const enum tex_kind k)
+{
+   if (k == TEX_DFX19) {
+      struct dfx_format f = { DFX_MANT_BITS_SEED };
+      return f;
+   }
+   return t->ns->dfx;
+}
 
 static inline __attribute__((always_inline)) float tex_fcount(struct ns_stats *ls, float r)
 {
-   /* branch-free: the float path stays as cheap as the plain walk */
+   /* branch-free: the float path stays cheap */
    float a = fabsf(r);
    ls->sat += a > FLT_MAX;
    ls->flush += (a < FLT_MIN) & (a != 0);
    return r;
 }
 
+/* An exact numerator n of a or b: n·2^-k in the system. */
 static inline __attribute__((always_inline)) ns_val
-tex_from(struct fr_tex *t, const enum tex_kind k, float v)
+tex_scaled(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k, int64_t n)
 {
    ns_val r;
    if (k == TEX_FLOAT)
-      r.f = v;
-   else if (k == TEX_DFX)
-      r.d = dfx_from_double(t->ns->dfx, v, &t->dst);
+      r.f = (float)n * t->fscale;        /* the power of two is exact */
+   else if (tex_is_dfx(k))
+      r.d = dfx_from_fixed_i(tex_df(t, k), t->kfmt, n, &t->dst);
    else
-      r = t->ns->from_float(t->ns, v, &t->st);
+      r = t->ns->from_scaled(t->ns, n, t->k, ls);
    return r;
 }
 
@@ -59,10 +86,25 @@ tex_add(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k, ns_val a, 
    ns_val r;
    if (k == TEX_FLOAT)
       r.f = tex_fcount(ls, a.f + b.f);
-   else if (k == TEX_DFX)
-      r.d = dfx_add(t->ns->dfx, a.d, b.d, &t->dst);
+   else if (tex_is_dfx(k))
+      r.d = dfx_add_i(tex_df(t, k), a.d, b.d, &t->dst);
    else
       r = t->ns->add(t->ns, a, b, ls);
+   return r;
+}
+
+static inline __attribute__((always_inline)) ns_val
+tex_mul(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k, ns_val a, ns_val b)
+{
+   ns_val r;
+   if (k == TEX_FLOAT) {
+      r.f = tex_fcount(ls, a.f * b.f);
+      ls->flush += (r.f == 0) & (a.f != 0) & (b.f != 0);
+   } else if (tex_is_dfx(k)) {
+      r.d = dfx_mul_i(tex_df(t, k), a.d, b.d, &t->dst);
+   } else {
+      r = t->ns->mul(t->ns, a, b, ls);
+   }
    return r;
 }
 
@@ -72,159 +114,230 @@ tex_recip(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k, ns_val a
    ns_val r;
    if (k == TEX_FLOAT)
       r.f = tex_fcount(ls, 1.0f / a.f);
-   else if (k == TEX_DFX)
-      r.d = dfx_recip(t->ns->dfx, a.d, &t->dst);
+   else if (tex_is_dfx(k))
+      r.d = dfx_recip_i(tex_df(t, k), a.d, &t->dst);
    else
       r = t->ns->recip(t->ns, a, ls);
    return r;
 }
 
 static inline __attribute__((always_inline)) float
-tex_mul_out(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k, ns_val a, ns_val b)
+tex_out(struct fr_tex *t, const enum tex_kind k, ns_val a)
 {
-   if (k == TEX_FLOAT) {
-      float r = tex_fcount(ls, a.f * b.f);
-      ls->flush += (r == 0) & (a.f != 0) & (b.f != 0);
-      return r;
-   }
-   if (k == TEX_DFX)
-      return (float)dfx_to_double(t->ns->dfx, dfx_mul(t->ns->dfx, a.d, b.d, &t->dst));
-   return t->ns->to_float(t->ns, t->ns->mul(t->ns, a, b, ls));
+   if (k == TEX_FLOAT)
+      return a.f;
+   if (tex_is_dfx(k))
+      return (float)dfx_to_double_i(tex_df(t, k), a.d);
+   return t->ns->to_float(t->ns, a);
 }
 
-static inline __attribute__((always_inline)) void
-tex_begin_impl(struct rast_front *fr, const float *row0, const float *row1, const enum tex_kind k)
+/* v0 + a·Δ1 + b·Δ2 */
+static inline __attribute__((always_inline)) ns_val
+tex_plane(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k,
+          const struct fr_plane *p, ns_val a, ns_val b)
+{
+   ns_val s = tex_add(t, ls, k, p->v0, tex_mul(t, ls, k, a, p->d1));
+   return tex_add(t, ls, k, s, tex_mul(t, ls, k, b, p->d2));
+}
+
+static ns_val plane_vertex(const struct numsys *ns, float v, struct ns_stats *st)
+{
+   return ns->from_float(ns, v, st);
+}
+
+static void plane_set(struct fr_plane *p, const struct numsys *ns, float v0, float v1,
+                      float v2, struct ns_stats *st)
+{
+   ns_val a = plane_vertex(ns, v0, st), b = plane_vertex(ns, v1, st),
+          c = plane_vertex(ns, v2, st);
+   p->v0 = a;
+   p->d1 = ns->sub(ns, b, a, st);
+   p->d2 = ns->sub(ns, c, a, st);
+}
+
+static inline unsigned bitlen64(uint64_t v)
+{
+   return v ? 64 - (unsigned)__builtin_clzll(v) : 0;
+}
+
+void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
+                                   unsigned i0, unsigned i1, unsigned i2)
 {
    struct fr_tex *t = &fr->tex;
-   const unsigned p0 = 1 + fr->nlin;       /* flt[]: 1/w, LINEAR, PERSPECTIVE */
-   t->ow[0] = tex_from(t, k, row0[0]);
-   t->ow[1] = tex_from(t, k, row1[0]);
-   t->ow_dx = tex_from(t, k, fr->flt_dx[0]);
-   t->fow[0] = row0[0];
-   t->fow[1] = row1[0];
-   t->fow_dx = fr->flt_dx[0];
-   for (unsigned j = 0; j < fr->npersp; j++) {
-      if (k != TEX_FLOAT && t->is_color[j]) {
-         t->aw[0][j] = tex_from(t, TEX_FLOAT, row0[p0 + j]);
-         t->aw[1][j] = tex_from(t, TEX_FLOAT, row1[p0 + j]);
-         t->aw_dx[j] = tex_from(t, TEX_FLOAT, fr->flt_dx[p0 + j]);
-         continue;
-      }
-      t->aw[0][j] = tex_from(t, k, row0[p0 + j]);
-      t->aw[1][j] = tex_from(t, k, row1[p0 + j]);
-      t->aw_dx[j] = tex_from(t, k, fr->flt_dx[p0 + j]);
+   const struct numsys *ns = t->ns;
+   struct ns_stats st = { 0, 0 };
+   const int64_t S = fr->S;
+   t->x0 = fr->X[i0];
+   t->y0 = fr->Y[i0];
+   t->e1x = fr->X[i1] - t->x0;
+   t->e1y = fr->Y[i1] - t->y0;
+   t->e2x = fr->X[i2] - t->x0;
+   t->e2y = fr->Y[i2] - t->y0;
+   /* |e| < 2^29 (the XY formats have at most 28 bits with the sign), so
+    * det and every numerator below fit in 64 bits */
+   int64_t det = t->e1x * t->e2y - t->e1y * t->e2x;
+   t->a_dx = t->e2y * S;
+   t->a_dy = -t->e2x * S;
+   t->b_dx = -t->e1y * S;
+   t->b_dy = t->e1x * S;
+   t->k = bitlen64(det < 0 ? -(uint64_t)det : (uint64_t)det);
+   t->kfmt = (struct fx_format){ 0, (uint8_t)t->k };
+   t->fscale = ldexpf(1.0f, -(int)t->k);
+   if (det) {
+      t->rdet = ns->recip(ns, ns->from_scaled(ns, det, t->k, &st), &st);
+      t->frdet = 1.0f / ((float)det * t->fscale);
+   } else {
+      /* a line snapped to a point: every pixel takes V0's values */
+      t->rdet = ns->from_float(ns, 0.0f, &st);
+      t->frdet = 0.0f;
+   }
+   const float *v0 = fr->vflt[i0], *v1 = fr->vflt[i1], *v2 = fr->vflt[i2];
+   plane_set(&t->pl[0], ns, v0[0], v1[0], v2[0], &st);
+   if (t->any_color)
+      plane_set(&t->fow, t->fns, v0[0], v1[0], v2[0], &st);
+   const unsigned p0 = 1 + fr->nlin;       /* vflt[]: 1/w, LINEAR, PERSPECTIVE */
+   for (unsigned j = 0; j < fr->npersp; j++)
+      plane_set(&t->pl[1 + j], t->is_color[j] ? t->fns : ns, v0[p0 + j], v1[p0 + j],
+                v2[p0 + j], &st);
+   rc->stats.tex_sat += st.sat;
+   rc->stats.tex_flush += st.flush;
+}
+
+/* The numerators at the centres of pixel x of scan lines y and y + 1. */
+static void tex_begin(struct rast_front *fr, int64_t x, int64_t y)
+{
+   struct fr_tex *t = &fr->tex;
+   int64_t px = x * fr->S + fr->H - t->x0, py = y * fr->S + fr->H - t->y0;
+   t->an[0] = px * t->e2y - py * t->e2x;
+   t->bn[0] = t->e1x * py - t->e1y * px;
+   t->an[1] = t->an[0] + t->a_dy;
+   t->bn[1] = t->bn[0] + t->b_dy;
+}
+
+/* The quad's numerators (pixels x, x+1 of both scan lines), and the
+ * registers moved on to the next quad. */
+static inline __attribute__((always_inline)) void
+tex_numerators(struct fr_tex *t, int64_t an[RAST_QUAD_SIZE], int64_t bn[RAST_QUAD_SIZE])
+{
+   for (unsigned r = 0; r < 2; r++) {
+      an[2 * r] = t->an[r];
+      an[2 * r + 1] = t->an[r] + t->a_dx;
+      bn[2 * r] = t->bn[r];
+      bn[2 * r + 1] = t->bn[r] + t->b_dx;
+      t->an[r] += 2 * t->a_dx;
+      t->bn[r] += 2 * t->b_dx;
    }
 }
 
-/* Pixels x, x+1 of both scan lines from the running registers. */
-static inline __attribute__((always_inline)) void
-tex_step(struct fr_tex *t, struct ns_stats *ls, const enum tex_kind k, ns_val *run0,
-         ns_val *run1, ns_val d, ns_val v[RAST_QUAD_SIZE])
+/* COLOR components of a non-float system: the same form in binary32. */
+static void tex_color_weights(struct fr_tex *t, struct ns_stats *ls,
+                              const int64_t an[RAST_QUAD_SIZE], const int64_t bn[RAST_QUAD_SIZE],
+                              ns_val fa[RAST_QUAD_SIZE], ns_val fb[RAST_QUAD_SIZE],
+                              ns_val fw[RAST_QUAD_SIZE])
 {
-   v[0] = *run0;
-   v[1] = tex_add(t, ls, k, v[0], d);
-   *run0 = tex_add(t, ls, k, v[1], d);
-   v[2] = *run1;
-   v[3] = tex_add(t, ls, k, v[2], d);
-   *run1 = tex_add(t, ls, k, v[3], d);
+   ns_val r;
+   r.f = t->frdet;
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      fa[i] = tex_mul(t, ls, TEX_FLOAT, tex_scaled(t, ls, TEX_FLOAT, an[i]), r);
+      fb[i] = tex_mul(t, ls, TEX_FLOAT, tex_scaled(t, ls, TEX_FLOAT, bn[i]), r);
+      fw[i] = tex_recip(t, ls, TEX_FLOAT, tex_plane(t, ls, TEX_FLOAT, &t->fow, fa[i], fb[i]));
+   }
 }
 
 static inline __attribute__((always_inline)) void
 tex_quad_impl(struct rast_front *fr, struct rast_quad *q, bool divide, const enum tex_kind k)
 {
    struct fr_tex *t = &fr->tex;
-   struct ns_stats ls = { 0, 0 };    /* in registers for the float path */
-   ns_val ow[RAST_QUAD_SIZE], w[RAST_QUAD_SIZE];
-   tex_step(t, &ls, k, &t->ow[0], &t->ow[1], t->ow_dx, ow);
-   if (divide)
-      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-         w[i] = tex_recip(t, &ls, k, ow[i]);
-   ns_val fw[RAST_QUAD_SIZE];
-   if (k != TEX_FLOAT && t->any_color) {
-      ns_val fo[RAST_QUAD_SIZE], r0, r1, d;
-      r0.f = t->fow[0];
-      r1.f = t->fow[1];
-      d.f = t->fow_dx;
-      tex_step(t, &ls, TEX_FLOAT, &r0, &r1, d, fo);
-      t->fow[0] = r0.f;
-      t->fow[1] = r1.f;
-      if (divide)
-         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-            fw[i] = tex_recip(t, &ls, TEX_FLOAT, fo[i]);
+   int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
+   tex_numerators(t, an, bn);
+   if (!divide)
+      return;
+   struct ns_stats ls = { 0, 0 };
+   ns_val a[RAST_QUAD_SIZE], b[RAST_QUAD_SIZE], w[RAST_QUAD_SIZE];
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      a[i] = tex_mul(t, &ls, k, tex_scaled(t, &ls, k, an[i]), t->rdet);
+      b[i] = tex_mul(t, &ls, k, tex_scaled(t, &ls, k, bn[i]), t->rdet);
+      w[i] = tex_recip(t, &ls, k, tex_plane(t, &ls, k, &t->pl[0], a[i], b[i]));
    }
+   ns_val fa[RAST_QUAD_SIZE], fb[RAST_QUAD_SIZE], fw[RAST_QUAD_SIZE];
+   if (t->any_color)
+      tex_color_weights(t, &ls, an, bn, fa, fb, fw);
    for (unsigned j = 0; j < fr->npersp; j++) {
-      ns_val aw[RAST_QUAD_SIZE];
       float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
-      if (k != TEX_FLOAT && t->is_color[j]) {
-         tex_step(t, &ls, TEX_FLOAT, &t->aw[0][j], &t->aw[1][j], t->aw_dx[j], aw);
-         if (divide)
-            for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-               o[i] = tex_mul_out(t, &ls, TEX_FLOAT, aw[i], fw[i]);
+      const struct fr_plane *p = &t->pl[1 + j];
+      if (t->is_color[j]) {
+         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+            o[i] = tex_mul(t, &ls, TEX_FLOAT, tex_plane(t, &ls, TEX_FLOAT, p, fa[i], fb[i]),
+                           fw[i]).f;
          continue;
       }
-      tex_step(t, &ls, k, &t->aw[0][j], &t->aw[1][j], t->aw_dx[j], aw);
-      if (divide)
-         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-            o[i] = tex_mul_out(t, &ls, k, aw[i], w[i]);
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+         o[i] = tex_out(t, k, tex_mul(t, &ls, k, tex_plane(t, &ls, k, p, a[i], b[i]), w[i]));
    }
    t->st.sat += ls.sat;
    t->st.flush += ls.flush;
 }
 
-#define TEX_VARIANT(suffix, kind)                                                        \
-   static void tex_begin_##suffix(struct rast_front *fr, const float *r0, const float *r1) \
-   { tex_begin_impl(fr, r0, r1, kind); }                                                  \
-   static void tex_quad_##suffix(struct rast_front *fr, struct rast_quad *q, bool divide)  \
-   { tex_quad_impl(fr, q, divide, kind); }
-
-TEX_VARIANT(dfx, TEX_DFX)
-TEX_VARIANT(ns, TEX_NS)
-
-static void tex_begin_float(struct rast_front *fr, const float *r0, const float *r1)
+static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divide)
 {
-   tex_begin_impl(fr, r0, r1, TEX_FLOAT);
+   tex_quad_impl(fr, q, divide, TEX_DFX19);
 }
 
-/* binary32: tex_quad_impl's operations on float[4] vectors, so that the
- * compiler keeps them in SIMD registers (an ns_val array is strided); the
- * range events are counted branch-free over each vector. */
+static void tex_quad_dfx(struct rast_front *fr, struct rast_quad *q, bool divide)
+{
+   tex_quad_impl(fr, q, divide, TEX_DFX);
+}
+
+static void tex_quad_ns(struct rast_front *fr, struct rast_quad *q, bool divide)
+{
+   tex_quad_impl(fr, q, divide, TEX_NS);
+}
+
+/* binary32: tex_quad_impl's operations, in the same order, on float[4]
+ * vectors, so that the compiler keeps them in SIMD registers (an ns_val
+ * array is strided); the range events are counted branch-free over each
+ * vector. */
 static inline void tex_fcount4(struct ns_stats *ls, const float v[RAST_QUAD_SIZE])
 {
    for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
       tex_fcount(ls, v[i]);
 }
 
+static inline void tex_fplane4(const struct fr_plane *p, const float a[RAST_QUAD_SIZE],
+                               const float b[RAST_QUAD_SIZE], float v[RAST_QUAD_SIZE])
+{
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+      v[i] = (p->v0.f + a[i] * p->d1.f) + b[i] * p->d2.f;
+}
+
 static void tex_quad_float(struct rast_front *fr, struct rast_quad *q, bool divide)
 {
    struct fr_tex *t = &fr->tex;
+   int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
+   tex_numerators(t, an, bn);
+   if (!divide)
+      return;
    struct ns_stats ls = { 0, 0 };
-   float ow[RAST_QUAD_SIZE], w[RAST_QUAD_SIZE];
-   {
-      float d = t->ow_dx.f;
-      ow[0] = t->ow[0].f; ow[1] = ow[0] + d; ow[2] = t->ow[1].f; ow[3] = ow[2] + d;
-      t->ow[0].f = ow[1] + d;
-      t->ow[1].f = ow[3] + d;
-      tex_fcount4(&ls, ow);
+   float a[RAST_QUAD_SIZE], b[RAST_QUAD_SIZE], ow[RAST_QUAD_SIZE], w[RAST_QUAD_SIZE];
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      a[i] = (float)an[i] * t->fscale * t->rdet.f;
+      b[i] = (float)bn[i] * t->fscale * t->rdet.f;
    }
-   if (divide) {
-      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-         w[i] = 1.0f / ow[i];
-      tex_fcount4(&ls, w);
-   }
+   tex_fplane4(&t->pl[0], a, b, ow);
+   tex_fcount4(&ls, ow);
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+      w[i] = 1.0f / ow[i];
+   tex_fcount4(&ls, w);
    for (unsigned j = 0; j < fr->npersp; j++) {
-      float d = t->aw_dx[j].f, aw[RAST_QUAD_SIZE];
-      aw[0] = t->aw[0][j].f; aw[1] = aw[0] + d; aw[2] = t->aw[1][j].f; aw[3] = aw[2] + d;
-      t->aw[0][j].f = aw[1] + d;
-      t->aw[1][j].f = aw[3] + d;
+      float aw[RAST_QUAD_SIZE];
+      float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
+      tex_fplane4(&t->pl[1 + j], a, b, aw);
       tex_fcount4(&ls, aw);
-      if (divide) {
-         float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
-         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
-            o[i] = aw[i] * w[i];
-            ls.flush += (o[i] == 0) & (aw[i] != 0) & (w[i] != 0);
-         }
-         tex_fcount4(&ls, o);
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+         o[i] = aw[i] * w[i];
+         ls.flush += (o[i] == 0) & (aw[i] != 0);
       }
+      tex_fcount4(&ls, o);
    }
    t->st.sat += ls.sat;
    t->st.flush += ls.flush;
@@ -234,23 +347,26 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
 {
    const struct numsys *ns = rc->texfmt ? rc->texfmt : numsys_default();
    struct fr_tex *t = &fr->tex;
+   bool is_float = !strcmp(ns->name, "float");
    t->ns = ns;
+   t->fns = numsys_by_name("float");
    t->any_color = false;
    for (unsigned j = 0; j < fr->npersp; j++) {
       unsigned v = fr->persp[j].var;
-      t->is_color[j] = v < rc->vl.num_varyings && rc->vl.varying[v].interp == RAST_INTERP_COLOR;
+      /* in the float system a COLOR component is just another plane */
+      t->is_color[j] = !is_float && v < rc->vl.num_varyings &&
+                       rc->vl.varying[v].interp == RAST_INTERP_COLOR;
       t->any_color |= t->is_color[j];
    }
-   if (ns->dfx.mant_bits) {
-      t->begin = tex_begin_dfx;
+   t->begin = tex_begin;
+   if (ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
+      t->quad = tex_quad_dfx19;
+   else if (ns->dfx.mant_bits)
       t->quad = tex_quad_dfx;
-   } else if (!strcmp(ns->name, "float")) {
-      t->begin = tex_begin_float;
+   else if (is_float)
       t->quad = tex_quad_float;
-   } else {
-      t->begin = tex_begin_ns;
+   else
       t->quad = tex_quad_ns;
-   }
 }
 
 /* The quad row's range events into the context's counters. */
@@ -399,7 +515,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
    if (has_persp)
-      fr->tex.begin(fr, flt[0], flt[1]);
+      fr->tex.begin(fr, xq, y);
    q->y = (int)y;
 
    for (int64_t x = xq; x <= xe; x += 2) {

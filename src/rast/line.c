@@ -206,6 +206,10 @@ void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[
          fr->vflt[c][k] = (float)(a1 + g * (xmajor ? cx[c] : cy[c]));
    }
 
+   /* The perspective division's vector form on corners 0, 1 (along the
+    * line) and 3 (across it, where nothing varies: Δ2 = 0). */
+   if (fr->npersp)
+      rast_interp_perspective_setup(rc, fr, 0, 1, 3);
    fr->quad.front_facing = true;
    rast_setup_constants(fr, rc->rs.flatshade_first ? o1 : o2);
    rast_scan_convex(rc, fr);

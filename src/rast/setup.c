@@ -253,6 +253,8 @@ void rast_triangle(struct rast_context *rc, const float (*v0)[4],
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);
    tri_gradients(fr);
+   if (fr->npersp)
+      rast_interp_perspective_setup(rc, fr, 0, 1, 2);
    rast_setup_constants(fr, rc->rs.flatshade_first ? v0 : v2);
    tri_sections(fr);
    rast_scan_sections(rc, fr);

@@ -60,17 +60,26 @@ int32_t tex_lod_diffs(const struct tex_unit *u, ns_val c[TEX_QUAD][3], unsigned 
    return tex_lod_from_rho(u, rho);
 }
 
-int32_t tex_lod_derivs(const struct tex_unit *u, const float ddx[3], const float ddy[3],
-                       unsigned dims, const ns_val scale[3])
+int32_t tex_lod_grads(const struct tex_unit *u, const ns_val dx[3], const ns_val dy[3],
+                      unsigned dims, const ns_val scale[3])
 {
    ns_val rho = u->k_zero;
    for (unsigned a = 0; a < dims; a++) {
-      ns_val dx = tex_ns_coord(u->ns, u->kind, ddx[a], u->stats);
-      ns_val dy = tex_ns_coord(u->ns, u->kind, ddy[a], u->stats);
-      rho = tex_ns_max(u->kind, rho, scaled_abs(u, dx, scale[a]));
-      rho = tex_ns_max(u->kind, rho, scaled_abs(u, dy, scale[a]));
+      rho = tex_ns_max(u->kind, rho, scaled_abs(u, dx[a], scale[a]));
+      rho = tex_ns_max(u->kind, rho, scaled_abs(u, dy[a], scale[a]));
    }
    return tex_lod_from_rho(u, rho);
+}
+
+int32_t tex_lod_derivs(const struct tex_unit *u, const float ddx[3], const float ddy[3],
+                       unsigned dims, const ns_val scale[3])
+{
+   ns_val dx[3], dy[3];
+   for (unsigned a = 0; a < dims; a++) {
+      dx[a] = tex_ns_coord(u->ns, u->kind, ddx[a], u->stats);
+      dy[a] = tex_ns_coord(u->ns, u->kind, ddy[a], u->stats);
+   }
+   return tex_lod_grads(u, dx, dy, dims, scale);
 }
 
 /* GL's level choice on the LOD register (already biased and clamped):

@@ -21,6 +21,9 @@ tex_addr_fn tex_addr_choose(enum tex_wrap wrap, enum tex_filter filter);
 int32_t tex_lod_diffs(const struct tex_unit *u, ns_val c[TEX_QUAD][3], unsigned dims);
 int32_t tex_lod_derivs(const struct tex_unit *u, const float ddx[3], const float ddy[3],
                        unsigned dims, const ns_val scale[3]);
+/* The same on derivatives already in the number system. */
+int32_t tex_lod_grads(const struct tex_unit *u, const ns_val dx[3], const ns_val dy[3],
+                      unsigned dims, const ns_val scale[3]);
 
 /* tex_filter.c */
 tex_level_fn tex_level_choose(unsigned dims, enum tex_filter filter);

@@ -17,19 +17,27 @@ static inline ns_val neg(const struct tex_unit *u, ns_val a)
    return u->ns->sub(u->ns, u->k_zero, a, u->stats);
 }
 
-/* GL's table of cube face coordinates; s = (sc / |ma| + 1) / 2. */
+/* GL's table: the face's (sc, tc, ma) of a vector, signed.  Linear, so it
+ * maps a direction's derivatives as well as the direction. */
+static void cube_axes(const struct tex_unit *u, unsigned face, ns_val rx, ns_val ry, ns_val rz,
+                      ns_val *sc, ns_val *tc, ns_val *ma)
+{
+   switch (face) {
+   case 0: *ma = rx; *sc = neg(u, rz); *tc = neg(u, ry); break;
+   case 1: *ma = rx; *sc = rz; *tc = neg(u, ry); break;
+   case 2: *ma = ry; *sc = rx; *tc = rz; break;
+   case 3: *ma = ry; *sc = rx; *tc = neg(u, rz); break;
+   case 4: *ma = rz; *sc = rx; *tc = neg(u, ry); break;
+   default: *ma = rz; *sc = neg(u, rx); *tc = neg(u, ry); break;
+   }
+}
+
+/* s = (sc / |ma| + 1) / 2. */
 void tex_cube_on_face(const struct tex_unit *u, unsigned face, ns_val rx, ns_val ry, ns_val rz,
                       ns_val *s, ns_val *t)
 {
    ns_val sc, tc, ma;
-   switch (face) {
-   case 0: ma = rx; sc = neg(u, rz); tc = neg(u, ry); break;
-   case 1: ma = rx; sc = rz; tc = neg(u, ry); break;
-   case 2: ma = ry; sc = rx; tc = rz; break;
-   case 3: ma = ry; sc = rx; tc = neg(u, rz); break;
-   case 4: ma = rz; sc = rx; tc = neg(u, ry); break;
-   default: ma = rz; sc = neg(u, rx); tc = neg(u, ry); break;
-   }
+   cube_axes(u, face, rx, ry, rz, &sc, &tc, &ma);
    ma = tex_ns_abs(u->kind, ma);
    if (tex_ns_cmp(u->kind, ma, u->k_zero) == 0) {
       *s = *t = u->k_half;
@@ -39,6 +47,46 @@ void tex_cube_on_face(const struct tex_unit *u, unsigned face, ns_val rx, ns_val
    ns_val k = ns->mul(ns, ns->recip(ns, ma, u->stats), u->k_half, u->stats);
    *s = ns->add(ns, ns->mul(ns, sc, k, u->stats), u->k_half, u->stats);
    *t = ns->add(ns, ns->mul(ns, tc, k, u->stats), u->k_half, u->stats);
+}
+
+/* Cube LOD of one pixel: the direction's derivatives gx, gy projected onto
+ * the pixel's face by differentiating s = (sc/|ma| + 1)/2,
+ *
+ *   ds = (dsc - sc * d|ma| / |ma|) / (2 |ma|)      (dt likewise with tc)
+ *
+ * as llvmpipe does (lp_build_cube_lookup), then the 2D LOD on the face's
+ * size.  softpipe's "derivative times size/2" is this for |ma| = 1 and
+ * d|ma| = 0 only: a level off wherever the direction is not unit length or
+ * moves along the major axis.  A zero direction samples the face centre:
+ * no LOD. */
+static int32_t cube_lod_grads(const struct tex_unit *u, unsigned face, const ns_val dir[3],
+                              const ns_val gx[3], const ns_val gy[3])
+{
+   const struct numsys *ns = u->ns;
+   ns_val sc, tc, ma;
+   cube_axes(u, face, dir[0], dir[1], dir[2], &sc, &tc, &ma);
+   const bool flip = tex_ns_neg(u->kind, ma);   /* d|ma| = -dma */
+   ma = tex_ns_abs(u->kind, ma);
+   if (tex_ns_cmp(u->kind, ma, u->k_zero) == 0)
+      return TEX_LOD_NONE;
+   const ns_val r = ns->recip(ns, ma, u->stats);
+   const ns_val k = ns->mul(ns, r, u->k_half, u->stats);
+   ns_val d[2][3];   /* [x, y][s, t] */
+   for (unsigned xy = 0; xy < 2; xy++) {
+      const ns_val *g = xy ? gy : gx;
+      ns_val dsc, dtc, dma;
+      cube_axes(u, face, g[0], g[1], g[2], &dsc, &dtc, &dma);
+      if (flip)
+         dma = neg(u, dma);
+      const ns_val q = ns->mul(ns, dma, r, u->stats);   /* d|ma| / |ma| */
+      d[xy][0] = ns->mul(ns, ns->sub(ns, dsc, ns->mul(ns, sc, q, u->stats), u->stats), k,
+                         u->stats);
+      d[xy][1] = ns->mul(ns, ns->sub(ns, dtc, ns->mul(ns, tc, q, u->stats), u->stats), k,
+                         u->stats);
+      d[xy][2] = u->k_zero;
+   }
+   const ns_val scale[3] = { u->axis[0][0].scale, u->axis[0][1].scale, u->k_zero };
+   return tex_lod_grads(u, d[0], d[1], 2, scale);
 }
 
 /* The major axis; ties go to x, then y (GL leaves them open). */
@@ -67,33 +115,28 @@ static int32_t layer_of(const struct tex_unit *u, float l)
    return f >= (float)(u->view.layers - 1) ? u->view.layers - 1 : (int32_t)f;
 }
 
-/* Implicit LOD of a cube quad: pixels 0, 1, 2 projected on one face, so
- * that a quad across a cube edge still gets one smooth LOD.  Which face: a
- * quad on a face's edge has helper pixels beyond it, on another face, and a
- * projection on that face stretches the differences (up to a level too
- * far: piglit cubemap npot, 3x3 faces).  The faces of the quad's pixels are
- * tried and the smallest LOD kept: the projection on the face the covered
- * pixels are on is the undistorted one. */
-static int32_t cube_lod(const struct tex_unit *u, const int face[TEX_QUAD],
-                        ns_val dir[TEX_QUAD][3])
+/* Implicit LOD of a cube quad, per pixel: the quad's direction differences
+ * (numsys sub) projected onto each pixel's own face, exactly as explicit
+ * derivatives are (cube_lod_grads).  Direction differences are smooth
+ * across cube edges, unlike differences of face coordinates, so a quad on a
+ * face's edge needs no special case (piglit cubemap npot).  The pixel pairs
+ * are those of the shader's coarse derivatives (tgsi_exec: x from pixel 2
+ * to 3, y from 0 to 2), so that textureCube and textureCubeGrad(dFdx, dFdy)
+ * choose the same level (piglit arb_shader_texture_lod-texgradcube: quads
+ * astride the horizon differ by a level between the two rows). */
+static void cube_lod(const struct tex_unit *u, const int face[TEX_QUAD],
+                     ns_val dir[TEX_QUAD][3], int32_t lod[TEX_QUAD])
 {
-   int32_t best = 0;
-   unsigned tried = 0;
-   for (unsigned k = 0; k < TEX_QUAD; k++) {
-      if (tried & (1u << face[k]))
-         continue;
-      tried |= 1u << face[k];
-      ns_val c[TEX_QUAD][3];
-      for (unsigned p = 0; p < 3; p++)
-         tex_cube_on_face(u, (unsigned)face[k], dir[p][0], dir[p][1], dir[p][2], &c[p][0],
-                          &c[p][1]);
-      int32_t l = tex_lod_diffs(u, c, 2);
-      if (k == 0 || l < best)
-         best = l;
+   ns_val gx[3], gy[3];
+   for (unsigned a = 0; a < 3; a++) {
+      gx[a] = u->ns->sub(u->ns, dir[3][a], dir[2][a], u->stats);
+      gy[a] = u->ns->sub(u->ns, dir[2][a], dir[0][a], u->stats);
    }
-   return best;
+   for (unsigned p = 0; p < TEX_QUAD; p++)
+      lod[p] = cube_lod_grads(u, (unsigned)face[p], dir[p], gx, gy);
 }
 
+/* A cube quad's LOD is per pixel: pixel 0's here. */
 int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q)
 {
    ns_val c[TEX_QUAD][3];
@@ -104,11 +147,13 @@ int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q)
    }
    if (u->view.target == TEX_TARGET_CUBE) {
       int face[TEX_QUAD];
+      int32_t lod[TEX_QUAD];
       for (unsigned p = 0; p < TEX_QUAD; p++) {
          ns_val s, t;
          face[p] = (int)tex_cube_face(u, c[p][0], c[p][1], c[p][2], &s, &t);
       }
-      return cube_lod(u, face, c);
+      cube_lod(u, face, c, lod);
+      return lod[0];
    }
    return tex_lod_diffs(u, c, u->dims);
 }
@@ -153,10 +198,16 @@ void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
    switch (ctl) {
    case TEX_LOD_IMPLICIT:
    case TEX_LOD_BIAS: {
-      int32_t l = cube ? cube_lod(u, layer, dir) : tex_lod_diffs(u, c, u->dims);
+      if (cube) {
+         cube_lod(u, layer, dir, lod);
+      } else {
+         const int32_t l = tex_lod_diffs(u, c, u->dims);
+         for (unsigned p = 0; p < TEX_QUAD; p++)
+            lod[p] = l;
+      }
       for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = l == TEX_LOD_NONE ? l
-                  : l + (ctl == TEX_LOD_BIAS ? tex_lod_fixed(q->lod[p]) : 0);
+         if (ctl == TEX_LOD_BIAS && lod[p] != TEX_LOD_NONE)
+            lod[p] += tex_lod_fixed(q->lod[p]);
       break;
    }
    case TEX_LOD_EXPLICIT:
@@ -166,17 +217,17 @@ void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
    case TEX_LOD_DERIVS:
       for (unsigned p = 0; p < TEX_QUAD; p++) {
          float dx[3], dy[3];
-         ns_val scale[3];
-         unsigned n = cube ? 3 : u->dims;
+         ns_val gx[3], gy[3], scale[3];
+         const unsigned n = cube ? 3 : u->dims;
          for (unsigned a = 0; a < n; a++) {
             dx[a] = q->ddx[a][p];
             dy[a] = q->ddy[a][p];
-            /* Cube: direction derivatives on a unit major axis, so one
-             * unit of direction spans half a face. */
-            scale[a] = cube ? u->ns->mul(u->ns, u->axis[0][0].scale, u->k_half, u->stats)
-                            : u->axis[0][a].scale;
+            gx[a] = nsf(u, dx[a]);
+            gy[a] = nsf(u, dy[a]);
+            scale[a] = u->axis[0][a].scale;
          }
-         lod[p] = tex_lod_derivs(u, dx, dy, n, scale);
+         lod[p] = cube ? cube_lod_grads(u, (unsigned)layer[p], dir[p], gx, gy)
+                       : tex_lod_derivs(u, dx, dy, n, scale);
       }
       break;
    default:

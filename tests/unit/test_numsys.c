@@ -9,14 +9,17 @@
  *   float               from_float exact; ops correctly rounded binary32
  * and the range events each counts.  Then the perspective division on
  * rendered triangles (rast_set_texfmt): a wall receding to the right with a
- * w ratio of 1000 along a 1000-pixel span, where fx8.24 cannot hold w
- * (saturates, counted) while dfx24 counts no event and stays within the
- * bound of its walk (test_attrib.c's derivation).
+ * w ratio of 100 and 1000 along a 1000-pixel span, where fx8.24 cannot hold
+ * w = 1000 (saturates, counted), fx16.16 flushes the small products near
+ * the texture's origin, and dfx24 counts no event; every system stays
+ * within the per-pixel bound of the vector method (persp_bound.h) wherever
+ * its values fit.
  */
 #include <math.h>
 #include <string.h>
 #include "tutil.h"
 #include "fixed/numsys.h"
+#include "persp_bound.h"
 
 static double rnd_val(double lo_exp, double hi_exp)
 {
@@ -78,6 +81,28 @@ static void check_system(const struct numsys *ns)
          CHECK(em <= q && er <= q, "%s mul %g*%g=%g recip %g", ns->name, da, db, m, r);
       }
       CHECK(st.sat == 0 && st.flush == 0, "%s: no range events inside the range (%g, %g)", ns->name, da, db);
+      /* from_scaled: an exact integer n (up to 2^59, the edge functions'
+       * size) times 2^-k, rounded as from_float (long double holds n and
+       * the difference exactly) */
+      {
+         int64_t nn = (int64_t)(t_rand() * ldexp(1, 59)) >> (int)(t_rand() * 58);
+         if (t_rand() < 0.5)
+            nn = -nn;
+         if (nn == 0)
+            nn = 1;
+         int bl = 64 - __builtin_clzll((uint64_t)(nn < 0 ? -nn : nn));
+         int k = bl - (int)floor(lo + (hi - lo) * t_rand());   /* |n·2^-k| in [2^lo, 2^hi] */
+         if (k < 0) k = 0;
+         if (k > 63) k = 63;
+         struct ns_stats st2 = { 0, 0 };
+         ns_val v = ns->from_scaled(ns, nn, (unsigned)k, &st2);
+         CHECK(st2.sat == 0 && st2.flush == 0, "%s from_scaled: a range event", ns->name);
+         long double ex = ldexpl((long double)nn, -k);
+         double ev = (double)fabsl((long double)val(ns, v) - ex);
+         double bound = dfx ? (double)ldexpl(fabsl(ex), -(int)w + 3)
+                      : flt ? (double)ldexpl(fabsl(ex), -24) : q;
+         CHECK(ev <= bound, "%s from_scaled(%lld, %d): %g off", ns->name, (long long)nn, k, ev);
+      }
       /* floor_frac: the integer part and the fraction bits */
       uint32_t frac;
       int64_t ip = ns->floor_frac(ns, a, &frac, 8, &st);
@@ -111,34 +136,33 @@ static void check_system(const struct numsys *ns)
 
 static struct tctx tc;
 static double X[3], Y[3], S3[3], OW[3], worst, worst_ratio;
-static bool bound_on;
+static struct pb_sys psys;
 
 static void hook(struct tctx *t, const struct rast_quad *q)
 {
    (void)t;
+   double D = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+   int e;
+   double delta = frexp(D, &e);          /* det·2^-k, as the model scales it */
+   double aw[3] = { S3[0] * OW[0], S3[1] * OW[1], S3[2] * OW[2] };
    for (unsigned i = 0; i < 4; i++) {
       if (!(q->mask & (1u << i)))
          continue;
       double px = q->x + (int)(i & 1) + 0.5, py = q->y + (int)(i >> 1) + 0.5;
-      double D = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
       double l1 = ((px - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (py - Y[0])) / D;
       double l2 = ((X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (Y[1] - Y[0])) / D, l0 = 1 - l1 - l2;
       double ow = l0 * OW[0] + l1 * OW[1] + l2 * OW[2];
-      double s = (l0 * S3[0] * OW[0] + l1 * S3[1] * OW[1] + l2 * S3[2] * OW[2]) / ow;
-      double e = fabs(q->in[0][0][i] - s);
-      if (e > worst)
-         worst = e;
-      if (bound_on) {
-         /* dfx24 walk from the quad row's first pixel (x >= 10): both
-          * registers are <= 1, below 1 after the first step (ulp 2^-19),
-          * 2^-15 for the step from 1.0; then recip and mul (2^-15 each) */
-         double n = q->x - 8 + 2;
-         double ew = ldexp(1, -15) + (n + 1) * (17.0 / 16) * ldexp(1, -19);
-         double b = 1e-6 + (1 + s) * ew / ow + ldexp(s, -14);
-         if (e / b > worst_ratio)
-            worst_ratio = e / b;
-         CHECK(e <= b, "dfx24 at (%g, %g): %g vs %g, bound %g", px, py, q->in[0][0][i], s, b);
-      }
+      double s = (l0 * aw[0] + l1 * aw[1] + l2 * aw[2]) / ow;
+      double err = fabs(q->in[0][0][i] - s);
+      if (err > worst)
+         worst = err;
+      double b = pb_bound(&psys, l1, l2, delta, OW, aw);
+      if (isinf(b))
+         continue;                       /* beyond the system's range */
+      if (err / b > worst_ratio)
+         worst_ratio = err / b;
+      CHECK(err <= b, "%g at (%g, %g): %g vs %g, bound %g", 1 / OW[2], px, py,
+            q->in[0][0][i], s, b);
    }
 }
 
@@ -166,7 +190,7 @@ static void wall(const char *fmt, double wr, double *err, struct rast_stats *out
       X[k] = v[k][0][0]; Y[k] = v[k][0][1]; OW[k] = v[k][0][3]; S3[k] = v[k][1][0];
    }
    worst = 0;
-   bound_on = !strcmp(fmt, "dfx24");
+   psys = pb_sys_of(numsys_by_name(fmt));
    t_tri(tc.rc, v[0], v[1], v[2]);
    *err = worst;
    *out = *rast_get_stats(tc.rc);
@@ -181,21 +205,27 @@ static void perspective(void)
    struct rast_stats st[2][4];
    for (unsigned r = 0; r < 2; r++)
       for (unsigned f = 0; f < 4; f++) {
+         worst_ratio = 0;
          wall(fmts[f], ratios[r], &err[r][f], &st[r][f]);
-         printf("w ratio %5g %-8s worst texcoord error %.2e (%6.2f texels of 256), sat %llu, flush %llu\n",
+         printf("w ratio %5g %-8s worst texcoord error %.2e (%6.2f texels of 256), sat %llu, "
+                "flush %llu; error/bound where it fits %.3f\n",
                 ratios[r], fmts[f], err[r][f], err[r][f] * 256,
-                (unsigned long long)st[r][f].tex_sat, (unsigned long long)st[r][f].tex_flush);
+                (unsigned long long)st[r][f].tex_sat, (unsigned long long)st[r][f].tex_flush,
+                worst_ratio);
          CHECK(st[r][f].pixels_covered > 90000, "the wall is drawn");
+         CHECK(worst_ratio > 0, "%s: the bound was checked", fmts[f]);
       }
-   printf("dfx24: worst error / bound %.3f\n", worst_ratio);
    for (unsigned r = 0; r < 2; r++)
       CHECK(st[r][1].tex_sat == 0 && st[r][1].tex_flush == 0, "dfx24 counts no range event");
    /* w = 1000 does not fit 8.24 (max 128): saturation, counted, and a
     * larger error than dfx24's */
    CHECK(st[1][2].tex_sat > 0, "fx8.24 must saturate at w ratio 1000");
    CHECK(err[1][2] > err[1][1], "fx8.24 (%g) should be worse than dfx24 (%g)", err[1][2], err[1][1]);
-   /* 16.16 flushes the far A/w and 1/w steps */
-   CHECK(st[0][3].tex_flush > 0 && err[0][3] > err[0][1], "fx16.16 must flush at w ratio 100");
+   /* 16.16 flushes b·Δ near the texture's origin (b·0.01 < 2^-17 at ratio
+    * 100), and its 16 fraction bits of 1/w lose to dfx24 */
+   for (unsigned r = 0; r < 2; r++)
+      CHECK(st[r][3].tex_flush > 0 && err[r][3] > err[r][1],
+            "fx16.16 must flush and lose to dfx24 at w ratio %g", ratios[r]);
    CHECK(st[0][0].tex_sat == 0 && st[0][0].tex_flush == 0, "float counts no range event");
 }
 

@@ -403,6 +403,153 @@ static void cube_faces(void)
    CHECK(checked > 90000, "cube cases %u", checked);
 }
 
+/* Cube LOD from derivatives (textureCubeGrad, and the implicit LOD, which
+ * projects the quad's direction differences the same way): against GL's
+ * s = (sc/|ma| + 1)/2 differentiated in double, on directions whose major
+ * axis is far from 1 and derivatives along the major axis (where "derivative
+ * times size/2" is levels off); and implicit == explicit on the shader's
+ * coarse derivatives (pixel 3 - 2, pixel 2 - 0). */
+#define CUBE_LEVELS 7
+static uint8_t cube_lv[CUBE_LEVELS][64 * 64 * 4 * 6];
+
+static void cube_mip_unit(struct tex_unit *u, const struct numsys *ns)
+{
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   view_1level(&v, TEX_TARGET_CUBE, TEX_FMT_RGBA8, cube_lv[0], 64, 64, 1);
+   v.num_levels = CUBE_LEVELS;
+   for (unsigned l = 0; l < CUBE_LEVELS; l++) {
+      memset(cube_lv[l], (int)(30 * l), sizeof(cube_lv[l]));
+      v.level[l].data = cube_lv[l];
+      v.level[l].w = v.level[l].h = 64 >> l;
+      v.level[l].row_stride = 4u * (uint32_t)(64 >> l);
+      v.level[l].img_stride = v.level[l].row_stride * (uint32_t)(64 >> l);
+   }
+   samp_init(&s, TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR);
+   s.mip = TEX_MIP_LINEAR;
+   tex_unit_bind(u, ns, &v, &s, &st);
+}
+
+/* LOD of each pixel read back from LINEAR_MIPMAP_LINEAR on levels 30 * l. */
+static void cube_sampled_lod(const struct tex_unit *u, const struct tex_quad *q,
+                             enum tex_lod_control ctl, double lod[TEX_QUAD])
+{
+   float rgba[4][TEX_QUAD];
+   tex_unit_sample(u, q, ctl, rgba);
+   for (unsigned p = 0; p < TEX_QUAD; p++)
+      lod[p] = rgba[0][p] * 255.0 / 30.0;
+}
+
+static double ref_cube_lod(const double r[3], const double gx[3], const double gy[3], int size)
+{
+   double ax = fabs(r[0]), ay = fabs(r[1]), az = fabs(r[2]);
+   unsigned m = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+   double rho = 0;
+   for (unsigned k = 0; k < 3; k++) {
+      const double *v = k == 0 ? r : k == 1 ? gx : gy;
+      double sc, tc, ma;   /* GL's table, applied to v with the face of r */
+      switch (m) {
+      case 0: ma = v[0]; sc = r[0] >= 0 ? -v[2] : v[2]; tc = -v[1]; break;
+      case 1: ma = v[1]; sc = v[0]; tc = r[1] >= 0 ? v[2] : -v[2]; break;
+      default: ma = v[2]; sc = r[2] >= 0 ? v[0] : -v[0]; tc = -v[1]; break;
+      }
+      static double s0, t0, m0;
+      if (k == 0) {
+         s0 = sc; t0 = tc; m0 = ma;
+         continue;
+      }
+      double dm = m0 < 0 ? -ma : ma, am = fabs(m0);   /* d|ma|, |ma| */
+      rho = fmax(rho, fabs((sc - s0 * dm / am) / (2 * am)) * size);
+      rho = fmax(rho, fabs((tc - t0 * dm / am) / (2 * am)) * size);
+   }
+   return log2(rho);
+}
+
+static void cube_lod_grads(void)
+{
+   const char *names[] = { "dfx24", "float" };
+   for (unsigned n = 0; n < 2; n++) {
+      const struct numsys *ns = numsys_by_name(names[n]);
+      struct tex_unit u;
+      cube_mip_unit(&u, ns);
+      unsigned checked = 0, same = 0, total = 0;
+      double worst = 0, worst_ie = 0;
+      t_seed(21);
+      for (unsigned k = 0; k < 20000; k++) {
+         struct tex_quad q;
+         memset(&q, 0, sizeof(q));
+         double r[3], gx[3], gy[3];
+         const double len = ldexp(1.0 + t_rand(), (int)(t_rand() * 8) - 4);
+         for (unsigned a = 0; a < 3; a++) {
+            r[a] = len * (2 * t_rand() - 1);
+            gx[a] = len * ldexp(2 * t_rand() - 1, -(int)(t_rand() * 6) - 2);
+            gy[a] = len * ldexp(2 * t_rand() - 1, -(int)(t_rand() * 6) - 2);
+         }
+         /* explicit: the application's derivatives at each pixel */
+         for (unsigned p = 0; p < TEX_QUAD; p++) {
+            q.s[p] = (float)r[0]; q.t[p] = (float)r[1]; q.r[p] = (float)r[2];
+            for (unsigned a = 0; a < 3; a++) {
+               q.ddx[a][p] = (float)gx[a];
+               q.ddy[a][p] = (float)gy[a];
+            }
+         }
+         double h[3], hx[3], hy[3];   /* what the registers hold */
+         for (unsigned a = 0; a < 3; a++) {
+            h[a] = ns->to_float(ns, tex_ns_coord(ns, u.kind, (float)r[a], &st));
+            hx[a] = ns->to_float(ns, tex_ns_coord(ns, u.kind, (float)gx[a], &st));
+            hy[a] = ns->to_float(ns, tex_ns_coord(ns, u.kind, (float)gy[a], &st));
+         }
+         double m[3] = { fabs(h[0]), fabs(h[1]), fabs(h[2]) };
+         double mx = fmax(fmax(m[0], m[1]), m[2]), mid = m[0] + m[1] + m[2] - mx -
+                     fmin(fmin(m[0], m[1]), m[2]);
+         const double want = ref_cube_lod(h, hx, hy, 64);
+         double lod[TEX_QUAD];
+         cube_sampled_lod(&u, &q, TEX_LOD_DERIVS, lod);
+         if (mx - mid > 1e-3 * mx && want > 0.1 && want < CUBE_LEVELS - 1.1) {
+            double err = fabs(lod[0] - want);
+            worst = fmax(worst, err);
+            CHECK(err <= 0.02, "%s: cube grad lod %.4f want %.4f", names[n], lod[0], want);
+            checked++;
+         }
+
+         /* implicit on a quad spanned by the same derivatives (with a
+          * perspective-like bend) vs explicit on its coarse differences */
+         for (unsigned p = 0; p < TEX_QUAD; p++) {
+            const double i = p & 1, j = p >> 1, bend = 1 + 0.05 * i * j;
+            q.s[p] = (float)((r[0] + i * gx[0] + j * gy[0]) * bend);
+            q.t[p] = (float)((r[1] + i * gx[1] + j * gy[1]) * bend);
+            q.r[p] = (float)((r[2] + i * gx[2] + j * gy[2]) * bend);
+         }
+         const float *co[3] = { q.s, q.t, q.r };
+         for (unsigned a = 0; a < 3; a++)
+            for (unsigned p = 0; p < TEX_QUAD; p++) {
+               q.ddx[a][p] = co[a][3] - co[a][2];
+               q.ddy[a][p] = co[a][2] - co[a][0];
+            }
+         double li[TEX_QUAD], le[TEX_QUAD];
+         cube_sampled_lod(&u, &q, TEX_LOD_IMPLICIT, li);
+         cube_sampled_lod(&u, &q, TEX_LOD_DERIVS, le);
+         for (unsigned p = 0; p < TEX_QUAD; p++) {
+            total++;
+            same += li[p] == le[p];
+            worst_ie = fmax(worst_ie, fabs(li[p] - le[p]));
+         }
+      }
+      CHECK(checked > 10000, "%s: cube grad cases %u", names[n], checked);
+      /* float: the same arithmetic on the same values.  dfx24 subtracts
+       * registers (each rounded down on input) where the shader subtracted
+       * binary32 values: a LOD register LSB or two (1/256) apart, where the
+       * other row of the quad would be 0.07 apart (the bend). */
+      if (n == 1)
+         CHECK(same == total, "float: implicit != explicit on %u of %u pixels", total - same,
+               total);
+      CHECK(worst_ie <= 2.5 / 256, "%s: implicit vs explicit cube lod %.5f apart", names[n],
+            worst_ie);
+      printf("  cube LOD from derivatives (%s): worst %.4f over %u; implicit == explicit on "
+             "%u of %u pixels, worst %.4f\n", names[n], worst, checked, same, total, worst_ie);
+   }
+}
+
 /* Depth texels through the driver-style fetch callback. */
 static float depth_tex[8 * 8];
 static void depth_fetch(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
@@ -572,6 +719,7 @@ int main(void)
    lod_select();
    mip_levels();
    cube_faces();
+   cube_lod_grads();
    shadow();
    border_colour();
    formats();
