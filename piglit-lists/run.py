@@ -10,6 +10,7 @@ expectation files, sharding, the exit status and summary.json.
 import argparse
 import bz2
 import datetime
+import fcntl
 import glob
 import gzip
 import json
@@ -284,6 +285,14 @@ def cmd_run(args):
         excluded = {n: r for n, r in excluded.items() if n in mine}
     out_dir = os.path.join(args.out, out_name)
     os.makedirs(out_dir, exist_ok=True)
+    # Two runs of one list on one driver (two `./fixpipe check` at once) would write into the
+    # same piglit directories and mix their results: the second waits for the first.
+    lock = open(out_dir + ".lock", "w")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        print(f"fixpipe: waiting for another run of {out_name} to finish", flush=True)
+        fcntl.flock(lock, fcntl.LOCK_EX)
     for stale in ("summary.json",):
         if os.path.exists(os.path.join(out_dir, stale)):
             os.remove(os.path.join(out_dir, stale))

@@ -10,7 +10,7 @@
  *
  *   fp-persp [--view ground|offset|both] [--wrap split|repeat|mirror]
  *            [--filter nearest|linear|mipmap] [--size WxH] [--frames N]
- *            [--no-offset] [-o out.png]
+ *            [--repeat-scale K] [--no-offset] [-o out.png]
  */
 #define _POSIX_C_SOURCE 200809L
 #include "fp_gl.h"
@@ -46,12 +46,13 @@ static const char *const filter_names[] = { "nearest", "linear", "mipmap", NULL 
  * number format, not the shader's float, decides what is sampled. */
 static const char *vs_src =
    "uniform mat4 u_mvp;\n"
+   "uniform vec2 u_uv_scale;\n"
    "uniform vec2 u_uv_offset;\n"
    "attribute vec3 a_pos;\n"
    "attribute vec2 a_uv;\n"
    "varying vec2 v_uv;\n"
    "void main() {\n"
-   "   v_uv = a_uv + u_uv_offset;\n"
+   "   v_uv = a_uv * u_uv_scale + u_uv_offset;\n"
    "   gl_Position = u_mvp * vec4(a_pos, 1.0);\n"
    "}\n";
 static const char *fs_src =
@@ -66,7 +67,7 @@ static const char *fs_src =
 
 struct scene {
    GLuint prog, vbo, tex[2];   /* tex[0] REPEAT, tex[1] MIRRORED_REPEAT */
-   GLint mvp, uv_offset, sampler;
+   GLint mvp, uv_scale, uv_offset, sampler;
 };
 
 static void usage(FILE *f)
@@ -74,7 +75,7 @@ static void usage(FILE *f)
    fprintf(f,
       "usage: fp-persp [--view ground|offset|both] [--wrap split|repeat|mirror]\n"
       "                [--filter nearest|linear|mipmap] [--size WxH] [--frames N]\n"
-      "                [--no-offset] [-o out.png]\n"
+      "                [--repeat-scale K] [--no-offset] [-o out.png]\n"
       "  --view     ground: the plane receding to the horizon; offset: five small\n"
       "             planes with texture coordinates offset by 2^4, 2^8 .. 2^20;\n"
       "             both (default): ground above, offset strip below\n"
@@ -83,6 +84,11 @@ static void usage(FILE *f)
       "  --filter   nearest, linear (default) or mipmap (LINEAR_MIPMAP_LINEAR)\n"
       "  --size     frame size (default 640x480)\n"
       "  --frames   render N frames and print the time per frame (default 1)\n"
+      "  --repeat-scale K  the ground's texture repeats K times per world unit\n"
+      "             (default 1): its coordinates, and u/w, v/w, are K times larger\n"
+      "             (K = 128: |u|, |v| from about 70 at the bottom row to thousands\n"
+      "             at the horizon, |u/w|, |v/w| up to about 150 everywhere); a power\n"
+      "             of two keeps the vertex shader's multiply exact\n"
       "  --no-offset  draw the offset planes without their offset: what REPEAT\n"
       "             should make of them (an integer offset changes nothing)\n"
       "  -o         PNG to write (default: none)\n");
@@ -150,6 +156,7 @@ static void scene_init(struct scene *s, enum filter filter)
    static const char *const attr[] = { "a_pos", "a_uv", NULL };
    s->prog = fp_gl_program(vs_src, fs_src, attr);
    s->mvp = glGetUniformLocation(s->prog, "u_mvp");
+   s->uv_scale = glGetUniformLocation(s->prog, "u_uv_scale");
    s->uv_offset = glGetUniformLocation(s->prog, "u_uv_offset");
    s->sampler = glGetUniformLocation(s->prog, "u_tex");
 
@@ -228,10 +235,13 @@ static void bind_attribs(void)
                          (void *)(3 * sizeof(float)));
 }
 
+static float repeat_scale = 1.0f;   /* --repeat-scale */
+
 static void draw_ground(const struct scene *s, enum wrap wrap, float aspect)
 {
    fp_mat4 mvp = ground_mvp(aspect);
    glUniformMatrix4fv(s->mvp, 1, GL_FALSE, mvp.m);
+   glUniform2f(s->uv_scale, repeat_scale, repeat_scale);
    glUniform2f(s->uv_offset, 0, 0);
    for (int half = 0; half < 2; half++) {
       int mirror = wrap == WRAP_MIRROR || (wrap == WRAP_SPLIT && half == 1);
@@ -259,6 +269,7 @@ static void draw_offsets(const struct scene *s, enum wrap wrap, int x0, int y0, 
       fp_mat4 mvp = fp_mat4_mul(p, view);
       float off = no_offset ? 0.0f : ldexpf(1.0f, OFFSET_EXP(i));
       glUniformMatrix4fv(s->mvp, 1, GL_FALSE, mvp.m);
+      glUniform2f(s->uv_scale, 1, 1);
       glUniform2f(s->uv_offset, off, off);
       glDrawArrays(GL_TRIANGLES, 12, 6);
    }
@@ -321,6 +332,14 @@ int main(int argc, char **argv)
             return 2;
          }
          i++;
+      } else if (!strcmp(a, "--repeat-scale") && v) {
+         char *end;
+         repeat_scale = strtof(v, &end);
+         if (*end || !(repeat_scale >= 1.0f / 1024 && repeat_scale <= 65536)) {
+            fprintf(stderr, "fp-persp: bad --repeat-scale '%s' (1/1024..65536)\n", v);
+            return 2;
+         }
+         i++;
       } else if (!strcmp(a, "--no-offset")) {
          no_offset = 1;
       } else if (!strcmp(a, "-o") && v) {
@@ -369,10 +388,21 @@ int main(int argc, char **argv)
    fp_gl_check("drawing");
    double wmin, wmax;
    ground_w_range(&wmin, &wmax);
-   printf("scene: view=%s wrap=%s filter=%s %dx%d\n", view_names[view], wrap_names[wrap],
-          filter_names[filter], w, h);
-   printf("ground_w: %.3f..%.1f (ratio %.0f), uv up to +-%.0f repeats\n", wmin, wmax,
-          wmax / wmin, (double)PLANE_REPEATS);
+   printf("scene: view=%s wrap=%s filter=%s %dx%d repeat_scale=%g\n", view_names[view],
+          wrap_names[wrap], filter_names[filter], w, h, (double)repeat_scale);
+   /* The coordinates on screen: v at the bottom row's centre, and the
+    * largest |u/w|, |v/w| (the frame's edges; the same on every row). */
+   {
+      double pitch = PITCH_DEG * (double)FP_PI / 180.0, half = FOVY_DEG * (double)FP_PI / 360.0;
+      int gh = view == VIEW_BOTH ? h - h / 3 : h;
+      double aspect = (double)w / (double)gh;
+      double vb = repeat_scale * EYE_HEIGHT / tan(pitch + half);
+      double uw = repeat_scale * tan(half) * aspect;
+      printf("ground_w: %.3f..%.1f (ratio %.0f), uv up to +-%.0f repeats "
+             "(repeat scale %g: |v| %.0f at the bottom row, |u/w| up to %.0f)\n",
+             wmin, wmax, wmax / wmin, (double)PLANE_REPEATS * repeat_scale,
+             (double)repeat_scale, vb, uw);
+   }
    /* Where things are in the PNG (rows from the top), for the figure
     * scripts: the ground's rows, the horizon's, the offset strip's. */
    int ground_rows = view == VIEW_BOTH ? h - h / 3 : view == VIEW_GROUND ? h : 0;

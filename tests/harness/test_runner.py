@@ -177,6 +177,21 @@ def test_sharding():
     check("--merge with a shard missing: exit 1", p.returncode == 1, p.stdout)
 
 
+def test_concurrent_runs():
+    c = Case(BASE, FAILS, SKIPS, FLAKES)
+    env = dict(os.environ, FIXPIPE_PIGLIT=FAKE, FIXPIPE_PIGLIT_DIR=os.path.join(
+        c.tmp.name, "no-piglit"), FIXPIPE_PIGLIT_OUT=c.out, FIXPIPE_PIGLIT_EXPECTATIONS=c.exp,
+        FAKE_PIGLIT_DELAY="1")
+    env.pop("DISPLAY", None)
+    cmd = [sys.executable, RUNNER, c.list, "--driver", "llvmpipe"]
+    procs = [subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                              text=True) for _ in range(2)]
+    outs = [p.communicate(timeout=120)[0] for p in procs]
+    check("two runs of one list at once: both complete and agree",
+          all(p.returncode == 0 for p in procs)
+          and sum("waiting for another run" in o for o in outs) == 1, "\n".join(outs))
+
+
 def test_launcher():
     c = Case(BASE + ["fake@e@fail-new"], FAILS, SKIPS, FLAKES).run(via_launcher=True)
     check("./fixpipe piglit: a new failure exits 1",
