@@ -426,15 +426,8 @@ int main(int argc, char **argv)
    free(dts);
 
    if (out) {
-      unsigned char *px = malloc((size_t)w * (size_t)h * 4);
-      char err[512];
-      if (!px)
-         fp_die("out of memory");
-      fp_gl_read_rgba(&g, px);
-      if (fp_png_write(out, w, h, px, err, sizeof(err)) != 0)
-         fp_die("%s", err);
+      fp_gl_write_png(&g, out);
       printf("wrote: %s\n", out);
-      free(px);
    }
    scene_fini(&s);
    fp_gl_fini(&g);

@@ -1,5 +1,6 @@
 /* EGL surfaceless + FBO set-up for the offscreen GL ES 2 programs. */
 #include "fp_gl.h"
+#include "fp_png.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -173,4 +174,16 @@ void fp_gl_check(const char *where)
    GLenum e = glGetError();
    if (e != GL_NO_ERROR)
       fp_die("GL error 0x%x during %s", e, where);
+}
+
+void fp_gl_write_png(const struct fp_gl *g, const char *path)
+{
+   unsigned char *px = malloc((size_t)g->w * (size_t)g->h * 4);
+   char err[512];
+   if (!px)
+      fp_die("out of memory");
+   fp_gl_read_rgba(g, px);
+   if (fp_png_write(path, g->w, g->h, px, err, sizeof(err)) != 0)
+      fp_die("%s", err);
+   free(px);
 }

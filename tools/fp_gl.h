@@ -29,6 +29,9 @@ GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
 /* The whole FBO as RGBA8 rows top to bottom (PNG order; GL's are bottom up). */
 void fp_gl_read_rgba(const struct fp_gl *g, unsigned char *out);
 
+/* Reads the FBO and writes it to a PNG file; exits with a message on failure. */
+void fp_gl_write_png(const struct fp_gl *g, const char *path);
+
 /* Exits with the GL error if there is one; where says what was going on. */
 void fp_gl_check(const char *where);
 
