@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """fp-report: writes docs/conformance.md from the results already on disk: the piglit
-summaries of engineer H's runner (out/piglit/DRIVER-LIST[-sIofN]/summary.json, format in
+summaries of the piglit runner (out/piglit/DRIVER-LIST[-sIofN]/summary.json, format in
 docs/piglit.md) and the trace results of tools/fp-trace (out/traces/NAME/result.json).
 Heat maps of the worst frames go to docs/img/conformance/.
 

@@ -7,7 +7,7 @@
  * translates gallium state into the descriptors below.
  *
  * Precisions (docs/texture-unit.md):
- *   bilinear weights     TEX_WEIGHT_BITS fraction bits, truncated
+ *   bilinear weights     TEX_WEIGHT_BITS fraction bits, rounded to nearest
  *   LOD                  signed fixed point, TEX_LOD_FRAC_BITS fraction bits
  *   log2                 leading one + a 256-entry ROM of log2(1 + i/256)
  *   filtering of texels  binary32 (the colour data path is not modelled)
@@ -156,6 +156,7 @@ struct tex_unit {
    int32_t lod_bias, min_lod, max_lod;   /* units of 2^-TEX_LOD_FRAC_BITS */
    int kind;                      /* the number system's family (tex_ns.h) */
    ns_val k_zero, k_one, k_half, k_two, k_minus_one;
+   ns_val k_texel_offset;        /* linear filtering: 1/2 - 2^-(TEX_WEIGHT_BITS+1) */
 };
 
 /* Bind: copies the descriptors, converts constants into the number system

@@ -10,7 +10,8 @@
  * divider: the index lies in [-1, size]).  Clamp modes clamp the
  * coordinate to a small interval before scaling, so no clamp mode can
  * saturate the scaled register.  Linear filtering subtracts half a texel
- * after scaling; the weight is the fraction's top TEX_WEIGHT_BITS bits.
+ * (less half a weight LSB) after scaling; the weight is the fraction's top
+ * TEX_WEIGHT_BITS bits, so it is rounded to nearest.
  */
 #include "rast/tex_priv.h"
 
@@ -65,7 +66,7 @@ static void repeat_linear(const struct tex_unit *u, const struct tex_axis *ax, n
                           struct tex_addr *a)
 {
    bool odd;
-   ns_val t = sub(u, mul(u, frac_of(u, c, &odd), ax->scale), u->k_half);
+   ns_val t = sub(u, mul(u, frac_of(u, c, &odd), ax->scale), u->k_texel_offset);
    int64_t i = floor_w(u, t, &a->w);
    i = clampi(i, -1, ax->size - 1);
    a->i0 = i < 0 ? ax->size - 1 : (int32_t)i;
@@ -93,7 +94,7 @@ static void edge_nearest_of(const struct tex_unit *u, const struct tex_axis *ax,
 static void edge_linear_of(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
                            struct tex_addr *a)
 {
-   int64_t i = floor_w(u, sub(u, mul(u, c, ax->scale), u->k_half), &a->w);
+   int64_t i = floor_w(u, sub(u, mul(u, c, ax->scale), u->k_texel_offset), &a->w);
    a->i0 = clampi(i, 0, ax->size - 1);
    a->i1 = clampi(i + 1, 0, ax->size - 1);
 }
@@ -110,7 +111,7 @@ static void border_nearest_of(const struct tex_unit *u, const struct tex_axis *a
 static void border_linear_of(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
                              struct tex_addr *a)
 {
-   int64_t i = floor_w(u, sub(u, mul(u, c, ax->scale), u->k_half), &a->w);
+   int64_t i = floor_w(u, sub(u, mul(u, c, ax->scale), u->k_texel_offset), &a->w);
    a->i0 = inside(i, ax->size);
    a->i1 = inside(i + 1, ax->size);
 }

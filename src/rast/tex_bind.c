@@ -56,6 +56,12 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    u->k_zero = ns->from_float(ns, 0.0f, stats);
    u->k_one = ns->from_float(ns, 1.0f, stats);
    u->k_half = ns->from_float(ns, 0.5f, stats);
+   /* Linear filtering's half-texel offset, less half a weight LSB: the
+    * weight, the fraction's top TEX_WEIGHT_BITS bits, is then rounded to
+    * nearest rather than truncated, so a coordinate that interpolation puts
+    * a hair below a texel centre still takes that texel alone (piglit
+    * 1-1-linear-texture; llvmpipe rounds its 8-bit weights too). */
+   u->k_texel_offset = ns->from_float(ns, 0.5f - 1.0f / (float)(2u * TEX_WEIGHT_ONE), stats);
    u->k_two = ns->from_float(ns, 2.0f, stats);
    u->k_minus_one = ns->from_float(ns, -1.0f, stats);
 

@@ -180,7 +180,9 @@ static void wrap_exact_dfx24(void)
    CHECK(checked > 10000, "enough exact cases: %u", checked);
 }
 
-/* Weights are the fraction's top 8 bits, truncated. */
+/* Weights are the fraction rounded to 8 bits: a coordinate 0.4 of a
+ * weight LSB past a step keeps the step's weight, 0.6 past takes the next
+ * (carrying into the next texel after 255). */
 static void weight_bits(const char *name)
 {
    const struct numsys *ns = numsys_by_name(name);
@@ -190,14 +192,17 @@ static void weight_bits(const char *name)
    view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, 64, 1, 1);
    samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
    tex_unit_bind(&u, ns, &v, &s, &st);
-   for (int k = 0; k < 63; k += 7)
+   static const double extra_lsb[3] = { 0.0, 0.4, 0.6 };
+   for (int k = 0; k < 62; k += 7)
       for (int j = 0; j < 256; j++)
-         for (int extra = 0; extra < 2; extra++) {
-            double uu = k + 0.5 + j / 256.0 + (extra ? 3.0 / 1024 : 0);
+         for (int e = 0; e < 3; e++) {
+            double uu = k + 0.5 + (j + extra_lsb[e]) / 256.0;
+            int want_w = j + (extra_lsb[e] > 0.5), want_i = k;
+            if (want_w == 256) { want_w = 0; want_i++; }
             struct tex_addr a;
             u.addr[1][0](&u, &u.axis[0][0], tex_ns_coord(ns, u.kind, (float)(uu / 64), &st), &a);
-            CHECK(a.w == (uint32_t)j && a.i0 == k, "%s u %.6f: w %u want %d, i0 %d want %d",
-                  name, uu, a.w, j, a.i0, k);
+            CHECK(a.w == (uint32_t)want_w && a.i0 == want_i, "%s u %.6f: w %u want %d, i0 %d want %d",
+                  name, uu, a.w, want_w, a.i0, want_i);
          }
 }
 
