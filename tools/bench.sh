@@ -23,27 +23,28 @@ bin=$root/build/std/tools
 out=$root/out/bench
 mkdir -p "$out"
 scenes=(build texture shading bump effect2d)
-# name | launcher options
-configs=("fixpipe seed|--driver fixpipe --profile seed"
-         "fixpipe wide|--driver fixpipe --profile wide"
-         "softpipe|--driver softpipe"
-         "llvmpipe|--driver llvmpipe")
+# name | launcher options | environment of the program
+configs=("fixpipe seed|--driver fixpipe --profile seed|"
+         "fixpipe wide|--driver fixpipe --profile wide|"
+         "fixpipe seed float-tex|--driver fixpipe --profile seed|FIXPIPE_TEXFMT=float"
+         "softpipe|--driver softpipe|"
+         "llvmpipe|--driver llvmpipe|")
 
 glmark_args=(-s "$size")
 for s in "${scenes[@]}"; do glmark_args+=(-b "$s:duration=$secs"); done
 
 declare -A fps ms psnr mean
 for c in "${configs[@]}"; do
-    name=${c%%|*}; opts=${c#*|}
+    IFS='|' read -r name opts envs <<<"$c"
     key=${name// /-}
     # shellcheck disable=SC2086
-    "$fp" run --xvfb $opts -- glmark2-es2 "${glmark_args[@]}" > "$out/$key.glmark.log" 2>&1 || true
+    "$fp" run --xvfb $opts -- env $envs glmark2-es2 "${glmark_args[@]}" > "$out/$key.glmark.log" 2>&1 || true
     for s in "${scenes[@]}"; do
         v=$(sed -n "s/^\[$s\] .*FPS: \([0-9]*\).*/\1/p" "$out/$key.glmark.log" | head -1)
         fps[$key,$s]=${v:-n/a}
     done
     # shellcheck disable=SC2086
-    "$fp" run --no-xvfb $opts -- "$bin/fp-demo" --scene all --frames 30 -o "$out/$key.demo.png" \
+    "$fp" run --no-xvfb $opts -- env $envs "$bin/fp-demo" --scene all --frames 30 -o "$out/$key.demo.png" \
         > "$out/$key.demo.log" 2>&1 || true
     ms[$key]=$(sed -n 's/.*ms_per_frame: \([0-9.]*\).*/\1/p' "$out/$key.demo.log")
 done
@@ -80,7 +81,29 @@ ratio() {   # a / b with two decimals, or n/a
     done
 } | tee "$out/table.md"
 
+# Run time against error: the demo's ms/frame and its mean error against llvmpipe.
+{
+    echo "title demo 512x512: run time against error"
+    echo "xlabel ms per frame"
+    echo "ylabel mean error vs llvmpipe (0-255)"
+    echo "logx"
+    echo "legend tr"
+    colours=(220,60,40 240,150,30 160,80,200 40,120,220 40,160,60)
+    i=0
+    for c in "${configs[@]}"; do
+        n=${c%%|*}; k=${n// /-}
+        if [ -n "${ms[$k]:-}" ] && [ -n "${mean[$k]:-}" ]; then
+            echo "series ${colours[$i]} points $n"
+            echo "${ms[$k]} ${mean[$k]}"
+        fi
+        i=$((i + 1))
+    done
+} > "$out/chart.txt"
+"$bin/fp-chart" "$out/chart.txt" "$out/time-vs-error.png" --size 640x400 || echo "bench: no chart (fp-chart failed)" >&2
+
 if [ $doc = 1 ]; then
+    mkdir -p "$root/docs/img"
+    [ -f "$out/time-vs-error.png" ] && cp "$out/time-vs-error.png" "$root/docs/img/bench-time-vs-error.png"
     f=$root/docs/benchmarks.md
     awk -v table="$out/table.md" '
         /<!-- bench:begin -->/ { print; while ((getline l < table) > 0) print l; skip = 1; next }
