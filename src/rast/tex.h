@@ -139,6 +139,8 @@ typedef void (*tex_tap_fn)(const struct tex_unit *u, const struct tex_level *lv,
                            int x, int y, int z, float ref, float out[4]);
 typedef void (*tex_level_fn)(const struct tex_unit *u, unsigned level, const ns_val c[3],
                              int layer, float ref, float out[4]);
+typedef void (*tex_quad_fn)(const struct tex_unit *u, const struct tex_quad *q,
+                            enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
 
 struct tex_unit {
    const struct numsys *ns;
@@ -152,6 +154,9 @@ struct tex_unit {
    tex_level_fn sample_level[2];   /* [filter] */
    tex_tap_fn tap;
    tex_fetch_fn fetch;
+   /* dfx24 and binary32: the whole quad specialised (tex_fast.c), NULL for
+    * the table path above. */
+   tex_quad_fn quad;
    struct tex_axis axis[TEX_MAX_LEVELS][3];
    int32_t lod_bias, min_lod, max_lod;   /* units of 2^-TEX_LOD_FRAC_BITS */
    int kind;                      /* the number system's family (tex_ns.h) */
@@ -167,6 +172,12 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
 /* Sample a quad; rgba[channel][pixel], swizzled. */
 void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
                      enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
+
+/* The table path (struct numsys calls, the functions above) whatever the
+ * number system: what tex_unit_sample does without u->quad, for tests
+ * holding the specialised quad to it. */
+void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
+                             enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
 
 /* texelFetch: integer coordinates, level relative to the view; outside
  * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */

@@ -104,4 +104,5 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    u->lod_bias = tex_lod_fixed(s->lod_bias);
    u->min_lod = tex_lod_fixed(s->min_lod);
    u->max_lod = tex_lod_fixed(s->max_lod);
+   u->quad = tex_fast_choose(u);
 }

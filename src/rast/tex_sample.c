@@ -171,6 +171,15 @@ static inline int32_t clamp_lod(const struct tex_unit *u, int32_t l)
 void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
                      enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
 {
+   if (u->quad)
+      u->quad(u, q, ctl, rgba);
+   else
+      tex_unit_sample_generic(u, q, ctl, rgba);
+}
+
+void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
+                             enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
+{
    const bool cube = u->view.target == TEX_TARGET_CUBE;
    ns_val c[TEX_QUAD][3], dir[TEX_QUAD][3];
    int layer[TEX_QUAD];

@@ -1,0 +1,308 @@
+/* The texture unit's specialised quad (tex_fast.c, dfx24 and binary32)
+ * against its table path (tex_unit_sample_generic): the same bits out and
+ * the same range-event counts, on random units (every target but cube,
+ * every wrap mode, filters, mip modes, LOD controls, shadow compare,
+ * swizzles, decoded and callback formats, 1 to 9 levels) and random
+ * quads (smooth and scattered, coordinates from 2^-40 to 2^40, zeros,
+ * subnormals, inf, NaN).  First the inline operations alone against the
+ * numsys table on random operands. */
+#include <math.h>
+#include <string.h>
+#include "tutil.h"
+#include "rast/tex.h"
+#include "rast/tex_fast.h"
+#include "fixed/numsys.h"
+
+static uint64_t rng = 0x9e3779b97f4a7c15ull;
+static uint32_t rnd32(void)
+{
+   rng ^= rng << 13;
+   rng ^= rng >> 7;
+   rng ^= rng << 17;
+   return (uint32_t)(rng >> 16);
+}
+static unsigned rndn(unsigned n) { return rnd32() % n; }
+static float rndu(void) { return (float)rnd32() / 4294967296.0f; }
+
+static float bits_float(uint32_t b)
+{
+   float f;
+   memcpy(&f, &b, 4);
+   return f;
+}
+
+/* Any float the unit may meet, weighted towards the interesting ones. */
+static float rand_float(void)
+{
+   switch (rndn(10)) {
+   case 0: {
+      static const float special[] = { 0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e-40f, -1e-40f,
+                                       INFINITY, -INFINITY, NAN, 1e30f, -1e30f,
+                                       2147483648.0f, -2147483648.0f, 4294967296.0f,
+                                       65535.99f, -65536.0f, 3.0e-10f };
+      return special[rndn(sizeof(special) / sizeof(special[0]))];
+   }
+   case 1:   /* any finite bit pattern */
+      for (;;) {
+         float f = bits_float(rnd32());
+         if (isfinite(f))
+            return f;
+      }
+   case 2:
+   case 3:
+      return ldexpf((rndu() + 1.0f) * (rndn(2) ? -1.0f : 1.0f), (int)rndn(81) - 40);
+   case 4: {   /* near a texel boundary of a power-of-two or odd size */
+      const float size = (float)(1u << rndn(11)) + (float)rndn(3);
+      const float k = (float)((int)rndn(4 * (unsigned)size) - (int)size);
+      return k / size + ldexpf((float)((int)rndn(9) - 4), -(int)rndn(24));
+   }
+   default:
+      return 4.0f * rndu() - 2.0f;
+   }
+}
+
+static bool same_val(int kind, ns_val a, ns_val b)
+{
+   if (kind == TEX_NS_FLOAT)
+      return !memcmp(&a.f, &b.f, 4);
+   return a.d.s == b.d.s && a.d.l == b.d.l && a.d.m == b.d.m;
+}
+
+static uint64_t op_checks;
+
+/* Inline operation vs the table, and their range events. */
+static void ops(const char *name, enum tex_fk k)
+{
+   const struct numsys *ns = numsys_by_name(name);
+   const int kind = tex_fk_ns(k);
+   struct tex_unit u;
+   memset(&u, 0, sizeof(u));
+   u.ns = ns;
+   u.kind = kind;
+   unsigned bad = 0;
+   for (unsigned i = 0; i < 400000; i++) {
+      struct ns_stats g = { 0, 0 };
+      struct tex_fst x = { { 0, 0 }, { 0, 0 } };
+      const float fa = rand_float(), fb = rand_float();
+      /* operands: what the unit's input stage and its constants make */
+      ns_val a = rndn(2) ? tex_ns_coord(ns, kind, fa, &g) : ns->from_float(ns, fa, &g);
+      ns_val b = rndn(2) ? tex_ns_coord(ns, kind, fb, &g) : ns->from_float(ns, fb, &g);
+      g.sat = g.flush = 0;
+      ns_val r0, r1;
+      bool ok = true;
+      switch (i % 7) {
+      case 0:
+         r0 = ns->add(ns, a, b, &g);
+         r1 = tex_fadd(k, a, b, &x);
+         ok = same_val(kind, r0, r1);
+         break;
+      case 1:
+         r0 = ns->sub(ns, a, b, &g);
+         r1 = tex_fsub(k, a, b, &x);
+         ok = same_val(kind, r0, r1);
+         break;
+      case 2:
+         r0 = ns->mul(ns, a, b, &g);
+         r1 = tex_fmul(k, a, b, &x);
+         ok = same_val(kind, r0, r1);
+         break;
+      case 3:
+         r0 = ns->recip(ns, a, &g);
+         r1 = tex_frecip(k, a, &x);
+         ok = same_val(kind, r0, r1);
+         break;
+      case 4: {
+         const unsigned bits = rndn(2) ? TEX_WEIGHT_BITS : 0;
+         uint32_t f0 = 0, f1 = 0;
+         const int64_t i0 = ns->floor_frac(ns, a, &f0, bits, &g);
+         const int64_t i1 = tex_ffloor(k, a, &f1, bits, &x);
+         ok = i0 == i1 && f0 == f1;
+         break;
+      }
+      case 5: {
+         const int64_t n = (int64_t)(int32_t)rnd32() >> rndn(32);
+         r0 = ns->from_float(ns, (float)n, &g);
+         r1 = tex_fint(k, n, &x);
+         ok = same_val(kind, r0, r1);
+         break;
+      }
+      default:
+         r0 = tex_ns_coord(ns, kind, fa, &g);
+         r1 = tex_fcoord(&u, k, fa, &x);
+         ok = same_val(kind, r0, r1);
+         break;
+      }
+      struct ns_stats f = { 0, 0 };
+      tex_fst_flush(&x, &f);
+      ok = ok && f.sat == g.sat && f.flush == g.flush;
+      if (!ok && bad++ < 5)
+         CHECK(ok, "%s op %u: a %a b %a", name, i % 7, (double)fa, (double)fb);
+      op_checks++;
+   }
+   CHECK(bad == 0, "%s: %u operations differ from the table", name, bad);
+}
+
+/* ---- whole quads ---- */
+
+#define MAXL 9
+static uint8_t texels[MAXL][64 * 64 * 8 * 4];
+
+static void callback_fetch(const struct tex_view_desc *v, const struct tex_level *lv, int x,
+                           int y, int z, float o[4])
+{
+   (void)v;
+   const uint8_t *p = lv->data + (size_t)z * lv->img_stride + (size_t)y * lv->row_stride +
+                      (size_t)x * 4;
+   o[0] = (float)p[0] / 200.0f;   /* not a decoder of the unit's */
+   o[1] = (float)p[1] / 255.0f;
+   o[2] = -(float)p[2];
+   o[3] = (float)p[3] * 0.01f;
+}
+
+static void rand_unit(struct tex_unit *u, const struct numsys *ns, struct ns_stats *st)
+{
+   static const enum tex_target targets[] = {
+      TEX_TARGET_1D, TEX_TARGET_2D, TEX_TARGET_3D, TEX_TARGET_1D_ARRAY, TEX_TARGET_2D_ARRAY,
+      TEX_TARGET_RECT, TEX_TARGET_2D, TEX_TARGET_2D,
+   };
+   static const enum tex_format formats[] = {
+      TEX_FMT_RGBA8, TEX_FMT_BGRA8, TEX_FMT_RGBX8, TEX_FMT_BGRX8, TEX_FMT_L8,
+      TEX_FMT_B5G6R5, TEX_FMT_LA8, TEX_FMT_CALLBACK, TEX_FMT_RGBA8, TEX_FMT_BGRA8,
+   };
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   memset(&v, 0, sizeof(v));
+   memset(&s, 0, sizeof(s));
+   v.target = targets[rndn(sizeof(targets) / sizeof(targets[0]))];
+   v.format = formats[rndn(sizeof(formats) / sizeof(formats[0]))];
+   v.depth = rndn(4) == 0;
+   if (v.depth)
+      v.format = TEX_FMT_CALLBACK;
+   v.fetch = callback_fetch;
+   const bool is3d = v.target == TEX_TARGET_3D;
+   const bool arr = v.target == TEX_TARGET_1D_ARRAY || v.target == TEX_TARGET_2D_ARRAY;
+   const bool is1d = v.target == TEX_TARGET_1D || v.target == TEX_TARGET_1D_ARRAY;
+   int w = 1 + (int)rndn(64), h = is1d ? 1 : 1 + (int)rndn(64);
+   int d = is3d ? 1 + (int)rndn(8) : 1;
+   if (rndn(2)) {   /* power-of-two sizes */
+      w = 1 << rndn(7);
+      h = is1d ? 1 : 1 << rndn(7);
+      d = is3d ? 1 << rndn(4) : 1;
+   }
+   v.layers = arr ? 1 + (int)rndn(8) : d;
+   v.num_levels = 1 + rndn(MAXL);
+   for (unsigned l = 0; l < v.num_levels; l++) {
+      struct tex_level *lv = &v.level[l];
+      lv->w = w;
+      lv->h = h;
+      lv->d = arr ? v.layers : d;
+      lv->row_stride = (uint32_t)w * 4;
+      lv->img_stride = lv->row_stride * (uint32_t)h;
+      lv->data = texels[l];
+      w = w > 1 ? w / 2 : 1;
+      h = h > 1 ? h / 2 : 1;
+      d = d > 1 ? d / 2 : 1;
+   }
+   for (unsigned c = 0; c < 4; c++)
+      v.swizzle[c] = (uint8_t)(rndn(3) ? c : rndn(6));
+   for (unsigned a = 0; a < 3; a++)
+      s.wrap[a] = (enum tex_wrap)rndn(TEX_WRAP_COUNT);
+   s.min_filter = (enum tex_filter)rndn(2);
+   s.mag_filter = (enum tex_filter)rndn(2);
+   s.mip = (enum tex_mip)rndn(3);
+   s.normalized = v.target != TEX_TARGET_RECT || rndn(2);
+   s.compare = rndn(2);
+   s.func = (enum tex_func)rndn(8);
+   s.lod_bias = rndn(2) ? 0.0f : 8.0f * rndu() - 4.0f;
+   s.min_lod = rndn(2) ? -1000.0f : 4.0f * rndu() - 1.0f;
+   s.max_lod = rndn(2) ? 1000.0f : 10.0f * rndu();
+   for (unsigned c = 0; c < 4; c++)
+      s.border[c] = rndu();
+   tex_unit_bind(u, ns, &v, &s, st);
+}
+
+static void rand_quad(struct tex_quad *q, const struct tex_unit *u)
+{
+   const int mode = (int)rndn(4);
+   float *co[3] = { q->s, q->t, q->r };
+   for (unsigned a = 0; a < 3; a++) {
+      /* smooth: a base and per-pixel steps of any scale, as a triangle gives */
+      const float base = rand_float();
+      const float scale = u->samp.normalized ? 1.0f : (float)u->view.level[0].w;
+      const float dx = ldexpf(rndu() - 0.5f, -(int)rndn(14)) * (rndn(2) ? 1.0f : scale);
+      const float dy = ldexpf(rndu() - 0.5f, -(int)rndn(14)) * (rndn(2) ? 1.0f : scale);
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         co[a][p] = mode == 0 ? rand_float() : base * (mode == 1 ? scale : 1.0f) +
+                                                  (float)(p & 1) * dx + (float)(p >> 1) * dy;
+         q->ddx[a][p] = mode == 3 ? rand_float() : dx;
+         q->ddy[a][p] = mode == 3 ? rand_float() : dy;
+      }
+   }
+   const float lod = 12.0f * rndu() - 3.0f;
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      q->layer[p] = rndn(8) ? 10.0f * rndu() - 1.0f : rand_float();
+      q->ref[p] = rndn(8) ? rndu() : rand_float();
+      q->lod[p] = rndn(2) ? lod : rndn(8) ? 12.0f * rndu() - 3.0f : rand_float();
+   }
+}
+
+static uint64_t quads, fast_quads;
+
+static void quads_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit)
+{
+   const struct numsys *ns = numsys_by_name(name);
+   unsigned bad = 0, fast_units = 0;
+   for (unsigned i = 0; i < units; i++) {
+      struct tex_unit u;
+      struct ns_stats s_fast = { 0, 0 }, s_gen = { 0, 0 };
+      rand_unit(&u, ns, &s_fast);
+      s_gen = s_fast;
+      CHECK(!!u.quad == (fast && u.view.target != TEX_TARGET_CUBE),
+            "%s: specialised quad %s", name, u.quad ? "chosen" : "missing");
+      fast_units += u.quad != NULL;
+      for (unsigned j = 0; j < per_unit; j++) {
+         struct tex_quad q;
+         rand_quad(&q, &u);
+         const enum tex_lod_control ctl = (enum tex_lod_control)rndn(5);
+         float r0[4][TEX_QUAD], r1[4][TEX_QUAD];
+         u.stats = &s_gen;
+         tex_unit_sample_generic(&u, &q, ctl, r0);
+         u.stats = &s_fast;
+         tex_unit_sample(&u, &q, ctl, r1);
+         const bool ok = !memcmp(r0, r1, sizeof(r0)) && s_gen.sat == s_fast.sat &&
+                         s_gen.flush == s_fast.flush;
+         if (!ok && bad++ < 5)
+            CHECK(ok, "%s unit %u quad %u: target %d fmt %d wrap %d/%d/%d filt %d/%d mip %d "
+                  "ctl %d: r %a vs %a, sat %llu vs %llu, flush %llu vs %llu", name, i, j,
+                  u.view.target, u.view.format, u.samp.wrap[0], u.samp.wrap[1],
+                  u.samp.wrap[2], u.samp.min_filter, u.samp.mag_filter, u.samp.mip, ctl,
+                  (double)r0[0][0], (double)r1[0][0], (unsigned long long)s_gen.sat,
+                  (unsigned long long)s_fast.sat, (unsigned long long)s_gen.flush,
+                  (unsigned long long)s_fast.flush);
+         quads++;
+         fast_quads += u.quad != NULL;
+      }
+   }
+   CHECK(bad == 0, "%s: %u of %u quads differ", name, bad, units * per_unit);
+   printf("  %-8s %u units (%u specialised) x %u quads: %u differ\n", name, units, fast_units,
+          per_unit, bad);
+}
+
+int main(void)
+{
+   for (unsigned l = 0; l < MAXL; l++)
+      for (size_t i = 0; i < sizeof(texels[l]); i++)
+         texels[l][i] = (uint8_t)rnd32();
+   printf("inline operations vs the numsys table:\n");
+   ops("dfx24", TEX_FK_DFX19);
+   ops("float", TEX_FK_FLOAT);
+   printf("  %llu operations\n", (unsigned long long)op_checks);
+   printf("specialised quad vs the table path (bits and range events):\n");
+   quads_vs_generic("dfx24", true, 3000, 200);
+   quads_vs_generic("float", true, 3000, 200);
+   quads_vs_generic("fx16.16", false, 100, 50);   /* no specialisation: the table path */
+   quads_vs_generic("dfx23", false, 100, 50);
+   CHECK(fast_quads > 1000000, "only %llu quads took the specialised path",
+         (unsigned long long)fast_quads);
+   return t_summary("tex_fast");
+}
