@@ -87,7 +87,7 @@ ratio() {   # a / b with two decimals, or n/a
     echo "xlabel ms per frame"
     echo "ylabel mean error vs llvmpipe (0-255)"
     echo "logx"
-    echo "legend tr"
+    echo "legend tl"
     colours=(220,60,40 240,150,30 160,80,200 40,120,220 40,160,60)
     i=0
     for c in "${configs[@]}"; do
