@@ -118,6 +118,7 @@ struct fr_tex {
    bool any_color, is_color[FR_MAX_COMP];
    struct ns_stats st;                  /* moved to rast_stats per quad row */
    struct dfx_stats dst;
+   bool reference;                      /* the generic quad for every system (tests) */
 };
 
 struct rast_front {
@@ -220,5 +221,8 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
  * it and one across, where every attribute is constant, so Δ2 = 0). */
 void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
                                    unsigned i0, unsigned i1, unsigned i2);
+/* interp.c: with `on`, the perspective division takes its generic quad (the
+ * reference the specialised ones must match bit for bit, test_persp_fast). */
+void rast_interp_perspective_reference(struct rast_context *rc, bool on);
 
 #endif

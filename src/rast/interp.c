@@ -283,6 +283,13 @@ static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divi
    tex_quad_impl(fr, q, divide, TEX_DFX19);
 }
 
+/* The reference for binary32: tex_quad_float must give its bits and range
+ * events (test_persp_fast). */
+static void tex_quad_float_ref(struct rast_front *fr, struct rast_quad *q, bool divide)
+{
+   tex_quad_impl(fr, q, divide, TEX_FLOAT);
+}
+
 static void tex_quad_dfx(struct rast_front *fr, struct rast_quad *q, bool divide)
 {
    tex_quad_impl(fr, q, divide, TEX_DFX);
@@ -359,7 +366,9 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
       t->any_color |= t->is_color[j];
    }
    t->begin = tex_begin;
-   if (ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
+   if (t->reference)
+      t->quad = ns->dfx.mant_bits ? tex_quad_dfx : is_float ? tex_quad_float_ref : tex_quad_ns;
+   else if (ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
       t->quad = tex_quad_dfx19;
    else if (ns->dfx.mant_bits)
       t->quad = tex_quad_dfx;
@@ -367,6 +376,14 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
       t->quad = tex_quad_float;
    else
       t->quad = tex_quad_ns;
+}
+
+void rast_interp_perspective_reference(struct rast_context *rc, bool on)
+{
+   rast_validate(rc);
+   struct rast_front *fr = rast_front(rc);
+   fr->tex.reference = on;
+   rast_interp_perspective_choose(rc, fr);
 }
 
 /* The quad row's range events into the context's counters. */

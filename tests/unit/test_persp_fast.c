@@ -1,0 +1,159 @@
+/* The perspective division's specialised quads (interp.c: tex_quad_dfx19
+ * with W = 19 a constant, tex_quad_float on float vectors) against the
+ * generic quad (rast_interp_perspective_reference: tex_quad_impl with the
+ * width read at run time for dfx24, with the scalar binary32 operations
+ * for float): every random primitive is drawn through both, and every
+ * quad's used inputs must be the same bits, with the same tex_sat and
+ * tex_flush counts.  Random layouts (1 to 8 varyings, PERSPECTIVE with
+ * some COLOR and LINEAR, random usage masks), w ratios up to 4000, both
+ * edge rules, seed and wide profiles (wide: perspective COLOR in
+ * binary32 beside the system), lines as well as triangles; helpers are
+ * part of each quad's inputs. */
+#include <math.h>
+#include <string.h>
+#include "tutil.h"
+#include "rast/front.h"
+#include "fixed/numsys.h"
+
+#define MAX_VALS (1u << 22)
+
+static struct tctx t;
+static struct rast_vertex_layout vl;
+static float *rec[2];
+static size_t nrec[2];
+static int pass;
+static uint64_t quads, helpers, values;
+
+/* The used components of every quad, in order, with its position. */
+static void hook(struct tctx *tc, const struct rast_quad *q)
+{
+   (void)tc;
+   float *o = rec[pass];
+   size_t n = nrec[pass];
+   if (n + 4 + RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE > MAX_VALS)
+      return;                   /* the primitive is compared up to here */
+   o[n++] = (float)q->x;
+   o[n++] = (float)q->y;
+   o[n++] = (float)q->mask;
+   for (unsigned v = 0; v < vl.num_varyings; v++)
+      for (unsigned c = 0; c < 4; c++)
+         if (vl.varying[v].usage_mask & (1u << c)) {
+            memcpy(&o[n], q->in[v][c], sizeof(q->in[v][c]));
+            n += RAST_QUAD_SIZE;
+         }
+   nrec[pass] = n;
+   if (pass) {
+      quads++;
+      helpers += 4 - (unsigned)__builtin_popcount(q->mask);
+   }
+}
+
+static float rnd_attr(void)
+{
+   switch ((int)(t_rand() * 6)) {
+   case 0: return 0.0f;
+   case 1: return (float)ldexp(t_rand() - 0.5, (int)(t_rand() * 40) - 20);
+   default: return (float)(8 * t_rand() - 4);
+   }
+}
+
+static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_t *ev)
+{
+   t_init(&t, profile, 1024, 1024);
+   rast_set_texfmt(t.rc, numsys_by_name(texfmt));
+   t.hook = hook;
+   uint64_t events = 0, bad = 0;
+   for (unsigned n = 0; n < nprim; n++) {
+      if (n % 16 == 0) {
+         memset(&vl, 0, sizeof vl);
+         vl.num_varyings = 1 + (unsigned)(t_rand() * 8);
+         vl.vertex_size = 1 + vl.num_varyings;
+         vl.pos_slot = 0;
+         for (unsigned v = 0; v < vl.num_varyings; v++) {
+            double r = t_rand();
+            uint8_t interp = r < 0.7 ? RAST_INTERP_PERSPECTIVE
+                           : r < 0.85 ? RAST_INTERP_COLOR : RAST_INTERP_LINEAR;
+            vl.varying[v] = (struct rast_varying){ (uint8_t)(1 + v), interp,
+                                                   (uint8_t)(1 + t_rand() * 15) };
+         }
+         rast_set_vertex_layout(t.rc, &vl);
+      }
+      struct rast_raster_state rs;
+      memset(&rs, 0, sizeof rs);
+      rs.half_pixel_center = true;
+      rs.front_ccw = n & 1;
+      rs.bottom_edge_rule = t_rand() < 0.5;
+      rs.line_width = 1 + (float)(t_rand() * 3);
+      rast_set_raster_state(t.rc, &rs);
+
+      double size = 1 + 300 * t_rand() * t_rand();
+      double cx = 50 + 900 * t_rand(), cy = 50 + 900 * t_rand();
+      /* w from 1/2 up to 4000 times that: the far end's 1/w is tiny */
+      double wmax = pow(8000.0, t_rand());
+      float v[3][1 + 8][4];
+      memset(v, 0, sizeof v);
+      for (int k = 0; k < 3; k++) {
+         v[k][0][0] = (float)(cx + size * (t_rand() - 0.5));
+         v[k][0][1] = (float)(cy + size * (t_rand() - 0.5));
+         v[k][0][2] = (float)t_rand();
+         v[k][0][3] = (float)(1.0 / (0.5 * pow(wmax, t_rand())));
+         for (unsigned s = 1; s <= vl.num_varyings; s++)
+            for (int c = 0; c < 4; c++)
+               v[k][s][c] = rnd_attr();
+      }
+      bool line = t_rand() < 0.1;
+      uint64_t e[2];
+      for (pass = 0; pass < 2; pass++) {
+         rast_interp_perspective_reference(t.rc, pass == 0);
+         nrec[pass] = 0;
+         const struct rast_stats *st = rast_get_stats(t.rc);
+         uint64_t e0 = st->tex_sat + st->tex_flush * 0x100000000ull;
+         t_begin(&t);
+         if (line)
+            t_line(t.rc, v[0], v[1]);
+         else
+            t_tri(t.rc, v[0], v[1], v[2]);
+         st = rast_get_stats(t.rc);
+         e[pass] = st->tex_sat + st->tex_flush * 0x100000000ull - e0;
+      }
+      events += e[1];
+      values += nrec[1];
+      if (nrec[0] != nrec[1] || memcmp(rec[0], rec[1], nrec[0] * sizeof(float)) || e[0] != e[1]) {
+         if (bad++ < 5)
+            CHECK(false, "%s %s primitive %u (%s, %u varyings): %zu/%zu values, "
+                  "events 0x%llx/0x%llx, %s", profile, texfmt, n, line ? "line" : "triangle",
+                  vl.num_varyings, nrec[0], nrec[1], (unsigned long long)e[0],
+                  (unsigned long long)e[1],
+                  nrec[0] == nrec[1] && memcmp(rec[0], rec[1], nrec[0] * sizeof(float))
+                     ? "values differ" : "");
+      }
+   }
+   t_fini(&t);
+   printf("%-5s %-6s %u primitives: %llu differ; range events %llu sat, %llu flush\n",
+          profile, texfmt, nprim, (unsigned long long)bad,
+          (unsigned long long)(events & 0xffffffffu), (unsigned long long)(events >> 32));
+   *ev += events;
+}
+
+int main(void)
+{
+   rec[0] = malloc(MAX_VALS * sizeof(float));
+   rec[1] = malloc(MAX_VALS * sizeof(float));
+   if (!rec[0] || !rec[1])
+      return 1;
+   t_seed(12345);
+   uint64_t ev = 0;
+   const unsigned nprim = 3000;
+   static const char *const profiles[] = { "seed", "wide" };
+   static const char *const systems[] = { "dfx24", "float" };
+   for (int p = 0; p < 2; p++)
+      for (int s = 0; s < 2; s++)
+         run(profiles[p], systems[s], nprim, &ev);
+   printf("%llu quads (%llu helper pixels), %llu values compared\n", (unsigned long long)quads,
+          (unsigned long long)helpers, (unsigned long long)values);
+   CHECK(quads > 10000 && helpers > 1000, "the primitives covered quads with helpers");
+   CHECK((ev & 0xffffffffu) > 0 || (ev >> 32) > 0, "range events were exercised");
+   free(rec[0]);
+   free(rec[1]);
+   return t_summary("persp_fast");
+}
