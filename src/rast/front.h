@@ -8,9 +8,10 @@
  *   fix[]: fixed point, saturating.  fix[0] is Z (profile Z format); the
  *          rest are colour components (profile colour format, units 1/255).
  *   flt[]: float.  flt[0] is 1/w (gl_FragCoord.w); then the LINEAR
- *          components; then the PERSPECTIVE ones, held as A/w.  The
- *          perspective division does not use the walked 1/w and A/w: it
- *          evaluates each pixel from the vertex values (fr_tex, interp.c).
+ *          components.  Only these nwalk registers are walked.  The vertex
+ *          values (vflt) also hold the PERSPECTIVE components as A/w, after
+ *          them: the perspective division evaluates each pixel from those
+ *          (fr_tex, interp.c), so they have no edge or span registers.
  */
 #ifndef FIXPIPE_FRONT_H
 #define FIXPIPE_FRONT_H
@@ -128,7 +129,7 @@ struct rast_front {
    unsigned ncolor, nlin, npersp, nconst;
    struct fr_comp color[FR_MAX_COMP], lin[FR_MAX_COMP], persp[FR_MAX_COMP],
                   cnst[FR_MAX_COMP];
-   unsigned nfix, nflt;        /* 1 + ncolor, 1 + nlin + npersp */
+   unsigned nfix, nflt, nwalk; /* 1 + ncolor; 1 + nlin + npersp; 1 + nlin */
    int64_t fix_min[FR_MAX_FIX], fix_max[FR_MAX_FIX];
    struct fx_sat *fix_sat[FR_MAX_FIX];
    struct fx_format fix_fmt[FR_MAX_FIX];

@@ -491,7 +491,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    int64_t xq = xs & ~(int64_t)1;
 
    const unsigned nfix = has_color ? fr->nfix : 1;
-   const unsigned nflt = (has_lin || has_persp) ? fr->nflt : 1;
+   const unsigned nflt = has_lin ? fr->nwalk : 1;
    const unsigned flt_lin_end = 1 + (has_lin ? fr->nlin : 0);
    const unsigned frac = rc->profile->xy.frac_bits;
 

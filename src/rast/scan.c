@@ -71,7 +71,7 @@ static void edge_start(struct rast_context *rc, struct rast_front *fr,
       e->fix_step[k] = steps ? fr_fix_sat(fr, k, fx_div_round_i128((fx_i128)d * S, e->dy)) : 0;
    }
    double ft = (double)t / (double)e->dy, fs = (double)S / (double)e->dy;
-   for (unsigned k = 0; k < fr->nflt; k++) {
+   for (unsigned k = 0; k < fr->nwalk; k++) {
       double va = fr->vflt[e->a][k], d = (double)fr->vflt[e->b][k] - va;
       e->flt[k] = (float)(va + d * ft);
       e->flt_step[k] = (float)(d * fs);
@@ -92,7 +92,7 @@ static inline void edge_step(struct rast_context *rc, struct rast_front *fr, str
       return;
    for (unsigned k = 0; k < fr->nfix; k++)
       e->fix[k] = fr_fix_add(fr, k, e->fix[k], e->fix_step[k]);
-   for (unsigned k = 0; k < fr->nflt; k++)
+   for (unsigned k = 0; k < fr->nwalk; k++)
       e->flt[k] += e->flt_step[k];
 }
 
@@ -111,7 +111,7 @@ static inline void record_row(struct rast_context *rc, struct rast_front *fr, st
    row->xl_frac = (float)L->rem / (float)L->dy;
    for (unsigned k = 0; k < fr->nfix; k++)
       row->fix[k] = L->fix[k];
-   for (unsigned k = 0; k < fr->nflt; k++)
+   for (unsigned k = 0; k < fr->nwalk; k++)
       row->flt[k] = L->flt[k];
 }
 

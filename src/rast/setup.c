@@ -106,6 +106,7 @@ void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool po
    }
    fr->nfix = 1 + fr->ncolor;
    fr->nflt = 1 + fr->nlin + fr->npersp;
+   fr->nwalk = 1 + fr->nlin;
    set_fix_class(rc, fr, 0, prof->z, RAST_REG_Z);
    for (unsigned k = 1; k < fr->nfix; k++)
       set_fix_class(rc, fr, k, prof->color, RAST_REG_COLOR);
@@ -171,7 +172,7 @@ static void tri_gradients(struct rast_front *fr)
       fr->fix_dy[k] = fr_fix_sat(fr, k, fx_div_round_i128(ny, DS));
    }
    double inv = (double)fr->S / (double)D;
-   for (unsigned k = 0; k < fr->nflt; k++) {
+   for (unsigned k = 0; k < fr->nwalk; k++) {
       double d1 = (double)fr->vflt[1][k] - fr->vflt[0][k];
       double d2 = (double)fr->vflt[2][k] - fr->vflt[0][k];
       fr->flt_dx[k] = (float)((d1 * (double)gy - d2 * (double)ey) * inv);
