@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 enum scene { SCENE_GOURAUD, SCENE_MESH, SCENE_TEXTURED, SCENE_ALL };
 static const char *const scene_names[] = { "gouraud", "mesh", "textured", "all" };
@@ -27,13 +26,6 @@ static void usage(FILE *f)
       "  --size     frame size (default 512x512)\n"
       "  -o         PNG to write (default: none)\n"
       "  --frames   render N frames and print the time per frame (default 1)\n");
-}
-
-static double now_ms(void)
-{
-   struct timespec t;
-   clock_gettime(CLOCK_MONOTONIC, &t);
-   return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
 }
 
 static void viewport(int x, int y, int w, int h)
@@ -71,6 +63,18 @@ static void draw_frame(const struct fp_scenes *s, enum scene which, int w, int h
    }
 }
 
+struct demo_frame {
+   const struct fp_scenes *s;
+   enum scene which;
+   int w, h;
+};
+
+static void draw_demo_frame(void *ctx)
+{
+   const struct demo_frame *f = ctx;
+   draw_frame(f->s, f->which, f->w, f->h);
+}
+
 int main(int argc, char **argv)
 {
    enum scene which = SCENE_ALL;
@@ -95,20 +99,15 @@ int main(int argc, char **argv)
          which = (enum scene)found;
          i++;
       } else if (!strcmp(a, "--size") && v) {
-         if (sscanf(v, "%dx%d", &w, &h) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192) {
-            fprintf(stderr, "fp-demo: bad --size '%s' (WxH, 16..8192)\n", v);
+         if (!fp_arg_size("fp-demo", v, 16, &w, &h))
             return 2;
-         }
          i++;
       } else if (!strcmp(a, "-o") && v) {
          out = v;
          i++;
       } else if (!strcmp(a, "--frames") && v) {
-         frames = atoi(v);
-         if (frames < 1) {
-            fprintf(stderr, "fp-demo: bad --frames '%s'\n", v);
+         if (!fp_arg_frames("fp-demo", v, &frames))
             return 2;
-         }
          i++;
       } else {
          usage(stderr);
@@ -122,25 +121,12 @@ int main(int argc, char **argv)
    struct fp_scenes s;
    fp_scenes_init(&s);
 
-   /* The first frame pays for shader compilation (llvmpipe JITs), so it is
-    * reported apart from the steady-state average. */
-   double first = 0, rest = 0;
-   for (int f = 0; f < frames; f++) {
-      double t0 = now_ms();
-      draw_frame(&s, which, w, h);
-      glFinish();
-      double dt = now_ms() - t0;
-      if (f == 0)
-         first = dt;
-      else
-         rest += dt;
-   }
+   struct demo_frame df = { &s, which, w, h };
+   struct fp_frame_times times;
+   fp_gl_time_frames(frames, draw_demo_frame, &df, &times);
    fp_gl_check("drawing");
    printf("scene: %s %dx%d\n", scene_names[which], w, h);
-   printf("first_frame_ms: %.2f\n", first);
-   if (frames > 1)
-      printf("frames: %d ms_per_frame: %.2f (frames 2..%d)\n", frames,
-             rest / (frames - 1), frames);
+   fp_print_frame_times(&times);
 
    if (out) {
       fp_gl_write_png(&g, out);

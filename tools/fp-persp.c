@@ -21,7 +21,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define TEX_SIZE 64
 #define CHECK 8              /* texels per checker square */
@@ -92,19 +91,6 @@ static void usage(FILE *f)
       "  --no-offset  draw the offset planes without their offset: what REPEAT\n"
       "             should make of them (an integer offset changes nothing)\n"
       "  -o         PNG to write (default: none)\n");
-}
-
-static double now_ms(void)
-{
-   struct timespec t;
-   clock_gettime(CLOCK_MONOTONIC, &t);
-   return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-   double x = *(const double *)a, y = *(const double *)b;
-   return (x > y) - (x < y);
 }
 
 static int pick(const char *const *names, const char *v, const char *opt)
@@ -303,6 +289,19 @@ static void draw_frame(const struct scene *s, enum view view, enum wrap wrap, in
    }
 }
 
+struct persp_frame {
+   const struct scene *s;
+   enum view view;
+   enum wrap wrap;
+   int w, h;
+};
+
+static void draw_persp_frame(void *ctx)
+{
+   const struct persp_frame *f = ctx;
+   draw_frame(f->s, f->view, f->wrap, f->w, f->h);
+}
+
 int main(int argc, char **argv)
 {
    enum view view = VIEW_BOTH;
@@ -327,10 +326,8 @@ int main(int argc, char **argv)
          filter = (enum filter)pick(filter_names, v, "filter");
          i++;
       } else if (!strcmp(a, "--size") && v) {
-         if (sscanf(v, "%dx%d", &w, &h) != 2 || w < 48 || h < 48 || w > 8192 || h > 8192) {
-            fprintf(stderr, "fp-persp: bad --size '%s' (WxH, 48..8192)\n", v);
+         if (!fp_arg_size("fp-persp", v, 48, &w, &h))
             return 2;
-         }
          i++;
       } else if (!strcmp(a, "--repeat-scale") && v) {
          char *end;
@@ -346,11 +343,8 @@ int main(int argc, char **argv)
          out = v;
          i++;
       } else if (!strcmp(a, "--frames") && v) {
-         frames = atoi(v);
-         if (frames < 1) {
-            fprintf(stderr, "fp-persp: bad --frames '%s'\n", v);
+         if (!fp_arg_frames("fp-persp", v, &frames))
             return 2;
-         }
          i++;
       } else {
          usage(stderr);
@@ -368,23 +362,9 @@ int main(int argc, char **argv)
    glDisable(GL_DEPTH_TEST);
    glDisable(GL_CULL_FACE);
 
-   /* The median frame too: on a shared 2-core machine the mean carries other
-    * processes' load in both directions' outliers; the median does not. */
-   double first = 0, rest = 0;
-   double *dts = malloc(sizeof(double) * (size_t)frames);
-   if (!dts)
-      fp_die("out of memory");
-   for (int f = 0; f < frames; f++) {
-      double t0 = now_ms();
-      draw_frame(&s, view, wrap, w, h);
-      glFinish();
-      double dt = now_ms() - t0;
-      if (f == 0)
-         first = dt;
-      else
-         rest += dt;
-      dts[f] = dt;
-   }
+   struct persp_frame pf = { &s, view, wrap, w, h };
+   struct fp_frame_times times;
+   fp_gl_time_frames(frames, draw_persp_frame, &pf, &times);
    fp_gl_check("drawing");
    double wmin, wmax;
    ground_w_range(&wmin, &wmax);
@@ -413,17 +393,7 @@ int main(int argc, char **argv)
    for (int i = 0; i < N_OFFSETS; i++)
       printf("%s%d", i ? "," : "", OFFSET_EXP(i));
    printf("%s\n", no_offset ? " (offsets removed)" : "");
-   printf("first_frame_ms: %.2f\n", first);
-   if (frames > 1)
-      printf("frames: %d ms_per_frame: %.2f (frames 2..%d)\n", frames,
-             rest / (frames - 1), frames);
-   if (frames > 1) {
-      qsort(dts + 1, (size_t)frames - 1, sizeof(double), cmp_double);
-      int n = frames - 1;
-      double med = n % 2 ? dts[1 + n / 2] : (dts[n / 2] + dts[1 + n / 2]) / 2;
-      printf("ms_per_frame_median: %.2f\n", med);
-   }
-   free(dts);
+   fp_print_frame_times(&times);
 
    if (out) {
       fp_gl_write_png(&g, out);

@@ -1,4 +1,6 @@
 /* EGL surfaceless + FBO set-up for the offscreen GL ES 2 programs. */
+/* clock_gettime */
+#define _POSIX_C_SOURCE 200809L
 #include "fp_gl.h"
 #include "fp_png.h"
 
@@ -9,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 void fp_die(const char *fmt, ...)
 {
@@ -186,4 +189,77 @@ void fp_gl_write_png(const struct fp_gl *g, const char *path)
    if (fp_png_write(path, g->w, g->h, px, err, sizeof(err)) != 0)
       fp_die("%s", err);
    free(px);
+}
+
+static double now_ms(void)
+{
+   struct timespec t;
+   clock_gettime(CLOCK_MONOTONIC, &t);
+   return (double)t.tv_sec * 1e3 + (double)t.tv_nsec / 1e6;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+   double x = *(const double *)a, y = *(const double *)b;
+   return (x > y) - (x < y);
+}
+
+void fp_gl_time_frames(int frames, void (*draw)(void *ctx), void *ctx,
+                       struct fp_frame_times *t)
+{
+   if (frames < 1)
+      frames = 1;
+   double *dts = calloc((size_t)frames, sizeof(double));
+   if (!dts)
+      fp_die("out of memory");
+   double rest = 0;
+   for (int f = 0; f < frames; f++) {
+      double t0 = now_ms();
+      draw(ctx);
+      glFinish();
+      dts[f] = now_ms() - t0;
+      if (f)
+         rest += dts[f];
+   }
+   t->frames = frames;
+   t->first_ms = dts[0];
+   t->mean_ms = t->median_ms = 0;
+   if (frames > 1) {
+      int n = frames - 1;
+      qsort(dts + 1, (size_t)n, sizeof(double), cmp_double);
+      t->mean_ms = rest / n;
+      t->median_ms = n % 2 ? dts[1 + n / 2] : (dts[n / 2] + dts[1 + n / 2]) / 2;
+   }
+   free(dts);
+}
+
+void fp_print_frame_times(const struct fp_frame_times *t)
+{
+   printf("first_frame_ms: %.2f\n", t->first_ms);
+   if (t->frames > 1) {
+      printf("frames: %d ms_per_frame: %.2f (frames 2..%d)\n", t->frames, t->mean_ms,
+             t->frames);
+      printf("ms_per_frame_median: %.2f\n", t->median_ms);
+   }
+}
+
+bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h)
+{
+   if (sscanf(v, "%dx%d", w, h) != 2 || *w < min || *h < min || *w > 8192 || *h > 8192) {
+      fprintf(stderr, "%s: bad --size '%s' (WxH, %d..8192)\n", prog, v, min);
+      return false;
+   }
+   return true;
+}
+
+bool fp_arg_frames(const char *prog, const char *v, int *frames)
+{
+   char *end;
+   long n = strtol(v, &end, 10);
+   if (*end || n < 1 || n > 1000000) {
+      fprintf(stderr, "%s: bad --frames '%s' (1..1000000)\n", prog, v);
+      return false;
+   }
+   *frames = (int)n;
+   return true;
 }

@@ -9,6 +9,7 @@
 #define FP_GL_H
 
 #include <GLES2/gl2.h>
+#include <stdbool.h>
 
 struct fp_gl {
    void *dpy, *ctx;            /* EGLDisplay, EGLContext */
@@ -28,6 +29,28 @@ GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
 
 /* The whole FBO as RGBA8 rows top to bottom (PNG order; GL's are bottom up). */
 void fp_gl_read_rgba(const struct fp_gl *g, unsigned char *out);
+
+/* Frame times of fp_gl_time_frames: the first frame pays for shader
+ * compilation (llvmpipe JITs), so it is kept apart from the rest; the median
+ * of the rest too, since on a shared machine other processes' load skews the
+ * mean in both directions and the median much less. */
+struct fp_frame_times {
+   int frames;
+   double first_ms, mean_ms, median_ms;   /* mean, median: frames 2..N */
+};
+
+/* Draws `frames` frames with draw(ctx), each finished with glFinish. */
+void fp_gl_time_frames(int frames, void (*draw)(void *ctx), void *ctx,
+                       struct fp_frame_times *t);
+/* first_frame_ms, and with more than one frame `frames: N ms_per_frame: X
+ * (frames 2..N)` and ms_per_frame_median: the lines the scripts read. */
+void fp_print_frame_times(const struct fp_frame_times *t);
+
+/* Command-line values shared by the GL programs: WxH (each in [min, 8192])
+ * and a frame count >= 1.  Print a message naming prog and return false on
+ * a bad value. */
+bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h);
+bool fp_arg_frames(const char *prog, const char *v, int *frames);
 
 /* Reads the FBO and writes it to a PNG file; exits with a message on failure. */
 void fp_gl_write_png(const struct fp_gl *g, const char *path);

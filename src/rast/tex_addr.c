@@ -39,16 +39,6 @@ static inline ns_val frac_of(const struct tex_unit *u, ns_val c, bool *odd)
    return sub(u, c, tex_ns_int(u, fl));
 }
 
-static inline int32_t clampi(int64_t i, int32_t lo, int32_t hi)
-{
-   return i < lo ? lo : i > hi ? hi : (int32_t)i;
-}
-
-static inline int32_t inside(int64_t i, int32_t size)
-{
-   return i >= 0 && i < size ? (int32_t)i : -1;
-}
-
 /* ---- REPEAT ---- */
 
 static void repeat_nearest(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
@@ -57,7 +47,7 @@ static void repeat_nearest(const struct tex_unit *u, const struct tex_axis *ax, 
    bool odd;
    uint32_t w;
    int64_t i = floor_w(u, mul(u, frac_of(u, c, &odd), ax->scale), &w);
-   a->i0 = clampi(i, 0, ax->size - 1);   /* only a saturated register gets out */
+   a->i0 = tex_clampi(i, 0, ax->size - 1);   /* only a saturated register gets out */
    a->i1 = a->i0;
    a->w = 0;
 }
@@ -68,7 +58,7 @@ static void repeat_linear(const struct tex_unit *u, const struct tex_axis *ax, n
    bool odd;
    ns_val t = sub(u, mul(u, frac_of(u, c, &odd), ax->scale), u->k_texel_offset);
    int64_t i = floor_w(u, t, &a->w);
-   i = clampi(i, -1, ax->size - 1);
+   i = tex_clampi(i, -1, ax->size - 1);
    a->i0 = i < 0 ? ax->size - 1 : (int32_t)i;
    a->i1 = i + 1 >= ax->size ? 0 : (int32_t)i + 1;
 }
@@ -87,7 +77,7 @@ static void edge_nearest_of(const struct tex_unit *u, const struct tex_axis *ax,
 {
    uint32_t w;
    int64_t i = floor_w(u, mul(u, c, ax->scale), &w);
-   a->i0 = a->i1 = clampi(i, 0, ax->size - 1);
+   a->i0 = a->i1 = tex_clampi(i, 0, ax->size - 1);
    a->w = 0;
 }
 
@@ -95,8 +85,8 @@ static void edge_linear_of(const struct tex_unit *u, const struct tex_axis *ax, 
                            struct tex_addr *a)
 {
    int64_t i = floor_w(u, sub(u, mul(u, c, ax->scale), u->k_texel_offset), &a->w);
-   a->i0 = clampi(i, 0, ax->size - 1);
-   a->i1 = clampi(i + 1, 0, ax->size - 1);
+   a->i0 = tex_clampi(i, 0, ax->size - 1);
+   a->i1 = tex_clampi(i + 1, 0, ax->size - 1);
 }
 
 static void border_nearest_of(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
@@ -104,7 +94,7 @@ static void border_nearest_of(const struct tex_unit *u, const struct tex_axis *a
 {
    uint32_t w;
    int64_t i = floor_w(u, mul(u, c, ax->scale), &w);
-   a->i0 = a->i1 = inside(i, ax->size);
+   a->i0 = a->i1 = tex_inside(i, ax->size);
    a->w = 0;
 }
 
@@ -112,8 +102,8 @@ static void border_linear_of(const struct tex_unit *u, const struct tex_axis *ax
                              struct tex_addr *a)
 {
    int64_t i = floor_w(u, sub(u, mul(u, c, ax->scale), u->k_texel_offset), &a->w);
-   a->i0 = inside(i, ax->size);
-   a->i1 = inside(i + 1, ax->size);
+   a->i0 = tex_inside(i, ax->size);
+   a->i1 = tex_inside(i + 1, ax->size);
 }
 
 static void mirror_nearest(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,

@@ -9,16 +9,6 @@
  */
 #include "rast/tex_fast.h"
 
-static inline int32_t clampi(int64_t i, int32_t lo, int32_t hi)
-{
-   return i < lo ? lo : i > hi ? hi : (int32_t)i;
-}
-
-static inline int32_t inside(int64_t i, int32_t size)
-{
-   return i >= 0 && i < size ? (int32_t)i : -1;
-}
-
 /* c - floor(c) and the parity of floor(c). */
 TEX_FAST_INLINE ns_val frac_of(const enum tex_fk k, ns_val c, bool *odd, struct tex_fst *x)
 {
@@ -42,13 +32,13 @@ TEX_FAST_INLINE void addr(const struct tex_unit *u, const enum tex_fk k, const b
    case TEX_WRAP_REPEAT: {
       const ns_val s = tex_fmul(k, frac_of(k, c, &odd, x), ax->scale, x);
       if (!linear) {
-         a->i0 = a->i1 = clampi(tex_ffloor(k, s, &w, TEX_WEIGHT_BITS, x), 0, ax->size - 1);
+         a->i0 = a->i1 = tex_clampi(tex_ffloor(k, s, &w, TEX_WEIGHT_BITS, x), 0, ax->size - 1);
          a->w = 0;
          return;
       }
       int64_t i = tex_ffloor(k, tex_fsub(k, s, u->k_texel_offset, x), &a->w,
                              TEX_WEIGHT_BITS, x);
-      i = clampi(i, -1, ax->size - 1);
+      i = tex_clampi(i, -1, ax->size - 1);
       a->i0 = i < 0 ? ax->size - 1 : (int32_t)i;
       a->i1 = i + 1 >= ax->size ? 0 : (int32_t)i + 1;
       return;
@@ -84,22 +74,21 @@ TEX_FAST_INLINE void addr(const struct tex_unit *u, const enum tex_fk k, const b
    ns_val s = tex_fmul(k, c, ax->scale, x);
    if (!linear) {
       const int64_t i = tex_ffloor(k, s, &w, TEX_WEIGHT_BITS, x);
-      a->i0 = a->i1 = border ? inside(i, ax->size) : clampi(i, 0, ax->size - 1);
+      a->i0 = a->i1 = border ? tex_inside(i, ax->size) : tex_clampi(i, 0, ax->size - 1);
       a->w = 0;
       return;
    }
    s = tex_fsub(k, s, u->k_texel_offset, x);
    const int64_t i = tex_ffloor(k, s, &a->w, TEX_WEIGHT_BITS, x);
    if (border) {
-      a->i0 = inside(i, ax->size);
-      a->i1 = inside(i + 1, ax->size);
+      a->i0 = tex_inside(i, ax->size);
+      a->i1 = tex_inside(i + 1, ax->size);
    } else {
-      a->i0 = clampi(i, 0, ax->size - 1);
-      a->i1 = clampi(i + 1, 0, ax->size - 1);
+      a->i0 = tex_clampi(i, 0, ax->size - 1);
+      a->i1 = tex_clampi(i + 1, 0, ax->size - 1);
    }
 }
 
-static inline float un8(unsigned v) { return (float)v * (1.0f / 255.0f); }
 
 /* A texel in one SSE register: the taps' blend then reads no value just
  * stored as four scalars (a store-forwarding stall per tap).  Element by
@@ -123,27 +112,13 @@ TEX_FAST_INLINE v4f fetch(const struct tex_unit *u, const struct tex_level *lv, 
       const uint8_t *p = lv->data + (size_t)z * lv->img_stride + (size_t)y * lv->row_stride +
                          (size_t)x * 4;
       const bool bgr = f == TEX_FMT_BGRA8 || f == TEX_FMT_BGRX8;
-      const v4f o = { un8(p[bgr ? 2 : 0]), un8(p[1]), un8(p[bgr ? 0 : 2]),
-                      f == TEX_FMT_RGBX8 || f == TEX_FMT_BGRX8 ? 1.0f : un8(p[3]) };
+      const v4f o = { tex_unorm8(p[bgr ? 2 : 0]), tex_unorm8(p[1]), tex_unorm8(p[bgr ? 0 : 2]),
+                      f == TEX_FMT_RGBX8 || f == TEX_FMT_BGRX8 ? 1.0f : tex_unorm8(p[3]) };
       return o;
    }
    float o[4];
    u->fetch(&u->view, lv, x, y, z, o);
    return load4(o);
-}
-
-static bool compare(enum tex_func func, float ref, float d)
-{
-   switch (func) {
-   case TEX_FUNC_NEVER: return false;
-   case TEX_FUNC_LESS: return ref < d;
-   case TEX_FUNC_EQUAL: return ref == d;
-   case TEX_FUNC_LEQUAL: return ref <= d;
-   case TEX_FUNC_GREATER: return ref > d;
-   case TEX_FUNC_NOTEQUAL: return ref != d;
-   case TEX_FUNC_GEQUAL: return ref >= d;
-   default: return true;
-   }
 }
 
 /* tex_filter.c's tap_color / tap_shadow. */
@@ -162,7 +137,7 @@ TEX_FAST_INLINE v4f tap(const struct tex_unit *u, const struct tex_level *lv, in
          return t;
       d = t[0];
    }
-   const float c = compare(u->samp.func, ref, d) ? 1.0f : 0.0f;
+   const float c = tex_compare(u->samp.func, ref, d) ? 1.0f : 0.0f;
    const v4f o = { c, c, c, 1.0f };
    return o;
 }
@@ -234,16 +209,6 @@ TEX_FAST_INLINE int32_t lod_diffs(const struct tex_unit *u, const enum tex_fk k,
    return tex_lod_from_rho(u, rho);
 }
 
-static inline int32_t clamp_lod(const struct tex_unit *u, int32_t l)
-{
-   l += u->lod_bias;
-   if (l > u->max_lod)
-      l = u->max_lod;
-   if (l < u->min_lod)
-      l = u->min_lod;
-   return l;
-}
-
 TEX_FAST_INLINE void quad(const struct tex_unit *u, const struct tex_quad *q,
                           enum tex_lod_control ctl, float rgba[4][TEX_QUAD],
                           const enum tex_fk k, const unsigned dims)
@@ -292,7 +257,7 @@ TEX_FAST_INLINE void quad(const struct tex_unit *u, const struct tex_quad *q,
    enum tex_filter f = TEX_FILTER_NEAREST;
    int32_t prev = 0;
    for (unsigned p = 0; p < TEX_QUAD; p++) {
-      const int32_t cl = clamp_lod(u, lod[p]);
+      const int32_t cl = tex_clamp_lod(u, lod[p]);
       if (!p || cl != prev)   /* selection depends on the LOD alone */
          tex_unit_select(u, cl, &l0, &l1, &frac, &f);
       prev = cl;

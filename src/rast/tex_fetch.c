@@ -14,7 +14,6 @@ static inline const uint8_t *texel_ptr(const struct tex_level *lv, int x, int y,
           (size_t)x * bytes;
 }
 
-static inline float un8(unsigned v) { return (float)v * (1.0f / 255.0f); }
 
 static inline unsigned rd16(const uint8_t *p)
 {
@@ -26,7 +25,7 @@ static void f_rgba8(const struct tex_view_desc *v, const struct tex_level *lv, i
 {
    const uint8_t *p = texel_ptr(lv, x, y, z, 4);
    (void)v;
-   o[0] = un8(p[0]); o[1] = un8(p[1]); o[2] = un8(p[2]); o[3] = un8(p[3]);
+   o[0] = tex_unorm8(p[0]); o[1] = tex_unorm8(p[1]); o[2] = tex_unorm8(p[2]); o[3] = tex_unorm8(p[3]);
 }
 
 static void f_rgbx8(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
@@ -34,7 +33,7 @@ static void f_rgbx8(const struct tex_view_desc *v, const struct tex_level *lv, i
 {
    const uint8_t *p = texel_ptr(lv, x, y, z, 4);
    (void)v;
-   o[0] = un8(p[0]); o[1] = un8(p[1]); o[2] = un8(p[2]); o[3] = 1.0f;
+   o[0] = tex_unorm8(p[0]); o[1] = tex_unorm8(p[1]); o[2] = tex_unorm8(p[2]); o[3] = 1.0f;
 }
 
 static void f_bgra8(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
@@ -42,7 +41,7 @@ static void f_bgra8(const struct tex_view_desc *v, const struct tex_level *lv, i
 {
    const uint8_t *p = texel_ptr(lv, x, y, z, 4);
    (void)v;
-   o[0] = un8(p[2]); o[1] = un8(p[1]); o[2] = un8(p[0]); o[3] = un8(p[3]);
+   o[0] = tex_unorm8(p[2]); o[1] = tex_unorm8(p[1]); o[2] = tex_unorm8(p[0]); o[3] = tex_unorm8(p[3]);
 }
 
 static void f_bgrx8(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
@@ -50,14 +49,14 @@ static void f_bgrx8(const struct tex_view_desc *v, const struct tex_level *lv, i
 {
    const uint8_t *p = texel_ptr(lv, x, y, z, 4);
    (void)v;
-   o[0] = un8(p[2]); o[1] = un8(p[1]); o[2] = un8(p[0]); o[3] = 1.0f;
+   o[0] = tex_unorm8(p[2]); o[1] = tex_unorm8(p[1]); o[2] = tex_unorm8(p[0]); o[3] = 1.0f;
 }
 
 static void f_l8(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
                  int z, float o[4])
 {
    (void)v;
-   o[0] = o[1] = o[2] = un8(*texel_ptr(lv, x, y, z, 1));
+   o[0] = o[1] = o[2] = tex_unorm8(*texel_ptr(lv, x, y, z, 1));
    o[3] = 1.0f;
 }
 
@@ -66,21 +65,21 @@ static void f_a8(const struct tex_view_desc *v, const struct tex_level *lv, int 
 {
    (void)v;
    o[0] = o[1] = o[2] = 0.0f;
-   o[3] = un8(*texel_ptr(lv, x, y, z, 1));
+   o[3] = tex_unorm8(*texel_ptr(lv, x, y, z, 1));
 }
 
 static void f_i8(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
                  int z, float o[4])
 {
    (void)v;
-   o[0] = o[1] = o[2] = o[3] = un8(*texel_ptr(lv, x, y, z, 1));
+   o[0] = o[1] = o[2] = o[3] = tex_unorm8(*texel_ptr(lv, x, y, z, 1));
 }
 
 static void f_r8(const struct tex_view_desc *v, const struct tex_level *lv, int x, int y,
                  int z, float o[4])
 {
    (void)v;
-   o[0] = un8(*texel_ptr(lv, x, y, z, 1));
+   o[0] = tex_unorm8(*texel_ptr(lv, x, y, z, 1));
    o[1] = o[2] = 0.0f;
    o[3] = 1.0f;
 }
@@ -90,8 +89,8 @@ static void f_la8(const struct tex_view_desc *v, const struct tex_level *lv, int
 {
    const uint8_t *p = texel_ptr(lv, x, y, z, 2);
    (void)v;
-   o[0] = o[1] = o[2] = un8(p[0]);
-   o[3] = un8(p[1]);
+   o[0] = o[1] = o[2] = tex_unorm8(p[0]);
+   o[3] = tex_unorm8(p[1]);
 }
 
 /* A field of a packed 16-bit texel as unorm. */

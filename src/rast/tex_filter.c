@@ -19,20 +19,6 @@ static void tap_color(const struct tex_unit *u, const struct tex_level *lv, int 
    u->fetch(&u->view, lv, x, y, z, out);
 }
 
-static bool compare(enum tex_func func, float ref, float d)
-{
-   switch (func) {
-   case TEX_FUNC_NEVER: return false;
-   case TEX_FUNC_LESS: return ref < d;
-   case TEX_FUNC_EQUAL: return ref == d;
-   case TEX_FUNC_LEQUAL: return ref <= d;
-   case TEX_FUNC_GREATER: return ref > d;
-   case TEX_FUNC_NOTEQUAL: return ref != d;
-   case TEX_FUNC_GEQUAL: return ref >= d;
-   default: return true;
-   }
-}
-
 /* The border's depth goes through the comparison too. */
 static void tap_shadow(const struct tex_unit *u, const struct tex_level *lv, int x, int y, int z,
                        float ref, float out[4])
@@ -44,7 +30,7 @@ static void tap_shadow(const struct tex_unit *u, const struct tex_level *lv, int
       u->fetch(&u->view, lv, x, y, z, out);
       d = out[0];
    }
-   out[0] = out[1] = out[2] = compare(u->samp.func, ref, d) ? 1.0f : 0.0f;
+   out[0] = out[1] = out[2] = tex_compare(u->samp.func, ref, d) ? 1.0f : 0.0f;
    out[3] = 1.0f;
 }
 

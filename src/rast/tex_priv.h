@@ -7,6 +7,47 @@
 #include "rast/tex.h"
 #include "rast/tex_ns.h"
 
+/* Small pieces the generic and the specialised (tex_fast.c) paths share. */
+static inline int32_t tex_clampi(int64_t i, int32_t lo, int32_t hi)
+{
+   return i < lo ? lo : i > hi ? hi : (int32_t)i;
+}
+
+/* The texel index, or -1 (the border) outside [0, size). */
+static inline int32_t tex_inside(int64_t i, int32_t size)
+{
+   return i >= 0 && i < size ? (int32_t)i : -1;
+}
+
+static inline float tex_unorm8(unsigned v) { return (float)v * (1.0f / 255.0f); }
+
+/* The LOD register (fixed point, see tex_lod_fixed) with the sampler's bias
+ * and clamps applied. */
+static inline int32_t tex_clamp_lod(const struct tex_unit *u, int32_t l)
+{
+   l += u->lod_bias;
+   if (l > u->max_lod)
+      l = u->max_lod;
+   if (l < u->min_lod)
+      l = u->min_lod;
+   return l;
+}
+
+/* Shadow comparison of the reference with a texel's depth. */
+static inline bool tex_compare(enum tex_func func, float ref, float d)
+{
+   switch (func) {
+   case TEX_FUNC_NEVER: return false;
+   case TEX_FUNC_LESS: return ref < d;
+   case TEX_FUNC_EQUAL: return ref == d;
+   case TEX_FUNC_LEQUAL: return ref <= d;
+   case TEX_FUNC_GREATER: return ref > d;
+   case TEX_FUNC_NOTEQUAL: return ref != d;
+   case TEX_FUNC_GEQUAL: return ref >= d;
+   default: return true;
+   }
+}
+
 /* An integer (a texel count, a floor) as a register of the number system.
  * Every such integer is exact in binary32, so the conversion is too. */
 static inline ns_val tex_ns_int(const struct tex_unit *u, int64_t i)

@@ -158,16 +158,6 @@ int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q)
    return tex_lod_diffs(u, c, u->dims);
 }
 
-static inline int32_t clamp_lod(const struct tex_unit *u, int32_t l)
-{
-   l += u->lod_bias;
-   if (l > u->max_lod)
-      l = u->max_lod;
-   if (l < u->min_lod)
-      l = u->min_lod;
-   return l;
-}
-
 void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
                      enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
 {
@@ -249,7 +239,7 @@ void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
       unsigned l0, l1;
       uint32_t frac;
       enum tex_filter f;
-      tex_unit_select(u, clamp_lod(u, lod[p]), &l0, &l1, &frac, &f);
+      tex_unit_select(u, tex_clamp_lod(u, lod[p]), &l0, &l1, &frac, &f);
       u->sample_level[f](u, l0, c[p], layer[p], q->ref[p], out[p]);
       if (frac) {
          float b[4];
