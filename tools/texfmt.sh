@@ -104,9 +104,13 @@ for f in $formats; do
     render "$f" fixpipe "$f" --frames "$frames"
 done
 render llvmpipe llvmpipe "" --frames "$frames"
+# softpipe (our Mesa build, same version): run time and error of a float
+# rasterizer with a float sampler, in the same run.
+render softpipe softpipe "" --frames "$frames"
 # What REPEAT should make of the offset planes: the same planes, no offset.
 render ideal fixpipe float --no-offset --frames 2
 render llvmpipe-ideal llvmpipe "" --no-offset --frames 2
+render softpipe-ideal softpipe "" --no-offset --frames 2
 if [ $sweep = 1 ]; then
     for n in $sweep_bits; do
         # dfx24 is the seed's format, already drawn above.
@@ -173,7 +177,7 @@ fig() { kv "$out/cmp/$1-vs-$2.$3.kv" "$4"; }             # fig A B PART KEY
 pct8() { kv "$out/cmp/$1-vs-$2.$3.t8.kv" diff_percent; }
 
 names=""
-for f in $formats llvmpipe ideal llvmpipe-ideal; do
+for f in $formats softpipe llvmpipe ideal llvmpipe-ideal softpipe-ideal; do
     [ -f "$out/$f.png" ] && crop "$f" && names="$names $f"
 done
 sweep_done=""
@@ -181,12 +185,13 @@ for n in $sweep_bits; do
     [ $sweep = 1 ] && [ -f "$out/dfx$n.png" ] && crop "dfx$n" && sweep_done="$sweep_done $n"
 done
 for f in $names; do
-    case $f in ideal|llvmpipe-ideal) continue ;; esac
+    case $f in ideal|llvmpipe-ideal|softpipe-ideal) continue ;; esac
+    ref=ideal; [ "$f" = softpipe ] && ref=softpipe-ideal
     cmp "$f" float ground
     cmp "$f" float horizon
     [ "$f" = llvmpipe ] || { cmp "$f" llvmpipe ground; cmp "$f" llvmpipe offset; }
-    cmp "$f" ideal offset
-    i=0; while [ $i -lt "$NP" ]; do cmp "$f" ideal "p$i"; i=$((i + 1)); done
+    cmp "$f" $ref offset
+    i=0; while [ $i -lt "$NP" ]; do cmp "$f" $ref "p$i"; i=$((i + 1)); done
 done
 cmp llvmpipe llvmpipe-ideal offset
 i=0; while [ $i -lt "$NP" ]; do cmp llvmpipe llvmpipe-ideal "p$i"; i=$((i + 1)); done
@@ -230,6 +235,7 @@ label() {
     case $1 in
     float) echo "float (reference)" ;;
     llvmpipe) echo "llvmpipe" ;;
+    softpipe) echo "softpipe (float sampler)" ;;
     *) echo "$1" ;;
     esac
 }
@@ -248,15 +254,15 @@ md=$out/texfmt.md
     fi
     echo "**Ground** (the plane to the horizon, ${W}×${G}; its coordinates scaled by $scale, \`$filter\`) against fixpipe's float path and"
     echo "against llvmpipe; **offset panels**: PSNR (dB) of each panel against the same panel"
-    echo "drawn without its offset (fixpipe, float) — what REPEAT should give."
+    echo "drawn without its offset (fixpipe, float; softpipe against its own render without offsets) — what REPEAT should give."
     echo
     echo "| format | ms/frame median (mean) | ground vs float: differing | > 8 LSB | mean | PSNR | ground vs llvmpipe: mean | PSNR |$phdr"
     echo "|---|--:|--:|--:|--:|--:|--:|--:|$pdash"
-    for f in $formats llvmpipe; do
+    for f in $formats softpipe llvmpipe; do
         echo " $names " | grep -q " $f " || { echo "| $(label "$f") | failed | | | | | | |$(for e in $exps; do printf ' |'; done)"; continue; }
         if [ "$f" = llvmpipe ]; then vl="— | —"; else
             vl="$(mean "$f" llvmpipe ground) | $(psnr "$f" llvmpipe ground)"; fi
-        ref=ideal
+        ref=ideal; [ "$f" = softpipe ] && ref=softpipe-ideal
         row="| $(label "$f") | $(msmed "$f") ($(ms "$f")) | $(fig "$f" float ground diff_percent)% | $(pct8 "$f" float ground)% | $(mean "$f" float ground) | $(psnr "$f" float ground) | $vl"
         i=0; while [ $i -lt "$NP" ]; do row="$row | $(psnr "$f" $ref "p$i")"; i=$((i + 1)); done
         echo "$row |"
