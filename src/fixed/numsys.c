@@ -274,14 +274,15 @@ static int64_t f_floor_frac(const struct numsys *ns, ns_val a, uint32_t *frac,
 /* ---- the tables ---- */
 
 #define NS_DFX(nm, w)                                                          \
-   { .name = nm, .summary = "seed 003 dynamic fixed point, 1+4+" #w " bits",  \
+   { .name = nm, .family = NUMSYS_DFX,                                        \
+     .summary = "seed 003 dynamic fixed point, 1+4+" #w " bits",             \
      .dfx = { w }, .from_float = d_from_float, .from_scaled = d_from_scaled,  \
      .to_float = d_to_float,                                                  \
      .add = d_add, .sub = d_sub, .mul = d_mul, .recip = d_recip,              \
      .floor_frac = d_floor_frac }
 
 #define NS_FX(nm, m, n, sum)                                                   \
-   { .name = nm, .summary = sum, .fx = { m, n },                              \
+   { .name = nm, .family = NUMSYS_FIXED, .summary = sum, .fx = { m, n },      \
      .from_float = x_from_float, .from_scaled = x_from_scaled,                \
      .to_float = x_to_float, .add = x_add,                                    \
      .sub = x_sub, .mul = x_mul, .recip = x_recip, .floor_frac = x_floor_frac }
@@ -291,7 +292,7 @@ static const struct numsys ns_main[] = {
    NS_FX("fx16.16", 16, 16, "16.16 fixed point (the GL ES fixed type)"),
    NS_FX("fx8.24", 8, 24, "8.24 fixed point (seed 003: distorts under perspective)"),
    NS_FX("fx24.8", 24, 8, "24.8 fixed point"),
-   { .name = "float", .summary = "IEEE binary32",
+   { .name = "float", .family = NUMSYS_FLOAT, .summary = "IEEE binary32",
      .from_float = f_from_float, .from_scaled = f_from_scaled, .to_float = f_to_float,
      .add = f_add, .sub = f_sub,
      .mul = f_mul, .recip = f_recip, .floor_frac = f_floor_frac },

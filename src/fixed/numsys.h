@@ -28,8 +28,12 @@ struct ns_stats {
    uint64_t flush;
 };
 
+/* What a value of the system is made of: which ns_val member holds it. */
+enum numsys_family { NUMSYS_DFX, NUMSYS_FIXED, NUMSYS_FLOAT };
+
 struct numsys {
-   const char *name;                  /* "dfx24", "fx16.16", "fx8.24", "fx24.8", "float" */
+   const char *name;
+   enum numsys_family family;                  /* "dfx24", "fx16.16", "fx8.24", "fx24.8", "float" */
    const char *summary;
    struct dfx_format dfx;             /* for dfx */
    struct fx_format fx;               /* for fixed */

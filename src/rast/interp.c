@@ -354,7 +354,7 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
 {
    const struct numsys *ns = rc->texfmt ? rc->texfmt : numsys_default();
    struct fr_tex *t = &fr->tex;
-   bool is_float = !strcmp(ns->name, "float");
+   bool is_float = ns->family == NUMSYS_FLOAT;
    t->ns = ns;
    t->fns = numsys_by_name("float");
    t->any_color = false;

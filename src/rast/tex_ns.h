@@ -12,15 +12,11 @@
 #include <string.h>
 #include "rast/tex.h"
 
-enum { TEX_NS_DFX, TEX_NS_FIXED, TEX_NS_FLOAT };
+enum { TEX_NS_DFX = NUMSYS_DFX, TEX_NS_FIXED = NUMSYS_FIXED, TEX_NS_FLOAT = NUMSYS_FLOAT };
 
 static inline int tex_ns_kind(const struct numsys *ns)
 {
-   if (!strncmp(ns->name, "dfx", 3))
-      return TEX_NS_DFX;
-   if (!strcmp(ns->name, "float"))
-      return TEX_NS_FLOAT;
-   return TEX_NS_FIXED;
+   return (int)ns->family;
 }
 
 static inline bool tex_ns_neg(int kind, ns_val a)
