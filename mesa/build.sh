@@ -38,16 +38,20 @@ case ",$DRIVERS," in
     fi ;;
 esac
 
-# Only what the launcher runs: GLX/EGL/GLES2/OSMesa on the software rasterizers.
+# Only what the launcher runs: GLX/EGL/GLES2/OSMesa on the software rasterizers, with
+# Debian's LLVM 15 (the one its own llvmpipe uses) for gallivm: draw's compiled vertex
+# shaders, fixpipe's compiled fragment shaders, and llvmpipe from the same tree. The native
+# file names llvm-config-15: /usr/bin/llvm-config may be another LLVM that meson would take.
 OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true
- -Dplatforms=x11 -Dgallium-drivers=$DRIVERS -Dllvm=disabled -Dvulkan-drivers=
+ --native-file=$REPO/mesa/llvm.ini -Dllvm=enabled -Dshared-llvm=enabled -Dshader-cache=enabled
+ -Dplatforms=x11 -Dgallium-drivers=$DRIVERS -Dvulkan-drivers=
  -Dglx=dri -Dosmesa=true -Degl=enabled -Dgles1=disabled -Dgles2=enabled
  -Dglvnd=false -Dgbm=disabled -Dshared-glapi=enabled
  -Dgallium-vdpau=disabled -Dgallium-va=disabled -Dgallium-xa=disabled
  -Dgallium-omx=disabled -Dgallium-opencl=disabled -Dgallium-nine=false
  -Dbuild-tests=false -Dvalgrind=disabled -Dlibunwind=disabled -Dlmsensors=disabled"
 # shellcheck disable=SC2086,SC2116  # one line of words
-stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS)"
+stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS) $(cat "$REPO/mesa/llvm.ini")"
 
 if [ ! -f "$BUILD/.fixpipe-stamp" ] || [ "$(cat "$BUILD/.fixpipe-stamp")" != "$stamp" ]; then
     rm -f "$BUILD/.fixpipe-stamp"
@@ -79,6 +83,10 @@ if ! meson install -C "$BUILD" --no-rebuild --only-changed --quiet > "$WORK/mesa
     echo "fixpipe: Mesa install failed, full log: $WORK/mesa-install.log" >&2
     exit 1
 fi
+# `./fixpipe run --driver llvmpipe` keeps Debian's Mesa but has no libOSMesa there:
+# a directory with ours alone (its llvmpipe is Debian's, same version and LLVM).
+mkdir -p "$WORK/osmesa-only"
+ln -sfn "$PREFIX/lib/libOSMesa.so.8" "$WORK/osmesa-only/libOSMesa.so.8"
 # (ninja always re-runs git_sha1.h and the devenv links: cheap, and nothing follows from them)
 echo "fixpipe: Mesa ($DRIVERS) ready in $(( $(date +%s) - start )) s:" \
      "libs in $PREFIX/lib, DRI driver in $PREFIX/lib/dri" >&2

@@ -13,6 +13,8 @@
 #include "draw/draw_context.h"
 #include "draw/draw_vbuf.h"
 #include "tgsi/tgsi_exec.h"
+#include "gallivm/lp_bld_init.h"
+#include <llvm-c/Core.h>
 
 #include "fp_context.h"
 #include "fixed/numsys.h"
@@ -34,6 +36,11 @@ static void fp_print_stats(const struct fp_context *fp)
            st->pixels_shaded, st->samples_passed);
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
            fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
+   fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
+           ", quads compiled %" PRIu64 " interpreted %" PRIu64 "\n",
+           fp->llvm_context ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
+           fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.quads_jit,
+           fp->jit_stats.quads_interp);
 }
 
 static void fp_destroy(struct pipe_context *pipe)
@@ -55,6 +62,8 @@ static void fp_destroy(struct pipe_context *pipe)
 
    if (fp->draw)
       draw_destroy(fp->draw);
+   if (fp->llvm_context)
+      LLVMContextDispose(fp->llvm_context);
    if (fp->fs_mach)
       tgsi_exec_machine_destroy(fp->fs_mach);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
@@ -151,7 +160,22 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
          goto fail;
    }
 
-   fp->draw = draw_create_no_llvm(&fp->pipe);
+   /* Compiled shaders: draw's LLVM vertex path and fixpipe's fragment
+    * shaders share one LLVM context, as in llvmpipe. */
+   if (!(fp_env_debug() & FP_DEBUG_NOJIT)) {
+      fp->llvm_context = LLVMContextCreate();
+      if (!fp->llvm_context)
+         goto fail;
+#if LLVM_VERSION_MAJOR >= 15
+      LLVMContextSetOpaquePointers(fp->llvm_context, false);
+#endif
+      fp->draw = draw_create_with_llvm_context(&fp->pipe, fp->llvm_context);
+      /* vertex textures stay on the modeled unit: such shaders run in tgsi_exec */
+      if (fp->draw)
+         draw_vs_sampling_on_exec(fp->draw, true);
+   } else {
+      fp->draw = draw_create_no_llvm(&fp->pipe);
+   }
    if (!fp->draw)
       goto fail;
    draw_texture_sampler(fp->draw, PIPE_SHADER_VERTEX,

@@ -6,6 +6,7 @@
 #include "tgsi/tgsi_scan.h"
 #include "draw/draw_vertex.h"
 #include "rast/rast.h"
+#include "fp_jit.h"
 
 struct draw_context;
 struct draw_stage;
@@ -42,6 +43,10 @@ struct fp_fragment_shader {
    int depth_output;                /* output register, or -1 */
    int color_output[RAST_MAX_CBUFS];
    unsigned num_color_outputs;
+   /* Tiered execution: interpreted until hot, then compiled (fp_fs.c). */
+   uint64_t quads_interpreted;
+   struct fp_jit_variant *jit;
+   bool jit_failed;
 };
 
 struct fp_vertex_shader {
@@ -71,7 +76,7 @@ struct fp_context {
    const struct fp_blend_state *blend;
    const struct fp_dsa_state *dsa;
    const struct fp_rasterizer_state *rasterizer;
-   const struct fp_fragment_shader *fs;
+   struct fp_fragment_shader *fs;
    const struct fp_vertex_shader *vs;
    const struct fp_velems *velems;
 
@@ -87,6 +92,14 @@ struct fp_context {
    struct tgsi_exec_machine *fs_mach;
    struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];
    bool fs_dirty;                  /* shader, constants or samplers changed */
+
+   /* Compiled fragment shading (fp_jit*.c); NULL context with FIXPIPE_DEBUG=nojit. */
+   LLVMContextRef llvm_context;
+   struct fp_jit_context jit_ctx;
+   struct {
+      uint64_t compiled, failed, quads_jit, quads_interp;
+      double compile_ms;
+   } jit_stats;
 
    /* The vertex layout last given to draw and to the model. */
    struct vertex_info vinfo;

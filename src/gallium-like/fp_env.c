@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "util/u_call_once.h"
+#include "util/u_debug.h"
 #include "pipe/p_format.h"
 #include "fp_screen.h"
 #include "fixed/numsys.h"
@@ -15,6 +16,37 @@
 static const struct rast_profile *env_profile;
 static bool env_stats;
 static const struct numsys *env_texfmt;
+static unsigned env_debug;
+
+static const struct debug_named_value fp_debug_flags[] = {
+   { "nojit", FP_DEBUG_NOJIT,
+     "interpret every shader (tgsi_exec; draw's vertex shaders without LLVM)" },
+   { "jitall", FP_DEBUG_JITALL,
+     "compile every fragment shader at its first draw instead of once it is hot" },
+   DEBUG_NAMED_VALUE_END
+};
+
+/* debug_get_flags_option ignores names it does not know: say so, once. */
+static void fp_env_check_flags(const char *var, const char *value,
+                               const struct debug_named_value *flags)
+{
+   if (!value || !strcmp(value, "help"))
+      return;
+   char buf[256];
+   snprintf(buf, sizeof(buf), "%s", value);
+   for (char *save = NULL, *tok = strtok_r(buf, ", ", &save); tok;
+        tok = strtok_r(NULL, ", ", &save)) {
+      bool known = false;
+      for (const struct debug_named_value *f = flags; f->name; f++)
+         known |= !strcmp(tok, f->name);
+      if (known)
+         continue;
+      fprintf(stderr, "fixpipe: unknown %s flag '%s' (accepted:", var, tok);
+      for (const struct debug_named_value *f = flags; f->name; f++)
+         fprintf(stderr, " %s", f->name);
+      fprintf(stderr, ", help); ignored\n");
+   }
+}
 
 static void fp_env_parse(void)
 {
@@ -36,6 +68,10 @@ static void fp_env_parse(void)
       else if (strcmp(s, "0"))
          fprintf(stderr, "fixpipe: bad FIXPIPE_STATS '%s' (accepted: 0, 1); using 0\n", s);
    }
+
+   const char *d = getenv("FIXPIPE_DEBUG");
+   env_debug = (unsigned)debug_get_flags_option("FIXPIPE_DEBUG", fp_debug_flags, 0);
+   fp_env_check_flags("FIXPIPE_DEBUG", d, fp_debug_flags);
 
    const char *t = getenv("FIXPIPE_TEXFMT");
    env_texfmt = numsys_default();
@@ -61,6 +97,12 @@ bool fp_env_stats(void)
 {
    util_call_once(&env_once, fp_env_parse);
    return env_stats;
+}
+
+unsigned fp_env_debug(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_debug;
 }
 
 /* The texture path's number system: the unit (fp_sampler.c) and the

@@ -1,6 +1,14 @@
 /*
- * Fragment shading for the model's quads through tgsi_exec.  The model
- * interpolates; tgsi_exec only runs instructions.  exec_declaration() in
+ * Fragment shading for the model's quads: compiled code (fp_jit_fs.c) or
+ * tgsi_exec.  The model interpolates; the shader only runs instructions.
+ *
+ * Tiered: a shader is interpreted for its first FP_JIT_HOT_QUADS quads and
+ * compiled at the first draw after that (FIXPIPE_DEBUG=jitall: at its first
+ * draw; nojit: never).  Conformance tests draw a few small images with each
+ * of thousands of shaders, where compiling costs more than it saves; real
+ * content shades the same few shaders for millions of quads.
+ *
+ * tgsi_exec: exec_declaration() in
  * tgsi_exec.c would re-interpolate every FS INPUT from InterpCoefs on each
  * run, so after binding, the INPUT declarations are dropped from the
  * machine and Inputs[] are filled from rast_quad.in per quad.
@@ -12,7 +20,9 @@
 #include "tgsi/tgsi_parse.h"
 
 #include "fp_context.h"
+#include "fp_jit.h"
 #include "fp_resource.h"
+#include "fp_screen.h"
 
 static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
 {
@@ -28,8 +38,14 @@ static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
 static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    struct fp_context *fp = ctx;
-   const struct fp_fragment_shader *fs = fp->fs;
+   struct fp_fragment_shader *fs = fp->fs;
    struct tgsi_exec_machine *mach = fp->fs_mach;
+
+   /* hot: compile at the next validation (the next draw, or the next batch
+    * of primitives of this one) */
+   fp->jit_stats.quads_interp++;
+   if (++fs->quads_interpreted == FP_JIT_HOT_QUADS && fp->llvm_context && !fs->jit_failed)
+      fp->fs_dirty = true;
    const struct tgsi_shader_info *info = &fs->info;
    const float c = fs->pixel_center_integer ? 0.0f : 0.5f;
 
@@ -81,6 +97,42 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
    return mask;
 }
 
+static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   struct fp_context *fp = ctx;
+   int32_t lanes[RAST_QUAD_SIZE];
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+      lanes[p] = (q->mask >> p & 1) ? ~0 : 0;
+   fp->fs->jit->func(&fp->jit_ctx, q, out, lanes);
+   fp->jit_stats.quads_jit++;
+   unsigned mask = 0;
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+      mask |= (lanes[p] != 0) << p;
+   return mask & q->mask;
+}
+
+/* Compiles the bound shader when it is due; false leaves it interpreted. */
+static bool fp_fs_compiled(struct fp_context *fp)
+{
+   struct fp_fragment_shader *fs = fp->fs;
+   if (fs->jit)
+      return true;
+   if (!fp->llvm_context || fs->jit_failed)
+      return false;
+   if (fs->quads_interpreted < FP_JIT_HOT_QUADS && !(fp_env_debug() & FP_DEBUG_JITALL))
+      return false;
+   fs->jit = fp_jit_fs_compile(fp, fs->tokens, &fs->info, fs->depth_output, fs->color_output,
+                               fs->num_color_outputs);
+   if (!fs->jit) {
+      fs->jit_failed = true;
+      fp->jit_stats.failed++;
+      return false;
+   }
+   fp->jit_stats.compiled++;
+   fp->jit_stats.compile_ms += fs->jit->compile_ms;
+   return true;
+}
+
 /* A GL program never draws without a fragment shader, but the driver must
  * not crash if asked to: colour 0, nothing discarded. */
 static unsigned fp_fs_shade_none(void *ctx, const struct rast_quad *q,
@@ -119,6 +171,24 @@ void fp_fs_validate(struct fp_context *fp)
       if (bufs[i])
          sizes[i] = c->buffer_size;
    }
+   rs.num_outputs = fp->fs->num_color_outputs;
+   rs.writes_depth = fp->fs->writes_depth;
+   rs.color0_to_all = fp->fs->color0_to_all;
+   rs.may_discard = fp->fs->may_discard;
+
+   if (fp_fs_compiled(fp)) {
+      for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS && i < LP_MAX_TGSI_CONST_BUFFERS; i++) {
+         fp->jit_ctx.constants[i].f = bufs[i];
+         fp->jit_ctx.constants[i].num_elements = sizes[i] / 4;
+      }
+      fp_jit_context_init_sampler(&fp->jit_ctx,
+                                  fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_FRAGMENT]));
+      rs.shade = fp_fs_shade_jit;
+      rast_set_shader(fp->rast, &rs);
+      fp->fs_dirty = false;
+      return;
+   }
+
    tgsi_exec_set_constant_buffers(mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
 
    tgsi_exec_machine_bind_shader(mach, fp->fs->tokens,
@@ -127,10 +197,6 @@ void fp_fs_validate(struct fp_context *fp)
    fp_fs_drop_input_decls(mach);
 
    rs.shade = fp_fs_shade;
-   rs.num_outputs = fp->fs->num_color_outputs;
-   rs.writes_depth = fp->fs->writes_depth;
-   rs.color0_to_all = fp->fs->color0_to_all;
-   rs.may_discard = fp->fs->may_discard;
    rast_set_shader(fp->rast, &rs);
    fp->fs_dirty = false;
 }

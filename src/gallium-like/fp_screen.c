@@ -17,6 +17,7 @@
 #include "util/u_screen.h"
 #include "util/os_misc.h"
 #include "util/os_time.h"
+#include "gallivm/lp_bld_init.h"
 #include "pipe/p_defines.h"
 #include "pipe/p_screen.h"
 #include "draw/draw_context.h"
@@ -310,6 +311,9 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
       return NULL;
 
    s->winsys = winsys;
+   /* gallivm's CPU detection and LLVM set-up, for compiled shaders */
+   if (!(fp_env_debug() & FP_DEBUG_NOJIT))
+      lp_build_init();
    s->profile = fp_env_profile();
    if (!s->profile) {
       FREE(s);

@@ -24,6 +24,10 @@ const struct rast_profile *fp_env_profile(void);
 bool fp_env_stats(void);
 struct numsys;
 const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
+/* FIXPIPE_DEBUG: flags in Mesa's style (FIXPIPE_DEBUG=help lists them) */
+#define FP_DEBUG_NOJIT   (1u << 0)   /* interpret every shader: tgsi_exec, draw without LLVM */
+#define FP_DEBUG_JITALL  (1u << 1)   /* compile fragment shaders at first use, not once hot */
+unsigned fp_env_debug(void);
 
 /* Render-target formats the driver can pack from float (fp_format.c). */
 bool fp_format_renderable(enum pipe_format format);

@@ -86,6 +86,7 @@ static void fp_delete_fs_state(struct pipe_context *pipe, void *cso)
    if (fp->fs == fs)
       fp->fs = NULL;
    draw_delete_fragment_shader(fp->draw, fs->draw_fs);
+   fp_jit_fs_destroy(fs->jit);
    FREE((void *)fs->tokens);
    FREE(fs);
 }

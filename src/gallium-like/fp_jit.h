@@ -1,0 +1,71 @@
+/*
+ * Compiled fragment shaders: gallivm (LLVM) code for one shader, run on the
+ * model's 2x2 quads in place of tgsi_exec.  The shader ALU is not modeled
+ * hardware, so it runs as fast as the host allows; everything the seeds
+ * model stays the model's: the quad's inputs are the model's interpolated
+ * registers, and every texture instruction calls the modeled texture unit
+ * (fp_jit_sample.c) with the same operands tgsi_exec would give it.
+ *
+ * The compiled code depends on the shader alone: constants, samplers and
+ * views are read through fp_jit_context at run time, so there is one
+ * variant per shader and no state key.
+ */
+#ifndef FP_JIT_H
+#define FP_JIT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "gallivm/lp_bld.h"
+struct gallivm_state;   /* lp_bld_jit_types.h does not declare it */
+#include "gallivm/lp_bld_jit_types.h"
+#include "gallivm/lp_bld_limits.h"
+#include "rast/rast.h"
+
+struct tgsi_sampler;
+struct tgsi_shader_info;
+struct tgsi_token;
+struct gallivm_state;
+struct fp_context;
+
+/* What compiled code reads at run time; filled by fp_fs_validate. */
+struct fp_jit_context {
+   struct lp_jit_buffer constants[LP_MAX_TGSI_CONST_BUFFERS];
+   struct tgsi_sampler *sampler;            /* the fragment stage's texture unit glue */
+   /* called from compiled code: fp_jit_sample.c */
+   void (*sample)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler, uint32_t key,
+                  const float coords[5][RAST_QUAD_SIZE], const float lod[RAST_QUAD_SIZE],
+                  float derivs[3][2][RAST_QUAD_SIZE], const int32_t offsets[3][RAST_QUAD_SIZE],
+                  float rgba[4][RAST_QUAD_SIZE]);
+   void (*size)(struct tgsi_sampler *s, uint32_t texture, int32_t lod, int32_t dims[4]);
+};
+
+/* mask: in, the covered pixels (lane = ~0); out, those that survive discard. */
+typedef void (*fp_jit_fs_func)(const struct fp_jit_context *ctx, const struct rast_quad *q,
+                               struct rast_shaded_quad *out, int32_t mask[RAST_QUAD_SIZE]);
+
+struct fp_jit_variant {
+   struct gallivm_state *gallivm;
+   fp_jit_fs_func func;
+   double compile_ms;
+};
+
+/* Compiles the TGSI fragment shader; NULL when gallivm cannot (the caller
+ * keeps interpreting it). */
+struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgsi_token *tokens,
+                                         const struct tgsi_shader_info *info,
+                                         int depth_output, const int *color_output,
+                                         unsigned num_color_outputs);
+void fp_jit_fs_destroy(struct fp_jit_variant *v);
+
+/* fp_jit_sample.c: the sampler gallivm calls for every texture instruction,
+ * and the C functions its code calls. */
+struct lp_build_sampler_soa;
+struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
+                                                  void *nir_shader);
+void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);
+
+/* Quads a shader is interpreted for before it is compiled (see docs/jit.md). */
+#define FP_JIT_HOT_QUADS 16384
+
+#endif

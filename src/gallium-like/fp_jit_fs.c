@@ -1,0 +1,348 @@
+/*
+ * A fragment shader compiled by gallivm for the model's quads.
+ *
+ * TGSI (what st/mesa gives this driver) -> tgsi_to_nir -> lp_build_opt_nir
+ * (llvmpipe's NIR preparation) -> lp_build_nir_soa (llvmpipe's code
+ * generator) -> one LLVM function per shader:
+ *
+ *    void fs(const struct fp_jit_context *ctx, const struct rast_quad *q,
+ *            struct rast_shaded_quad *out, int32_t mask[4])
+ *
+ * It reads the quad exactly as fp_fs_shade (the interpreter) does: the
+ * model's interpolated inputs in q->in, gl_FragCoord from the quad's
+ * position and its Z and 1/w registers, gl_FrontFacing; it writes the colour
+ * outputs and depth to `out` and the surviving lanes to `mask`.  The lanes
+ * are the quad's pixels in the model's order (x, then y), which is the
+ * order gallivm's derivatives assume.
+ */
+#include <stddef.h>
+#include <stdio.h>
+
+#include "compiler/nir/nir.h"
+#include "gallivm/lp_bld_const.h"
+#include "gallivm/lp_bld_flow.h"
+#include "gallivm/lp_bld_init.h"
+#include "gallivm/lp_bld_intr.h"
+#include "gallivm/lp_bld_nir.h"
+#include "gallivm/lp_bld_tgsi.h"
+#include "gallivm/lp_bld_type.h"
+#include "nir/tgsi_to_nir.h"
+#include "pipe/p_shader_tokens.h"
+#include "tgsi/tgsi_scan.h"
+#include "util/os_time.h"
+#include "util/u_memory.h"
+#include "util/ralloc.h"
+
+#include "fp_context.h"
+#include "fp_jit.h"
+#include "fp_screen.h"
+
+/* llvmpipe's NIR options (lp_screen.c, gallivm_nir_options): what
+ * lp_build_nir_soa expects to see lowered. */
+static const struct nir_shader_compiler_options fp_jit_nir_options = {
+   .lower_scmp = true,
+   .lower_flrp32 = true,
+   .lower_flrp64 = true,
+   .lower_fsat = true,
+   .lower_bitfield_insert_to_shifts = true,
+   .lower_bitfield_extract_to_shifts = true,
+   .lower_fdot = true,
+   .lower_fdph = true,
+   .lower_ffma16 = true,
+   .lower_ffma32 = true,
+   .lower_ffma64 = true,
+   .lower_flrp16 = true,
+   .lower_fmod = true,
+   .lower_hadd = true,
+   .lower_uadd_sat = true,
+   .lower_usub_sat = true,
+   .lower_iadd_sat = true,
+   .lower_ldexp = true,
+   .lower_pack_snorm_2x16 = true,
+   .lower_pack_snorm_4x8 = true,
+   .lower_pack_unorm_2x16 = true,
+   .lower_pack_unorm_4x8 = true,
+   .lower_pack_half_2x16 = true,
+   .lower_pack_split = true,
+   .lower_unpack_snorm_2x16 = true,
+   .lower_unpack_snorm_4x8 = true,
+   .lower_unpack_unorm_2x16 = true,
+   .lower_unpack_unorm_4x8 = true,
+   .lower_unpack_half_2x16 = true,
+   .lower_extract_byte = true,
+   .lower_extract_word = true,
+   .lower_insert_byte = true,
+   .lower_insert_word = true,
+   .lower_rotate = true,
+   .lower_uadd_carry = true,
+   .lower_usub_borrow = true,
+   .lower_mul_2x32_64 = true,
+   .lower_ifind_msb = true,
+   .lower_int64_options = nir_lower_imul_2x32_64,
+   .max_unroll_iterations = 32,
+   .use_interpolated_input_intrinsics = true,
+   .lower_to_scalar = true,
+   .lower_uniforms_to_ubo = true,
+   .lower_vector_cmp = true,
+   .lower_device_index_to_zero = true,
+   .support_16bit_alu = true,
+   .lower_fisnormal = true,
+   .use_scoped_barrier = true,
+};
+
+static const void *fp_jit_compiler_options(struct pipe_screen *screen, enum pipe_shader_ir ir,
+                                           enum pipe_shader_type shader)
+{
+   return &fp_jit_nir_options;
+}
+
+/* llvmpipe_finalize_nir, after tgsi_to_nir's own clean-up */
+static char *fp_jit_finalize_nir(struct pipe_screen *screen, void *shader)
+{
+   nir_shader *nir = shader;
+   bool progress;
+   do {
+      progress = false;
+      NIR_PASS(progress, nir, nir_copy_prop);
+      NIR_PASS(progress, nir, nir_opt_dce);
+      NIR_PASS(progress, nir, nir_opt_cse);
+      NIR_PASS(progress, nir, nir_opt_dead_cf);
+   } while (progress);
+   lp_build_opt_nir(nir);
+   return NULL;
+}
+
+static LLVMValueRef fp_byte_ptr(struct gallivm_state *gallivm, LLVMValueRef base, size_t offset,
+                                LLVMTypeRef pointee)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMTypeRef i8 = LLVMInt8TypeInContext(gallivm->context);
+   LLVMValueRef off = lp_build_const_int32(gallivm, (int)offset);
+   LLVMValueRef p = LLVMBuildGEP2(b, i8, base, &off, 1, "");
+   return LLVMBuildBitCast(b, p, LLVMPointerType(pointee, 0), "");
+}
+
+/* The model's quads are float arrays, aligned to 4 bytes, not to a vector. */
+static LLVMValueRef fp_load_vec(struct gallivm_state *gallivm, LLVMValueRef base, size_t offset,
+                                LLVMTypeRef vec)
+{
+   LLVMValueRef v = LLVMBuildLoad2(gallivm->builder, vec,
+                                   fp_byte_ptr(gallivm, base, offset, vec), "");
+   LLVMSetAlignment(v, 4);
+   return v;
+}
+
+static void fp_store(struct gallivm_state *gallivm, LLVMValueRef base, size_t offset,
+                     LLVMValueRef v)
+{
+   LLVMValueRef s = LLVMBuildStore(gallivm->builder, v,
+                                   fp_byte_ptr(gallivm, base, offset, LLVMTypeOf(v)));
+   LLVMSetAlignment(s, 4);
+}
+
+/* gl_FragCoord.xy of the quad's four pixels: (x + (p & 1), y + (p >> 1)) + centre. */
+static LLVMValueRef fp_quad_coord(struct gallivm_state *gallivm, struct lp_type type,
+                                  LLVMValueRef quad, size_t offset, const float step[4],
+                                  float centre)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMTypeRef i32 = LLVMInt32TypeInContext(gallivm->context);
+   struct lp_build_context fbld;
+   lp_build_context_init(&fbld, gallivm, type);
+   LLVMValueRef v = LLVMBuildLoad2(b, i32, fp_byte_ptr(gallivm, quad, offset, i32), "");
+   v = LLVMBuildSIToFP(b, v, fbld.elem_type, "");
+   v = lp_build_broadcast_scalar(&fbld, v);
+   LLVMValueRef steps[4];
+   for (unsigned p = 0; p < 4; p++)
+      steps[p] = lp_build_const_float(gallivm, step[p] + centre);
+   return LLVMBuildFAdd(b, v, LLVMConstVector(steps, 4), "");
+}
+
+static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
+                                const struct tgsi_shader_info *info,
+                                const struct lp_build_sampler_soa *sampler, int depth_output,
+                                const int *color_output, unsigned num_color_outputs)
+{
+   LLVMContextRef lc = gallivm->context;
+   LLVMBuilderRef b = gallivm->builder;
+   const struct lp_type type = lp_type_float_vec(32, 32 * RAST_QUAD_SIZE);
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type);
+   LLVMTypeRef ivec = lp_build_int_vec_type(gallivm, type);
+   LLVMTypeRef i8p = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   LLVMTypeRef args[4] = { i8p, i8p, i8p, LLVMPointerType(ivec, 0) };
+   LLVMTypeRef func_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), args, 4, 0);
+   LLVMValueRef func = LLVMAddFunction(gallivm->module, "fp_fs", func_type);
+   LLVMSetFunctionCallConv(func, LLVMCCallConv);
+   LLVMValueRef ctx = LLVMGetParam(func, 0);
+   LLVMValueRef quad = LLVMGetParam(func, 1);
+   LLVMValueRef out = LLVMGetParam(func, 2);
+   LLVMValueRef mask_ptr = LLVMGetParam(func, 3);
+   for (unsigned i = 0; i < 4; i++)
+      lp_add_function_attr(func, i + 1, LP_FUNC_ATTR_NOALIAS);
+
+   LLVMBasicBlockRef block = LLVMAppendBasicBlockInContext(lc, func, "entry");
+   LLVMPositionBuilderAtEnd(b, block);
+
+   struct lp_build_mask_context mask;
+   LLVMValueRef mask_in = LLVMBuildLoad2(b, ivec, mask_ptr, "");
+   LLVMSetAlignment(mask_in, 4);
+   lp_build_mask_begin(&mask, gallivm, type, mask_in);
+
+   /* Inputs, as fp_fs_shade fills tgsi_exec's. */
+   const bool integer_centre =
+      info->properties[TGSI_PROPERTY_FS_COORD_PIXEL_CENTER] == TGSI_FS_COORD_PIXEL_CENTER_INTEGER;
+   const float centre = integer_centre ? 0.0f : 0.5f;
+   static const float step_x[4] = { 0, 1, 0, 1 }, step_y[4] = { 0, 0, 1, 1 };
+   LLVMValueRef inputs[PIPE_MAX_SHADER_INPUTS][4];
+   memset(inputs, 0, sizeof(inputs));
+   for (unsigned i = 0; i < info->num_inputs && i < RAST_MAX_VARYINGS; i++) {
+      switch (info->input_semantic_name[i]) {
+      case TGSI_SEMANTIC_POSITION:
+         inputs[i][0] = fp_quad_coord(gallivm, type, quad, offsetof(struct rast_quad, x), step_x,
+                                      centre);
+         inputs[i][1] = fp_quad_coord(gallivm, type, quad, offsetof(struct rast_quad, y), step_y,
+                                      centre);
+         inputs[i][2] = fp_load_vec(gallivm, quad, offsetof(struct rast_quad, frag_z), fvec);
+         inputs[i][3] = fp_load_vec(gallivm, quad, offsetof(struct rast_quad, frag_w), fvec);
+         break;
+      case TGSI_SEMANTIC_FACE: {
+         /* tgsi_to_nir reads FACE as a boolean input: lanes of ~0 or 0 */
+         LLVMTypeRef i8 = LLVMInt8TypeInContext(lc);
+         LLVMValueRef ff = LLVMBuildLoad2(
+            b, i8, fp_byte_ptr(gallivm, quad, offsetof(struct rast_quad, front_facing), i8), "");
+         ff = LLVMBuildICmp(b, LLVMIntNE, ff, LLVMConstInt(i8, 0, 0), "");
+         ff = LLVMBuildSExt(b, ff, LLVMInt32TypeInContext(lc), "");
+         struct lp_build_context ibld;
+         lp_build_context_init(&ibld, gallivm, lp_int_type(type));
+         ff = LLVMBuildBitCast(b, lp_build_broadcast_scalar(&ibld, ff), fvec, "");
+         inputs[i][0] = ff;
+         inputs[i][1] = inputs[i][2] = lp_build_const_vec(gallivm, type, 0.0);
+         inputs[i][3] = lp_build_const_vec(gallivm, type, 1.0);
+         break;
+      }
+      default:
+         for (unsigned c = 0; c < 4; c++)
+            inputs[i][c] = fp_load_vec(gallivm, quad,
+                                       offsetof(struct rast_quad, in) +
+                                          ((size_t)i * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
+                                       fvec);
+         break;
+      }
+   }
+   for (unsigned i = 0; i < PIPE_MAX_SHADER_INPUTS; i++)
+      for (unsigned c = 0; c < 4; c++)
+         if (!inputs[i][c])
+            inputs[i][c] = lp_build_const_vec(gallivm, type, 0.0);
+
+   struct lp_bld_tgsi_system_values system_values;
+   memset(&system_values, 0, sizeof(system_values));
+   system_values.front_facing = LLVMBuildLoad2(
+      b, LLVMInt8TypeInContext(lc),
+      fp_byte_ptr(gallivm, quad, offsetof(struct rast_quad, front_facing),
+                  LLVMInt8TypeInContext(lc)), "");
+   system_values.front_facing = LLVMBuildZExt(b, system_values.front_facing,
+                                              LLVMInt32TypeInContext(lc), "");
+
+   LLVMTypeRef buffers_type = LLVMArrayType(lp_build_create_jit_buffer_type(gallivm),
+                                            LP_MAX_TGSI_CONST_BUFFERS);
+   LLVMValueRef consts = fp_byte_ptr(gallivm, ctx, offsetof(struct fp_jit_context, constants),
+                                     buffers_type);
+
+   LLVMValueRef outputs[PIPE_MAX_SHADER_OUTPUTS][4];
+   memset(outputs, 0, sizeof(outputs));
+
+   struct lp_build_tgsi_params params;
+   memset(&params, 0, sizeof(params));
+   params.type = type;
+   params.mask = &mask;
+   params.consts_ptr = consts;
+   params.system_values = &system_values;
+   params.inputs = (const LLVMValueRef(*)[4])inputs;
+   params.context_ptr = ctx;
+   params.sampler = sampler;
+   params.info = info;
+   lp_build_nir_soa(gallivm, nir, &params, outputs);
+
+   /* Outputs: what fp_fs_shade copies out of tgsi_exec's registers. */
+   LLVMValueRef zero = lp_build_const_vec(gallivm, type, 0.0);
+   for (unsigned cb = 0; cb < MAX2(num_color_outputs, 1); cb++) {
+      const int o = cb < num_color_outputs ? color_output[cb] : -1;
+      for (unsigned c = 0; c < 4; c++) {
+         LLVMValueRef v = zero;
+         if (o >= 0 && outputs[o][c])
+            v = LLVMBuildLoad2(b, fvec, outputs[o][c], "");
+         fp_store(gallivm, out,
+                  offsetof(struct rast_shaded_quad, color) +
+                     ((size_t)cb * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
+                  v);
+      }
+   }
+   if (depth_output >= 0) {
+      /* tgsi_to_nir keeps only .z of the POSITION output, as a scalar */
+      LLVMValueRef v = zero;
+      if (outputs[depth_output][0])
+         v = LLVMBuildLoad2(b, fvec, outputs[depth_output][0], "");
+      fp_store(gallivm, out, offsetof(struct rast_shaded_quad, depth), v);
+   }
+
+   LLVMSetAlignment(LLVMBuildStore(b, lp_build_mask_end(&mask), mask_ptr), 4);
+   LLVMBuildRetVoid(b);
+   gallivm_verify_function(gallivm, func);
+   return func;
+}
+
+struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgsi_token *tokens,
+                                         const struct tgsi_shader_info *info,
+                                         int depth_output, const int *color_output,
+                                         unsigned num_color_outputs)
+{
+   const int64_t start = os_time_get_nano();
+   if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS)
+      return NULL;
+   struct fp_jit_variant *v = CALLOC_STRUCT(fp_jit_variant);
+   if (!v)
+      return NULL;
+
+   /* tgsi_to_nir takes the NIR options and the final passes from the
+    * screen: give it gallivm's (the screen's own are for st's NIR-to-TGSI
+    * and must not change), on a copy so every cap it reads is ours. */
+   struct fp_screen jit_screen = *fp_screen(fp->pipe.screen);
+   jit_screen.base.get_compiler_options = fp_jit_compiler_options;
+   jit_screen.base.finalize_nir = fp_jit_finalize_nir;
+   nir_shader *nir = tgsi_to_nir(tokens, &jit_screen.base, false);
+   if (!nir) {
+      FREE(v);
+      return NULL;
+   }
+
+   struct lp_build_sampler_soa *sampler = fp_jit_sampler_create(info, nir);
+   v->gallivm = sampler ? gallivm_create("fixpipe_fs", fp->llvm_context, NULL) : NULL;
+   if (!v->gallivm) {
+      FREE(sampler);
+      ralloc_free(nir);
+      FREE(v);
+      return NULL;
+   }
+   LLVMValueRef func = fp_build_fs(v->gallivm, nir, info, sampler, depth_output, color_output,
+                                   num_color_outputs);
+   gallivm_compile_module(v->gallivm);
+   v->func = (fp_jit_fs_func)gallivm_jit_function(v->gallivm, func);
+   gallivm_free_ir(v->gallivm);
+   FREE(sampler);
+   ralloc_free(nir);
+   v->compile_ms = (double)(os_time_get_nano() - start) / 1e6;
+   if (!v->func) {
+      fp_jit_fs_destroy(v);
+      return NULL;
+   }
+   return v;
+}
+
+void fp_jit_fs_destroy(struct fp_jit_variant *v)
+{
+   if (!v)
+      return;
+   if (v->gallivm)
+      gallivm_destroy(v->gallivm);
+   FREE(v);
+}

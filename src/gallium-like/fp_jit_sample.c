@@ -1,0 +1,331 @@
+/*
+ * Texture instructions of compiled fragment shaders reach the modeled
+ * texture unit.  gallivm asks a lp_build_sampler_soa to emit code for each
+ * texture instruction; ours emits no sampling of its own, only a call into
+ * C with the quad's operands in memory.  The C side puts them where
+ * tgsi_exec puts them (exec_tex, exec_txd, exec_txf, exec_txq) and calls the
+ * same tgsi_sampler the interpreter calls, so the unit sees bit for bit the
+ * operands it would see from tgsi_exec for the same shader values.
+ *
+ * gallivm's operand layout differs from tgsi's in three places, undone
+ * here: a 1D array's layer is moved to coords[2], the shadow reference is
+ * always coords[4], and coordinates a target does not use are undefined
+ * (tgsi passes zeros).
+ */
+#include <string.h>
+
+#include "compiler/nir/nir.h"
+#include "gallivm/lp_bld_const.h"
+#include "gallivm/lp_bld_flow.h"
+#include "gallivm/lp_bld_init.h"
+#include "gallivm/lp_bld_sample.h"
+#include "gallivm/lp_bld_tgsi.h"
+#include "gallivm/lp_bld_type.h"
+#include "tgsi/tgsi_exec.h"
+#include "tgsi/tgsi_util.h"
+#include "util/u_memory.h"
+
+#include "fp_jit.h"
+
+/* the TGSI target of a texture instruction, carried above the gallivm sample key */
+#define FP_KEY_TARGET_SHIFT 16
+
+struct fp_jit_sampler {
+   struct lp_build_sampler_soa base;
+   /* per texture index, from the shader's texture instructions */
+   uint8_t tgsi_target[PIPE_MAX_SHADER_SAMPLER_VIEWS];
+};
+
+static enum tgsi_texture_type fp_tgsi_target(const nir_tex_instr *tex)
+{
+   const bool a = tex->is_array, s = tex->is_shadow;
+   switch (tex->sampler_dim) {
+   case GLSL_SAMPLER_DIM_1D:
+      return a ? (s ? TGSI_TEXTURE_SHADOW1D_ARRAY : TGSI_TEXTURE_1D_ARRAY)
+               : (s ? TGSI_TEXTURE_SHADOW1D : TGSI_TEXTURE_1D);
+   case GLSL_SAMPLER_DIM_3D:
+      return TGSI_TEXTURE_3D;
+   case GLSL_SAMPLER_DIM_CUBE:
+      return a ? (s ? TGSI_TEXTURE_SHADOWCUBE_ARRAY : TGSI_TEXTURE_CUBE_ARRAY)
+               : (s ? TGSI_TEXTURE_SHADOWCUBE : TGSI_TEXTURE_CUBE);
+   case GLSL_SAMPLER_DIM_RECT:
+      return s ? TGSI_TEXTURE_SHADOWRECT : TGSI_TEXTURE_RECT;
+   case GLSL_SAMPLER_DIM_BUF:
+      return TGSI_TEXTURE_BUFFER;
+   default:
+      return a ? (s ? TGSI_TEXTURE_SHADOW2D_ARRAY : TGSI_TEXTURE_2D_ARRAY)
+               : (s ? TGSI_TEXTURE_SHADOW2D : TGSI_TEXTURE_2D);
+   }
+}
+
+/* ---------------------------------------------------------------- C side */
+
+static void fp_jit_sample(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
+                          uint32_t key, const float coords[5][RAST_QUAD_SIZE],
+                          const float lod[RAST_QUAD_SIZE], float derivs[3][2][RAST_QUAD_SIZE],
+                          const int32_t offsets[3][RAST_QUAD_SIZE],
+                          float rgba[4][RAST_QUAD_SIZE])
+{
+   const enum tgsi_texture_type target = key >> FP_KEY_TARGET_SHIFT;
+   const unsigned op = (key & LP_SAMPLER_OP_TYPE_MASK) >> LP_SAMPLER_OP_TYPE_SHIFT;
+   const unsigned lod_control = (key & LP_SAMPLER_LOD_CONTROL_MASK) >> LP_SAMPLER_LOD_CONTROL_SHIFT;
+   const bool array_1d = target == TGSI_TEXTURE_1D_ARRAY || target == TGSI_TEXTURE_SHADOW1D_ARRAY;
+   static const float zero[RAST_QUAD_SIZE];
+   int8_t offset[3] = { 0, 0, 0 };
+   if (key & LP_SAMPLER_OFFSETS)
+      for (unsigned a = 0; a < 3; a++)
+         offset[a] = (int8_t)offsets[a][0];
+
+   /* tgsi's operand slots: coordinates, then the reference, the LOD last */
+   const float *arg[5] = { zero, zero, zero, zero, zero };
+   const int dim = tgsi_util_get_texture_coord_dim(target);
+   for (int i = 0; i < dim && i < 4; i++)
+      arg[i] = coords[i];
+   if (array_1d)
+      arg[1] = coords[2];
+   if (key & LP_SAMPLER_SHADOW) {
+      const int ref = tgsi_util_get_shadow_ref_src_index(target);
+      if (ref >= 0 && ref < 5)
+         arg[ref] = coords[4];
+   }
+
+   if (op == LP_SAMPLER_OP_FETCH) {
+      /* exec_txf: integer coordinates and level, as int bit patterns */
+      const int32_t(*ic)[RAST_QUAD_SIZE] = (const int32_t(*)[RAST_QUAD_SIZE])arg[0];
+      int32_t x[RAST_QUAD_SIZE] = { 0 }, y[RAST_QUAD_SIZE] = { 0 }, z[RAST_QUAD_SIZE] = { 0 };
+      int32_t level[RAST_QUAD_SIZE] = { 0 };
+      const int32_t *ilod = (const int32_t *)lod;
+      memcpy(x, ic, sizeof(x));
+      if (dim > 1 || array_1d)
+         memcpy(y, arg[1], sizeof(y));
+      if (dim > 2)
+         memcpy(z, arg[2], sizeof(z));
+      if (lod_control == LP_SAMPLER_LOD_EXPLICIT)
+         memcpy(level, ilod, sizeof(level));
+      s->get_texel(s, texture, x, y, z, level, offset, rgba);
+      return;
+   }
+
+   enum tgsi_sampler_control control = TGSI_SAMPLER_LOD_NONE;
+   switch (lod_control) {
+   case LP_SAMPLER_LOD_BIAS:
+      control = TGSI_SAMPLER_LOD_BIAS;
+      arg[4] = lod;
+      break;
+   case LP_SAMPLER_LOD_EXPLICIT:
+      control = TGSI_SAMPLER_LOD_EXPLICIT;
+      arg[4] = lod;
+      break;
+   case LP_SAMPLER_LOD_DERIVATIVES:
+      control = TGSI_SAMPLER_DERIVS_EXPLICIT;
+      break;
+   default:
+      break;
+   }
+   s->get_samples(s, texture, sampler, arg[0], arg[1], arg[2], arg[3], arg[4],
+                  control == TGSI_SAMPLER_DERIVS_EXPLICIT ? derivs : NULL, offset, control, rgba);
+}
+
+static void fp_jit_size(struct tgsi_sampler *s, uint32_t texture, int32_t lod, int32_t dims[4])
+{
+   s->get_dims(s, texture, lod, dims);
+}
+
+void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s)
+{
+   ctx->sampler = s;
+   ctx->sample = fp_jit_sample;
+   ctx->size = fp_jit_size;
+}
+
+/* ---------------------------------------------------------------- code */
+
+/* A pointer member of fp_jit_context, loaded in compiled code. */
+static LLVMValueRef fp_ctx_load_ptr(struct gallivm_state *gallivm, LLVMValueRef ctx,
+                                    size_t offset, LLVMTypeRef type)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMTypeRef i8 = LLVMInt8TypeInContext(gallivm->context);
+   LLVMValueRef off = lp_build_const_int32(gallivm, (int)offset);
+   LLVMValueRef p = LLVMBuildBitCast(b, ctx, LLVMPointerType(i8, 0), "");
+   p = LLVMBuildGEP2(b, i8, p, &off, 1, "");
+   p = LLVMBuildBitCast(b, p, LLVMPointerType(type, 0), "");
+   return LLVMBuildLoad2(b, type, p, "");
+}
+
+/* An array of n vectors in the entry block; returns its first element. */
+static LLVMValueRef fp_vec_array(struct gallivm_state *gallivm, LLVMTypeRef vec, unsigned n,
+                                 const char *name)
+{
+   return lp_build_array_alloca(gallivm, vec, lp_build_const_int32(gallivm, n), name);
+}
+
+static void fp_store_vec(struct gallivm_state *gallivm, LLVMValueRef array, LLVMTypeRef vec,
+                         unsigned i, LLVMValueRef v)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMValueRef idx = lp_build_const_int32(gallivm, i);
+   LLVMValueRef p = LLVMBuildGEP2(b, vec, array, &idx, 1, "");
+   if (!v || LLVMIsUndef(v))
+      v = LLVMConstNull(vec);
+   else if (LLVMTypeOf(v) != vec)
+      v = LLVMBuildBitCast(b, v, vec, "");
+   LLVMBuildStore(b, v, p);
+}
+
+static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
+                               struct gallivm_state *gallivm,
+                               const struct lp_sampler_params *params)
+{
+   const struct fp_jit_sampler *js = (const struct fp_jit_sampler *)base;
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMContextRef lc = gallivm->context;
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, params->type);
+   LLVMTypeRef ivec = lp_build_int_vec_type(gallivm, params->type);
+   LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
+   LLVMTypeRef vp = LLVMPointerType(fvec, 0);
+   LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   const unsigned unit = params->texture_index;
+   const enum tgsi_texture_type target =
+      unit < PIPE_MAX_SHADER_SAMPLER_VIEWS ? js->tgsi_target[unit] : TGSI_TEXTURE_2D;
+   const unsigned key = params->sample_key | (unsigned)target << FP_KEY_TARGET_SHIFT;
+
+   LLVMValueRef coords = fp_vec_array(gallivm, fvec, 5, "tex_coords");
+   for (unsigned i = 0; i < 5; i++)
+      fp_store_vec(gallivm, coords, fvec, i, params->coords[i]);
+
+   LLVMValueRef lod = fp_vec_array(gallivm, fvec, 1, "tex_lod");
+   fp_store_vec(gallivm, lod, fvec, 0, params->lod);
+
+   /* Only the derivatives the target has are set (visit_tex leaves the
+    * rest of lp_derivatives uninitialised). */
+   LLVMValueRef derivs = fp_vec_array(gallivm, fvec, 6, "tex_derivs");
+   int nderiv = 0;
+   if (params->derivs) {
+      nderiv = tgsi_util_get_texture_coord_dim(target);
+      if (target == TGSI_TEXTURE_1D_ARRAY || target == TGSI_TEXTURE_SHADOW1D_ARRAY ||
+          target == TGSI_TEXTURE_2D_ARRAY || target == TGSI_TEXTURE_SHADOW2D_ARRAY ||
+          target == TGSI_TEXTURE_CUBE_ARRAY || target == TGSI_TEXTURE_SHADOWCUBE_ARRAY)
+         nderiv--;
+      nderiv = MIN2(nderiv, 3);
+   }
+   for (int a = 0; a < 3; a++) {
+      fp_store_vec(gallivm, derivs, fvec, a * 2, a < nderiv ? params->derivs->ddx[a] : NULL);
+      fp_store_vec(gallivm, derivs, fvec, a * 2 + 1, a < nderiv ? params->derivs->ddy[a] : NULL);
+   }
+
+   LLVMValueRef offsets = fp_vec_array(gallivm, ivec, 3, "tex_offsets");
+   for (unsigned a = 0; a < 3; a++)
+      fp_store_vec(gallivm, offsets, ivec, a,
+                   (params->sample_key & LP_SAMPLER_OFFSETS) ? params->offsets[a] : NULL);
+
+   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4, "texel");
+
+   LLVMValueRef texture = lp_build_const_int32(gallivm, unit);
+   if (params->texture_index_offset) {
+      LLVMValueRef off = params->texture_index_offset;
+      if (LLVMGetTypeKind(LLVMTypeOf(off)) == LLVMVectorTypeKind)
+         off = LLVMBuildExtractElement(b, off, lp_build_const_int32(gallivm, 0), "");
+      texture = LLVMBuildAdd(b, texture, off, "");
+   }
+
+   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp, vp, LLVMPointerType(ivec, 0), vp };
+   LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), arg_types,
+                                          ARRAY_SIZE(arg_types), 0);
+   LLVMValueRef fn = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                     offsetof(struct fp_jit_context, sample),
+                                     LLVMPointerType(fn_type, 0));
+   LLVMValueRef sampler = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                          offsetof(struct fp_jit_context, sampler), voidp);
+   LLVMValueRef args[] = {
+      sampler, texture, lp_build_const_int32(gallivm, params->sampler_index),
+      lp_build_const_int32(gallivm, key), coords, lod, derivs, offsets, rgba,
+   };
+   LLVMBuildCall2(b, fn_type, fn, args, ARRAY_SIZE(args), "");
+
+   for (unsigned c = 0; c < 4; c++) {
+      LLVMValueRef idx = lp_build_const_int32(gallivm, c);
+      LLVMValueRef p = LLVMBuildGEP2(b, fvec, rgba, &idx, 1, "");
+      params->texel[c] = LLVMBuildLoad2(b, fvec, p, "");
+   }
+}
+
+static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
+                               struct gallivm_state *gallivm,
+                               const struct lp_sampler_size_query_params *params)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMContextRef lc = gallivm->context;
+   LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
+   LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   struct lp_build_context int_bld;
+   lp_build_context_init(&int_bld, gallivm, params->int_type);
+   (void)base;
+
+   if (params->samples_only) {
+      /* no multisampled textures: one sample */
+      params->sizes_out[0] = lp_build_const_int_vec(gallivm, params->int_type, 1);
+      return;
+   }
+
+   /* tgsi_exec's TXQ takes the level of the first pixel: so do we. */
+   LLVMValueRef lod = lp_build_const_int32(gallivm, 0);
+   if (params->explicit_lod) {
+      lod = params->explicit_lod;
+      if (LLVMGetTypeKind(LLVMTypeOf(lod)) == LLVMVectorTypeKind)
+         lod = LLVMBuildExtractElement(b, lod, lp_build_const_int32(gallivm, 0), "");
+   }
+   LLVMValueRef texture = lp_build_const_int32(gallivm, params->texture_unit);
+   if (params->texture_unit_offset) {
+      LLVMValueRef off = params->texture_unit_offset;
+      if (LLVMGetTypeKind(LLVMTypeOf(off)) == LLVMVectorTypeKind)
+         off = LLVMBuildExtractElement(b, off, lp_build_const_int32(gallivm, 0), "");
+      texture = LLVMBuildAdd(b, texture, off, "");
+   }
+   LLVMValueRef dims = lp_build_array_alloca(gallivm, i32, lp_build_const_int32(gallivm, 4),
+                                             "dims");
+   LLVMTypeRef arg_types[] = { voidp, i32, i32, LLVMPointerType(i32, 0) };
+   LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), arg_types, 4, 0);
+   LLVMValueRef fn = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                     offsetof(struct fp_jit_context, size),
+                                     LLVMPointerType(fn_type, 0));
+   LLVMValueRef sampler = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                          offsetof(struct fp_jit_context, sampler), voidp);
+   LLVMValueRef args[] = { sampler, texture, lod, dims };
+   LLVMBuildCall2(b, fn_type, fn, args, 4, "");
+   for (unsigned c = 0; c < 4; c++) {
+      LLVMValueRef idx = lp_build_const_int32(gallivm, c);
+      LLVMValueRef v = LLVMBuildLoad2(b, i32, LLVMBuildGEP2(b, i32, dims, &idx, 1, ""), "");
+      params->sizes_out[c] = lp_build_broadcast_scalar(&int_bld, v);
+   }
+}
+
+struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
+                                                  void *shader)
+{
+   struct fp_jit_sampler *js = CALLOC_STRUCT(fp_jit_sampler);
+   if (!js)
+      return NULL;
+   js->base.emit_tex_sample = fp_emit_tex_sample;
+   js->base.emit_size_query = fp_emit_size_query;
+   for (unsigned i = 0; i < PIPE_MAX_SHADER_SAMPLER_VIEWS; i++)
+      js->tgsi_target[i] = info->sampler_targets[i] ? info->sampler_targets[i]
+                                                    : TGSI_TEXTURE_2D;
+   nir_shader *nir = shader;
+   nir_foreach_function(func, nir) {
+      if (!func->impl)
+         continue;
+      nir_foreach_block(block, func->impl) {
+         nir_foreach_instr(instr, block) {
+            if (instr->type != nir_instr_type_tex)
+               continue;
+            const nir_tex_instr *tex = nir_instr_as_tex(instr);
+            if (tex->texture_index < PIPE_MAX_SHADER_SAMPLER_VIEWS &&
+                tex->op != nir_texop_txs && tex->op != nir_texop_query_levels &&
+                tex->op != nir_texop_texture_samples)
+               js->tgsi_target[tex->texture_index] = fp_tgsi_target(tex);
+         }
+      }
+   }
+   return &js->base;
+}

@@ -1,0 +1,123 @@
+#!/bin/bash
+# The replay benchmark: one long apitrace of glmark2-es2 scenes at 640x480
+# (traces/bench/glmark2-long.trace, 1800 frames of build, texture, phong, bump,
+# effect2d, pulsar, desktop, jellyfish and ideas, recorded once through llvmpipe)
+# replayed with `eglretrace -b` through every driver in one run, in turn, on a
+# virtual X server.  Prints each configuration's replay time (the whole process:
+# start-up, shader compilation, 1800 frames), its ratios to llvmpipe and softpipe,
+# its error against llvmpipe (every 100th frame is snapshotted: mean absolute error
+# 0-255 over the frames, and the worst frame's PSNR), and the first-frame latency
+# (the whole process replaying the trace's first frame alone).  A benchmark, not a
+# test: it never fails on a number.
+#
+#   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
+#                         [--trace FILE] [--out DIR]
+#
+# Configurations (NAME):
+#   fixpipe          the default: compiled shaders, tiered (docs/jit.md)
+#   fixpipe-jitall   FIXPIPE_DEBUG=jitall: every fragment shader compiled at first use
+#   fixpipe-nojit    FIXPIPE_DEBUG=nojit: tgsi_exec for every shader, draw without LLVM
+#   fixpipe-before   the fixpipe of another build: --before WORKDIR (its .fixpipe/,
+#                    e.g. a worktree of an earlier commit after its ./fixpipe setup)
+#   softpipe         our Mesa build (with LLVM: draw compiles vertex shaders)
+#   llvmpipe         Debian's system Mesa, the reference (always run, first)
+# Default: fixpipe fixpipe-nojit softpipe llvmpipe (+ fixpipe-before with --before).
+# The median of --runs runs (default 1) is printed; every run's figures are in
+# OUT/results.tsv (default out/replay-bench).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+runs=1 configs="" before="" out=$root/out/replay-bench
+trace=$root/traces/bench/glmark2-long.trace
+while [ $# -gt 0 ]; do
+    case $1 in
+    --runs) runs=$2; shift 2 ;;
+    --configs) configs=$2; shift 2 ;;
+    --before) before=$(cd "$2" && pwd); shift 2 ;;
+    --trace) trace=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "replay-bench: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+    esac
+done
+[ -r "$trace" ] || { echo "replay-bench: no trace $trace" >&2; exit 2; }
+if [ -z "$configs" ]; then
+    configs="fixpipe fixpipe-nojit softpipe llvmpipe"
+    [ -z "$before" ] || configs="fixpipe-before $configs"
+fi
+# llvmpipe first: its snapshots are the reference
+configs="llvmpipe $(echo "$configs" | tr ' ' '\n' | grep -vx llvmpipe | tr '\n' ' ')"
+for c in $configs; do
+    case $c in
+    fixpipe|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe) ;;
+    fixpipe-before) [ -n "$before" ] || { echo "replay-bench: fixpipe-before needs --before WORKDIR" >&2; exit 2; } ;;
+    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-jitall, fixpipe-nojit, fixpipe-before, softpipe, llvmpipe)" >&2; exit 2 ;;
+    esac
+done
+mkdir -p "$out"
+compare=$root/build/std/tools/fp-compare
+[ -x "$compare" ] || { echo "replay-bench: no $compare (./fixpipe setup)" >&2; exit 2; }
+# every 100th frame's swap
+snaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$trace" 2>/dev/null |
+        sed -n 's/^\([0-9][0-9]*\) .*/\1/p' | awk 'NR % 100 == 0' | paste -sd, -)
+[ -n "$snaps" ] || { echo "replay-bench: no eglSwapBuffers in $trace" >&2; exit 2; }
+first=$out/first-frame.trace
+apitrace trim --frames=0 -o "$first" "$trace" >/dev/null 2>&1 ||
+    { echo "replay-bench: apitrace trim failed" >&2; exit 1; }
+
+# run CONFIG TRACE LOG [eglretrace options]: the replay through one configuration;
+# prints the whole process's wall seconds
+run() {
+    local c=$1 t=$2 log=$3 driver=$c work=${FIXPIPE_WORK:-} envs=()
+    shift 3
+    case $c in
+    fixpipe-jitall) driver=fixpipe; envs=(FIXPIPE_DEBUG=jitall) ;;
+    fixpipe-nojit) driver=fixpipe; envs=(FIXPIPE_DEBUG=nojit) ;;
+    fixpipe-before) driver=fixpipe; work=$before/.fixpipe ;;
+    esac
+    local t0 t1
+    t0=$(date +%s.%N)
+    FIXPIPE_WORK=${work:-$root/.fixpipe} "$root/fixpipe" run --xvfb --driver "$driver" -- \
+        env "${envs[@]}" eglretrace -b "$@" "$t" > "$log" 2>&1 || true
+    t1=$(date +%s.%N)
+    awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }'
+}
+
+median() { sort -n | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2); else print "n/a" }'; }
+
+frames=$(apitrace info "$trace" | sed -n 's/.*"FramesCount": \([0-9]*\).*/\1/p')
+echo "replay benchmark: $(basename "$trace"), $frames frames, $runs run(s) a configuration, $(nproc) cores"
+printf 'config\trun\treplay_s\tfirst_frame_s\tmean_err\tworst_psnr\tframes_compared\n' > "$out/results.tsv"
+declare -A replay first err psnr
+for c in $configs; do
+    for r in $(seq 1 "$runs"); do
+        snapdir=$out/$c.$r.snap
+        rm -rf "$snapdir"; mkdir -p "$snapdir"
+        w=$(run "$c" "$trace" "$out/$c.$r.log" --snapshot-prefix="$snapdir/" --snapshot="$snaps")
+        n=$(find "$snapdir" -name '*.png' | wc -l)
+        [ "$n" -gt 0 ] || { echo "  $c: the replay failed (log $out/$c.$r.log)"; w=n/a; }
+        e=n/a p=n/a
+        if [ "$c" != llvmpipe ] && [ "$n" -gt 0 ]; then
+            # mean of the frames' mean errors; the worst frame's PSNR
+            read -r e p < <(for f in "$out"/llvmpipe.1.snap/*.png; do
+                    "$compare" "$snapdir/$(basename "$f")" "$f" --format=kv 2>/dev/null |
+                        awk -F= '$1 == "mean_err" { m = $2 } $1 == "psnr" { q = $2 } END { print m, q }'
+                done | awk '{ s += $1; if (NR == 1 || ($2 != "inf" && ($2 + 0 < w || w == "inf"))) w = $2 }
+                            END { if (NR) printf "%.4f %s\n", s / NR, w; else print "n/a n/a" }')
+        fi
+        f=$(run "$c" "$first" "$out/$c.$r.first.log")
+        printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$r" "$w" "$f" "$e" "$p" "$n" >> "$out/results.tsv"
+    done
+    replay[$c]=$(awk -F'\t' -v c="$c" '$1 == c && $3 != "n/a" { print $3 }' "$out/results.tsv" | median)
+    first[$c]=$(awk -F'\t' -v c="$c" '$1 == c { print $4 }' "$out/results.tsv" | median)
+    err[$c]=$(awk -F'\t' -v c="$c" '$1 == c { print $5 }' "$out/results.tsv" | tail -1)
+    psnr[$c]=$(awk -F'\t' -v c="$c" '$1 == c { print $6 }' "$out/results.tsv" | tail -1)
+done
+
+ratio() { awk -v a="$1" -v b="${2:-}" 'BEGIN { if (a+0 > 0 && b+0 > 0) printf "%.2f", a / b; else print "n/a" }'; }
+echo
+echo "| configuration | replay (s) | fps | time ÷ llvmpipe's | softpipe's time ÷ this | mean error vs llvmpipe (0–255) | worst frame PSNR (dB) | first frame (s) |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+for c in $configs; do
+    fps=$(awk -v s="${replay[$c]}" -v n="$frames" 'BEGIN { if (s+0 > 0) printf "%.1f", n / s; else print "n/a" }')
+    echo "| $c | ${replay[$c]} | $fps | $(ratio "${replay[$c]}" "${replay[llvmpipe]:-}") | $(ratio "${replay[softpipe]:-}" "${replay[$c]}") | ${err[$c]} | ${psnr[$c]} | ${first[$c]} |"
+done
