@@ -11,7 +11,7 @@
 # test: it never fails on a number.
 #
 #   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
-#                         [--trace FILE] [--out DIR]
+#                         [--piglit "LIST ..."] [--trace FILE] [--out DIR]
 #
 # Configurations (NAME):
 #   fixpipe          the default: compiled shaders, tiered (docs/jit.md)
@@ -22,11 +22,13 @@
 #   softpipe         our Mesa build (with LLVM: draw compiles vertex shaders)
 #   llvmpipe         Debian's system Mesa, the reference (always run, first)
 # Default: fixpipe fixpipe-nojit softpipe llvmpipe (+ fixpipe-before with --before).
+# --piglit "gles2 texture" also times `./fixpipe piglit LIST` through fixpipe, and with
+# --before the same list through the other checkout's launcher and build, in this run.
 # The median of --runs runs (default 1) is printed; every run's figures are in
 # OUT/results.tsv (default out/replay-bench).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-runs=1 configs="" before="" out=$root/out/replay-bench
+runs=1 configs="" before="" piglit_lists="" out=$root/out/replay-bench
 trace=$root/traces/bench/glmark2-long.trace
 while [ $# -gt 0 ]; do
     case $1 in
@@ -35,7 +37,8 @@ while [ $# -gt 0 ]; do
     --before) before=$(cd "$2" && pwd); shift 2 ;;
     --trace) trace=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
-    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --piglit) piglit_lists=$2; shift 2 ;;
+    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "replay-bench: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -120,4 +123,24 @@ echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 for c in $configs; do
     fps=$(awk -v s="${replay[$c]}" -v n="$frames" 'BEGIN { if (s+0 > 0) printf "%.1f", n / s; else print "n/a" }')
     echo "| $c | ${replay[$c]} | $fps | $(ratio "${replay[$c]}" "${replay[llvmpipe]:-}") | $(ratio "${replay[softpipe]:-}" "${replay[$c]}") | ${err[$c]} | ${psnr[$c]} | ${first[$c]} |"
+done
+
+[ -n "$piglit_lists" ] || exit 0
+# piglit lists: wall time of the whole `./fixpipe piglit LIST` (its own expectations
+# decide the exit status, printed as is)
+echo
+echo "| piglit list (fixpipe) | this tree (s) | exit | before (s) | exit |"
+echo "|---|---:|---:|---:|---:|"
+for l in $piglit_lists; do
+    t0=$(date +%s.%N)
+    rc=0; "$root/fixpipe" piglit "$l" --driver fixpipe > "$out/piglit-$l.log" 2>&1 || rc=$?
+    a=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+    b=n/a brc=""
+    if [ -n "$before" ]; then
+        t0=$(date +%s.%N)
+        brc=0; (cd "$before" && FIXPIPE_WORK=$before/.fixpipe ./fixpipe piglit "$l" --driver fixpipe) \
+            > "$out/piglit-$l.before.log" 2>&1 || brc=$?
+        b=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+    fi
+    echo "| $l | $a | $rc | $b | $brc |"
 done

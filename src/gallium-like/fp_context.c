@@ -37,10 +37,11 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
            fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
-           ", quads compiled %" PRIu64 " interpreted %" PRIu64 "\n",
+           ", quads compiled %" PRIu64 " interpreted %" PRIu64 "; vertex shaders compiled %"
+           PRIu64 "\n",
            fp->llvm_context ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.quads_jit,
-           fp->jit_stats.quads_interp);
+           fp->jit_stats.quads_interp, fp->jit_stats.vs_compiled);
 }
 
 static void fp_destroy(struct pipe_context *pipe)
@@ -170,9 +171,6 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       LLVMContextSetOpaquePointers(fp->llvm_context, false);
 #endif
       fp->draw = draw_create_with_llvm_context(&fp->pipe, fp->llvm_context);
-      /* vertex textures stay on the modeled unit: such shaders run in tgsi_exec */
-      if (fp->draw)
-         draw_vs_sampling_on_exec(fp->draw, true);
    } else {
       fp->draw = draw_create_no_llvm(&fp->pipe);
    }

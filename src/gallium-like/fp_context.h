@@ -49,8 +49,15 @@ struct fp_fragment_shader {
    bool jit_failed;
 };
 
+/* Tiered like fragment shaders: draw runs it in tgsi_exec until it is hot,
+ * then compiled (draw's LLVM path); one that samples textures stays in
+ * tgsi_exec, where its samples reach the modeled unit (fp_state_shader.c). */
 struct fp_vertex_shader {
-   void *draw_vs;
+   void *draw_vs;                   /* the one bound */
+   void *draw_vs_llvm;              /* once compiled */
+   struct pipe_shader_state state;  /* its own copy of the tokens */
+   bool samples;
+   uint64_t vertices;
 };
 
 struct fp_velems {
@@ -77,7 +84,7 @@ struct fp_context {
    const struct fp_dsa_state *dsa;
    const struct fp_rasterizer_state *rasterizer;
    struct fp_fragment_shader *fs;
-   const struct fp_vertex_shader *vs;
+   struct fp_vertex_shader *vs;
    const struct fp_velems *velems;
 
    struct pipe_framebuffer_state framebuffer;
@@ -98,6 +105,7 @@ struct fp_context {
    struct fp_jit_context jit_ctx;
    struct {
       uint64_t compiled, failed, quads_jit, quads_interp;
+      uint64_t vs_compiled;
       double compile_ms;
    } jit_stats;
 
@@ -130,6 +138,9 @@ void fp_init_clear_functions(struct fp_context *fp);     /* fp_clear.c */
 void fp_init_blit_functions(struct fp_context *fp);      /* fp_blit.c */
 void fp_init_query_functions(struct fp_context *fp);     /* fp_query.c */
 void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
+
+/* fp_state_shader.c: vertex shaders, tiered */
+void fp_vs_count(struct fp_context *fp, uint64_t vertices);
 
 /* fp_vbuf.c */
 struct vbuf_render *fp_create_vbuf_render(struct fp_context *fp);

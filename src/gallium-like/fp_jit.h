@@ -65,7 +65,9 @@ struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info
                                                   void *nir_shader);
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);
 
-/* Quads a shader is interpreted for before it is compiled (see docs/jit.md). */
+/* Quads a fragment shader, vertices a vertex shader, is interpreted for
+ * before it is compiled (see docs/jit.md). */
 #define FP_JIT_HOT_QUADS 16384
+#define FP_JIT_HOT_VERTICES 16384
 
 #endif

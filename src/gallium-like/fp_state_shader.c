@@ -12,6 +12,7 @@
 
 #include "fp_context.h"
 #include "fp_resource.h"
+#include "fp_screen.h"
 
 static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)
 {
@@ -97,12 +98,43 @@ static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_sha
    struct fp_vertex_shader *vs = CALLOC_STRUCT(fp_vertex_shader);
    if (!vs)
       return NULL;
-   vs->draw_vs = draw_create_vertex_shader(fp->draw, templ);
+   vs->state = *templ;
+   if (templ->type == PIPE_SHADER_IR_TGSI && templ->tokens) {
+      struct tgsi_shader_info info;
+      vs->state.tokens = tgsi_dup_tokens(templ->tokens);
+      tgsi_scan_shader(vs->state.tokens, &info);
+      vs->samples = info.file_count[TGSI_FILE_SAMPLER] > 0 ||
+                    info.file_count[TGSI_FILE_SAMPLER_VIEW] > 0;
+   }
+   if (fp->llvm_context)
+      vs->draw_vs = draw_create_vertex_shader_exec(fp->draw, &vs->state);
+   else
+      vs->draw_vs = draw_create_vertex_shader(fp->draw, &vs->state);
    if (!vs->draw_vs) {
+      FREE((void *)vs->state.tokens);
       FREE(vs);
       return NULL;
    }
    return vs;
+}
+
+/* Called before each draw of `vertices` vertices: compiles the bound vertex
+ * shader once it is hot (at once with FIXPIPE_DEBUG=jitall). */
+void fp_vs_count(struct fp_context *fp, uint64_t vertices)
+{
+   struct fp_vertex_shader *vs = fp->vs;
+   vs->vertices += vertices;
+   if (vs->draw_vs_llvm || vs->samples || !fp->llvm_context || !vs->state.tokens)
+      return;
+   if (vs->vertices < FP_JIT_HOT_VERTICES && !(fp_env_debug() & FP_DEBUG_JITALL))
+      return;
+   vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
+   if (!vs->draw_vs_llvm) {
+      vs->samples = true;   /* not again */
+      return;
+   }
+   fp->jit_stats.vs_compiled++;
+   draw_bind_vertex_shader(fp->draw, vs->draw_vs_llvm);
 }
 
 static void fp_bind_vs_state(struct pipe_context *pipe, void *cso)
@@ -110,7 +142,8 @@ static void fp_bind_vs_state(struct pipe_context *pipe, void *cso)
    struct fp_context *fp = fp_context(pipe);
    struct fp_vertex_shader *vs = cso;
    fp->vs = vs;
-   draw_bind_vertex_shader(fp->draw, vs ? vs->draw_vs : NULL);
+   draw_bind_vertex_shader(fp->draw, vs ? (vs->draw_vs_llvm ? vs->draw_vs_llvm : vs->draw_vs)
+                                        : NULL);
    fp->vl_valid = false;
 }
 
@@ -119,6 +152,9 @@ static void fp_delete_vs_state(struct pipe_context *pipe, void *cso)
    struct fp_context *fp = fp_context(pipe);
    struct fp_vertex_shader *vs = cso;
    draw_delete_vertex_shader(fp->draw, vs->draw_vs);
+   if (vs->draw_vs_llvm)
+      draw_delete_vertex_shader(fp->draw, vs->draw_vs_llvm);
+   FREE((void *)vs->state.tokens);
    FREE(vs);
 }
 
