@@ -195,6 +195,7 @@ spec@glsl-1.10@execution@interpolation@interpolation-none-gl_frontcolor-flat-fix
 spec@glsl-1.10@execution@interpolation@interpolation-none-gl_frontcolor-smooth-none
 spec@ext_frag_depth@fragdepth_gles2
 shaders@glsl-fs-fragcoord
+spec@ext_framebuffer_object@fbo-depth-sample-compare
 
 # stencil
 spec@!opengl 1.4@stencil-wrap

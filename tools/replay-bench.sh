@@ -125,6 +125,33 @@ for c in $configs; do
     echo "| $c | ${replay[$c]} | $fps | $(ratio "${replay[$c]}" "${replay[llvmpipe]:-}") | $(ratio "${replay[softpipe]:-}" "${replay[$c]}") | ${err[$c]} | ${psnr[$c]} | ${first[$c]} |"
 done
 
+# the chart: replay time (log) against mean error, one point per configuration
+chart=$root/build/std/tools/fp-chart
+if [ -x "$chart" ]; then
+    {
+        echo "title replay time against error"
+        echo "xlabel replay time (s, log)"
+        echo "ylabel mean error vs llvmpipe (0-255)"
+        echo "logx"
+        echo "legend tl"
+        echo "yrange 0 0.05"
+        for c in $configs; do
+            [ "$c" != llvmpipe ] || continue
+            case $c in
+            fixpipe) rgb=200,40,40 ;; fixpipe-before) rgb=120,120,120 ;; fixpipe-nojit) rgb=230,140,30 ;;
+            fixpipe-jitall) rgb=160,40,160 ;; softpipe) rgb=40,90,200 ;; *) rgb=0,0,0 ;;
+            esac
+            [ "${replay[$c]}" != n/a ] && [ "${err[$c]}" != n/a ] || continue
+            echo "series $rgb points $c"
+            echo "${replay[$c]} ${err[$c]}"
+        done
+        echo "series 40,160,60 points llvmpipe (the reference)"
+        echo "${replay[llvmpipe]} 0"
+    } > "$out/chart.txt"
+    "$chart" "$out/chart.txt" "$out/replay-time-vs-error.png" --size 720x420 >/dev/null 2>&1 &&
+        echo "chart: $out/replay-time-vs-error.png"
+fi
+
 [ -n "$piglit_lists" ] || exit 0
 # piglit lists: wall time of the whole `./fixpipe piglit LIST` (its own expectations
 # decide the exit status, printed as is)

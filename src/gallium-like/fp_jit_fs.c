@@ -278,10 +278,10 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
       }
    }
    if (depth_output >= 0) {
-      /* tgsi_to_nir keeps only .z of the POSITION output, as a scalar */
+      /* gallivm stores FRAG_RESULT_DEPTH in .z, where TGSI has it */
       LLVMValueRef v = zero;
-      if (outputs[depth_output][0])
-         v = LLVMBuildLoad2(b, fvec, outputs[depth_output][0], "");
+      if (outputs[depth_output][2])
+         v = LLVMBuildLoad2(b, fvec, outputs[depth_output][2], "");
       fp_store(gallivm, out, offsetof(struct rast_shaded_quad, depth), v);
    }
 
@@ -291,13 +291,70 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
    return func;
 }
 
+/* What the compiled path takes; any other shader stays interpreted.
+ * tgsi_to_nir aborts on a varying semantic it has no NIR slot for (nir_to_tgsi
+ * gives packed varyings TGSI_SEMANTIC_PATCH, say); the slot names the
+ * variable only, the compiled code reads inputs by TGSI index. */
+static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
+{
+   for (unsigned i = 0; i < info->num_inputs; i++) {
+      const unsigned idx = info->input_semantic_index[i];
+      switch (info->input_semantic_name[i]) {
+      case TGSI_SEMANTIC_POSITION:
+      case TGSI_SEMANTIC_COLOR:
+      case TGSI_SEMANTIC_BCOLOR:
+      case TGSI_SEMANTIC_FOG:
+      case TGSI_SEMANTIC_PSIZE:
+      case TGSI_SEMANTIC_FACE:
+      case TGSI_SEMANTIC_EDGEFLAG:
+      case TGSI_SEMANTIC_PRIMID:
+      case TGSI_SEMANTIC_CLIPDIST:
+      case TGSI_SEMANTIC_CLIPVERTEX:
+      case TGSI_SEMANTIC_PCOORD:
+      case TGSI_SEMANTIC_VIEWPORT_INDEX:
+      case TGSI_SEMANTIC_LAYER:
+         break;
+      case TGSI_SEMANTIC_GENERIC:
+         if (idx >= 32)
+            return false;
+         break;
+      case TGSI_SEMANTIC_TEXCOORD:
+         if (idx >= 8)
+            return false;
+         break;
+      default:
+         return false;
+      }
+   }
+   /* Derivatives: tgsi_exec takes one per quad, dFdx from the bottom row
+    * and dFdy from the left column (micro_ddx, micro_ddy), the convention
+    * the model's implicit LOD shares; gallivm's are per row and per column.
+    * A shader passing dFdx() to textureGrad would pick another LOD compiled
+    * than interpreted, so a shader that takes derivatives stays interpreted
+    * (docs/jit.md). */
+   if (info->opcode_count[TGSI_OPCODE_DDX] || info->opcode_count[TGSI_OPCODE_DDY] ||
+       info->opcode_count[TGSI_OPCODE_DDX_FINE] || info->opcode_count[TGSI_OPCODE_DDY_FINE])
+      return false;
+   for (unsigned i = 0; i < info->num_outputs; i++) {
+      switch (info->output_semantic_name[i]) {
+      case TGSI_SEMANTIC_COLOR:
+      case TGSI_SEMANTIC_POSITION:
+         break;
+      default:
+         return false;   /* stencil export, sample mask: not in what fixpipe exposes */
+      }
+   }
+   return true;
+}
+
 struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgsi_token *tokens,
                                          const struct tgsi_shader_info *info,
                                          int depth_output, const int *color_output,
                                          unsigned num_color_outputs)
 {
    const int64_t start = os_time_get_nano();
-   if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS)
+   if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS ||
+       !fp_jit_shader_ok(info))
       return NULL;
    struct fp_jit_variant *v = CALLOC_STRUCT(fp_jit_variant);
    if (!v)
