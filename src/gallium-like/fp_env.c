@@ -22,7 +22,7 @@ static const struct debug_named_value fp_debug_flags[] = {
    { "nojit", FP_DEBUG_NOJIT,
      "interpret every shader (tgsi_exec; draw's vertex shaders without LLVM)" },
    { "jitall", FP_DEBUG_JITALL,
-     "compile every fragment shader at its first draw instead of once it is hot" },
+     "compile every shader at its first draw instead of once it is hot" },
    DEBUG_NAMED_VALUE_END
 };
 

@@ -26,7 +26,7 @@ struct numsys;
 const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 /* FIXPIPE_DEBUG: flags in Mesa's style (FIXPIPE_DEBUG=help lists them) */
 #define FP_DEBUG_NOJIT   (1u << 0)   /* interpret every shader: tgsi_exec, draw without LLVM */
-#define FP_DEBUG_JITALL  (1u << 1)   /* compile fragment shaders at first use, not once hot */
+#define FP_DEBUG_JITALL  (1u << 1)   /* compile shaders at first use, not once hot */
 unsigned fp_env_debug(void);
 
 /* Render-target formats the driver can pack from float (fp_format.c). */
