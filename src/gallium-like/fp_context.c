@@ -37,11 +37,11 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
            fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
-           ", quads compiled %" PRIu64 " interpreted %" PRIu64 "; vertex shaders compiled %"
-           PRIu64 "\n",
+           " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
+           "; vertex shaders compiled %" PRIu64 "\n",
            fp->llvm_context ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
-           fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.quads_jit,
-           fp->jit_stats.quads_interp, fp->jit_stats.vs_compiled);
+           fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
+           fp->jit_stats.quads_jit, fp->jit_stats.quads_interp, fp->jit_stats.vs_compiled);
 }
 
 static void fp_destroy(struct pipe_context *pipe)

@@ -105,7 +105,7 @@ struct fp_context {
    struct fp_jit_context jit_ctx;
    struct {
       uint64_t compiled, failed, quads_jit, quads_interp;
-      uint64_t vs_compiled;
+      uint64_t vs_compiled, cache_hits;
       double compile_ms;
    } jit_stats;
 

@@ -129,6 +129,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
       return false;
    }
    fp->jit_stats.compiled++;
+   fp->jit_stats.cache_hits += fs->jit->cache_hit;
    fp->jit_stats.compile_ms += fs->jit->compile_ms;
    return true;
 }

@@ -48,6 +48,7 @@ struct fp_jit_variant {
    struct gallivm_state *gallivm;
    fp_jit_fs_func func;
    double compile_ms;
+   bool cache_hit;                  /* code from Mesa's on-disk shader cache */
 };
 
 /* Compiles the TGSI fragment shader; NULL when gallivm cannot (the caller

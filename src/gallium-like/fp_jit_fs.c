@@ -30,6 +30,10 @@
 #include "pipe/p_shader_tokens.h"
 #include "tgsi/tgsi_scan.h"
 #include "util/os_time.h"
+#include "util/disk_cache.h"
+#include "util/mesa-sha1.h"
+#include "gallivm/lp_bld_misc.h"
+#include "tgsi/tgsi_parse.h"
 #include "util/u_memory.h"
 #include "util/ralloc.h"
 
@@ -347,6 +351,25 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
    return true;
 }
 
+/* The shader's key in the on-disk cache: what the generated code depends on.
+ * The driver's own layout (rast_quad, fp_jit_context) is in the cache's id. */
+static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
+                             const int *color_output, unsigned num_color_outputs,
+                             unsigned char key[CACHE_KEY_SIZE], struct disk_cache *cache)
+{
+   struct mesa_sha1 ctx;
+   unsigned char sha1[20];
+   static const char version[] = "fixpipe fs quad 1";
+   _mesa_sha1_init(&ctx);
+   _mesa_sha1_update(&ctx, version, sizeof(version));
+   _mesa_sha1_update(&ctx, tokens, tgsi_num_tokens(tokens) * sizeof(struct tgsi_token));
+   _mesa_sha1_update(&ctx, &depth_output, sizeof(depth_output));
+   _mesa_sha1_update(&ctx, &num_color_outputs, sizeof(num_color_outputs));
+   _mesa_sha1_update(&ctx, color_output, num_color_outputs * sizeof(*color_output));
+   _mesa_sha1_final(&ctx, sha1);
+   disk_cache_compute_key(cache, sha1, sizeof(sha1), key);
+}
+
 struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgsi_token *tokens,
                                          const struct tgsi_shader_info *info,
                                          int depth_output, const int *color_output,
@@ -372,9 +395,23 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
       return NULL;
    }
 
+   /* Mesa's on-disk cache: a hit skips LLVM's code generation (the IR is
+    * still built, as in llvmpipe); gallivm frees the cached data. */
+   struct disk_cache *cache = fp_screen(fp->pipe.screen)->disk_cache;
+   struct lp_cached_code cached = { 0 };
+   unsigned char key[CACHE_KEY_SIZE];
+   if (cache) {
+      fp_jit_cache_key(tokens, depth_output, color_output, num_color_outputs, key, cache);
+      size_t size = 0;
+      cached.data = disk_cache_get(cache, key, &size);
+      cached.data_size = cached.data ? size : 0;
+      v->cache_hit = cached.data != NULL;
+   }
+
    struct lp_build_sampler_soa *sampler = fp_jit_sampler_create(info, nir);
-   v->gallivm = sampler ? gallivm_create("fixpipe_fs", fp->llvm_context, NULL) : NULL;
+   v->gallivm = sampler ? gallivm_create("fixpipe_fs", fp->llvm_context, &cached) : NULL;
    if (!v->gallivm) {
+      free(cached.data);
       FREE(sampler);
       ralloc_free(nir);
       FREE(v);
@@ -384,6 +421,8 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
                                    num_color_outputs);
    gallivm_compile_module(v->gallivm);
    v->func = (fp_jit_fs_func)gallivm_jit_function(v->gallivm, func);
+   if (cache && v->func && !v->cache_hit && cached.data_size && !cached.dont_cache)
+      disk_cache_put(cache, key, cached.data, cached.data_size, NULL);
    gallivm_free_ir(v->gallivm);
    FREE(sampler);
    ralloc_free(nir);

@@ -18,6 +18,10 @@
 #include "util/os_misc.h"
 #include "util/os_time.h"
 #include "gallivm/lp_bld_init.h"
+#include "util/disk_cache.h"
+#include "util/mesa-sha1.h"
+#include "util/u_cpu_detect.h"
+#include <llvm-c/ExecutionEngine.h>
 #include "pipe/p_defines.h"
 #include "pipe/p_screen.h"
 #include "draw/draw_context.h"
@@ -263,9 +267,29 @@ static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format 
    return true;
 }
 
+/* Mesa's on-disk shader cache for compiled fragment shaders, keyed like
+ * llvmpipe's: this driver binary, LLVM's, and the CPU the code is for.
+ * MESA_SHADER_CACHE_DISABLE turns it off as for every Mesa driver. */
+static void fp_disk_cache_create(struct fp_screen *s)
+{
+   struct mesa_sha1 ctx;
+   unsigned char sha1[20];
+   char id[20 * 2 + 1];
+   _mesa_sha1_init(&ctx);
+   if (!disk_cache_get_function_identifier(fp_disk_cache_create, &ctx) ||
+       !disk_cache_get_function_identifier(LLVMLinkInMCJIT, &ctx))
+      return;
+   const struct util_cpu_caps_t *caps = util_get_cpu_caps();
+   _mesa_sha1_update(&ctx, caps, 5 * sizeof(uint32_t));   /* as llvmpipe: the ISA flags */
+   _mesa_sha1_final(&ctx, sha1);
+   disk_cache_format_hex_id(id, sha1, 20 * 2);
+   s->disk_cache = disk_cache_create("fixpipe", id, 0);
+}
+
 static void fp_destroy_screen(struct pipe_screen *screen)
 {
    struct fp_screen *s = fp_screen(screen);
+   disk_cache_destroy(s->disk_cache);
    if (s->winsys->destroy)
       s->winsys->destroy(s->winsys);
    FREE(s);
@@ -312,8 +336,10 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
 
    s->winsys = winsys;
    /* gallivm's CPU detection and LLVM set-up, for compiled shaders */
-   if (!(fp_env_debug() & FP_DEBUG_NOJIT))
+   if (!(fp_env_debug() & FP_DEBUG_NOJIT)) {
       lp_build_init();
+      fp_disk_cache_create(s);
+   }
    s->profile = fp_env_profile();
    if (!s->profile) {
       FREE(s);

@@ -5,10 +5,12 @@
 #include "rast/rast.h"
 
 struct sw_winsys;
+struct disk_cache;
 
 struct fp_screen {
    struct pipe_screen base;
    struct sw_winsys *winsys;
+   struct disk_cache *disk_cache;   /* compiled fragment shaders (fp_jit_fs.c); NULL: none */
    const struct rast_profile *profile;
    char name[64];
 };
