@@ -265,6 +265,11 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
    params.context_ptr = ctx;
    params.sampler = sampler;
    params.info = info;
+   /* Derivatives as tgsi_exec takes them (mesa/patches/0005): one per quad,
+    * dFdx from the bottom row, dFdy from the left column, the convention the
+    * model's implicit LOD shares, so textureGrad(dFdx(c), dFdy(c)) samples the
+    * same LOD compiled as interpreted. */
+   params.tgsi_exec_derivatives = true;
    lp_build_nir_soa(gallivm, nir, &params, outputs);
 
    /* Outputs: what fp_fs_shade copies out of tgsi_exec's registers. */
@@ -330,15 +335,6 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
          return false;
       }
    }
-   /* Derivatives: tgsi_exec takes one per quad, dFdx from the bottom row
-    * and dFdy from the left column (micro_ddx, micro_ddy), the convention
-    * the model's implicit LOD shares; gallivm's are per row and per column.
-    * A shader passing dFdx() to textureGrad would pick another LOD compiled
-    * than interpreted, so a shader that takes derivatives stays interpreted
-    * (docs/jit.md). */
-   if (info->opcode_count[TGSI_OPCODE_DDX] || info->opcode_count[TGSI_OPCODE_DDY] ||
-       info->opcode_count[TGSI_OPCODE_DDX_FINE] || info->opcode_count[TGSI_OPCODE_DDY_FINE])
-      return false;
    for (unsigned i = 0; i < info->num_outputs; i++) {
       switch (info->output_semantic_name[i]) {
       case TGSI_SEMANTIC_COLOR:
@@ -359,7 +355,7 @@ static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
 {
    struct mesa_sha1 ctx;
    unsigned char sha1[20];
-   static const char version[] = "fixpipe fs quad 1";
+   static const char version[] = "fixpipe fs quad 2";   /* 2: tgsi_exec derivatives */
    _mesa_sha1_init(&ctx);
    _mesa_sha1_update(&ctx, version, sizeof(version));
    _mesa_sha1_update(&ctx, tokens, tgsi_num_tokens(tokens) * sizeof(struct tgsi_token));
