@@ -1,0 +1,83 @@
+#!/bin/sh
+# Compiled shaders against the interpreter, and cached code against freshly
+# compiled code: every end-to-end program of tolerances.txt and the demo are
+# rendered through fixpipe three times,
+#   FIXPIPE_DEBUG=nojit                       the reference path (tgsi_exec)
+#   FIXPIPE_DEBUG=jitall, empty shader cache  every shader compiled
+#   FIXPIPE_DEBUG=jitall, same cache again    every shader from the disk cache
+# and the PNGs compared.  The model (coverage, interpolation, depth, stencil,
+# texture unit, back end) is the same code either way, so the e2e programs must
+# match byte for byte.  The demo's lighting is float shader arithmetic, which
+# LLVM may contract or reorder: it may differ by 1 LSB, nothing more.  Cached
+# and compiled code must match byte for byte everywhere.
+# One line per check, then "N passed, N failed"; exit 1 on a failure.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+build=${FP_BUILD_DIR:-$root/build/std}
+out=$build/jit-identity
+rm -rf "$out"
+mkdir -p "$out/cache"
+passed=0 failed=0
+pass() { passed=$((passed + 1)); echo "PASS $1"; }
+fail() { failed=$((failed + 1)); echo "FAIL $1"; }
+
+# render NAME PROGRAM ARGS...: the three images, or a failure line
+render() {
+    name=$1 prog=$2
+    shift 2
+    for m in nojit jitall cached; do
+        flag=$m; [ $m = cached ] && flag=jitall
+        if ! FIXPIPE_DEBUG=$flag FIXPIPE_STATS=1 MESA_SHADER_CACHE_DIR=$out/cache \
+             MESA_SHADER_CACHE_DISABLE=false \
+             "$root/fixpipe" run --no-xvfb --driver fixpipe -- "$prog" -o "$out/$name.$m.png" "$@" \
+             > "$out/$name.$m.log" 2>&1; then
+            fail "$name: the $m run failed ($(tail -n 1 "$out/$name.$m.log"))"
+            return 1
+        fi
+    done
+    # the third run must have taken every compiled shader from the cache
+    set -- $(sed -n 's/.*fragment shaders: tiered, compiled \([0-9]*\) .*from the disk cache \([0-9]*\)).*/\1 \2/p' \
+                 "$out/$name.cached.log" | awk '{ c += $1; h += $2 } END { print c + 0, h + 0 }')
+    if [ "$1" -gt 0 ] && [ "$1" = "$2" ]; then
+        pass "$name: $1 shaders compiled, all from the disk cache"
+    else
+        fail "$name: the cached run compiled $1 shaders, $2 from the disk cache"
+        return 1
+    fi
+}
+
+same() { # NAME A B: byte-identical
+    if cmp -s "$out/$1.$2.png" "$out/$1.$3.png"; then
+        pass "$1: $2 = $3"
+    else
+        fail "$1: $2 and $3 differ ($("$build/tools/fp-compare" "$out/$1.$2.png" "$out/$1.$3.png" | grep differing))"
+    fi
+}
+
+grep -v '^#' "$here/tolerances.txt" | grep -v '^[[:space:]]*$' | while IFS= read -r line; do
+    echo "$line"
+done > "$out/list"
+while IFS= read -r line; do
+    spec=${line%%|*}
+    # shellcheck disable=SC2086
+    set -- $spec
+    name=$1 prog=$2
+    shift 2
+    render "$name" "$build/tests/e2e/$prog" "$@" || continue
+    same "$name" nojit jitall
+    same "$name" jitall cached
+done < "$out/list"
+
+if render demo "$build/tools/fp-demo" --scene all --frames 3; then
+    if "$build/tools/fp-compare" "$out/demo.nojit.png" "$out/demo.jitall.png" \
+           --threshold 1 --max-diff-pixels 0 > "$out/demo.compare" 2>&1; then
+        pass "demo: nojit ~ jitall within 1 LSB ($(grep differing "$out/demo.compare" | sed 's/ *differing: *//'))"
+    else
+        fail "demo: nojit and jitall differ by more than 1 LSB ($(grep 'max error' "$out/demo.compare"))"
+    fi
+    same demo jitall cached
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]
