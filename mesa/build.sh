@@ -43,8 +43,8 @@ esac
 # shaders, fixpipe's compiled fragment shaders, and llvmpipe from the same tree. The native
 # file names llvm-config-15 (through mesa/llvm-config): /usr/bin/llvm-config may be another
 # LLVM that meson would take. LLVM is linked statically: every GL process loads the driver,
-# and loading libLLVM-15.so (its relocations and symbol look-ups) cost each one ~18 ms and
-# 45 MiB, which made piglit's thousands of short processes slower than without LLVM.
+# and loading libLLVM-15.so (its relocations and symbol look-ups) made piglit's thousands of
+# short processes slower than without LLVM.
 # Statically linked, the driver has 110,000 relative relocations: packed (DT_RELR, glibc 2.36)
 # their table shrinks from 2.6 MB, read by every process that loads the driver, to kilobytes.
 OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true

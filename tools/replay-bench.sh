@@ -11,7 +11,7 @@
 # test: it never fails on a number.
 #
 #   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
-#                         [--piglit "LIST ..."] [--trace FILE] [--out DIR]
+#                         [--piglit "LIST ..."] [--piglit-runs N] [--trace FILE] [--out DIR]
 #
 # Configurations (NAME):
 #   fixpipe          the default: compiled shaders, tiered (docs/jit.md)
@@ -23,12 +23,14 @@
 #   llvmpipe         Debian's system Mesa, the reference (always run, first)
 # Default: fixpipe fixpipe-nojit softpipe llvmpipe (+ fixpipe-before with --before).
 # --piglit "gles2 texture" also times `./fixpipe piglit LIST` through fixpipe, and with
-# --before the same list through the other checkout's launcher and build, in this run.
+# --before the same list through the other checkout's launcher and build, in this run;
+# --piglit-runs N (default 1) runs each N times, the two trees alternating, and prints the
+# medians (a list of short processes is noisy on a shared machine).
 # The median of --runs runs (default 1) is printed; every run's figures are in
 # OUT/results.tsv (default out/replay-bench).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-runs=1 configs="" before="" piglit_lists="" out=$root/out/replay-bench
+runs=1 configs="" before="" piglit_lists="" piglit_runs=1 out=$root/out/replay-bench
 trace=$root/traces/bench/glmark2-long.trace
 while [ $# -gt 0 ]; do
     case $1 in
@@ -38,6 +40,7 @@ while [ $# -gt 0 ]; do
     --trace) trace=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --piglit) piglit_lists=$2; shift 2 ;;
+    --piglit-runs) piglit_runs=$2; shift 2 ;;
     -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "replay-bench: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
@@ -48,7 +51,7 @@ if [ -z "$configs" ]; then
     [ -z "$before" ] || configs="fixpipe-before $configs"
 fi
 # llvmpipe first: its snapshots are the reference
-configs="llvmpipe $(echo "$configs" | tr ' ' '\n' | grep -vx llvmpipe | tr '\n' ' ')"
+configs="llvmpipe $(echo "$configs" | tr ' ' '\n' | { grep -vx llvmpipe || true; } | tr '\n' ' ')"
 for c in $configs; do
     case $c in
     fixpipe|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe) ;;
@@ -156,18 +159,31 @@ fi
 # piglit lists: wall time of the whole `./fixpipe piglit LIST` (its own expectations
 # decide the exit status, printed as is)
 echo
-echo "| piglit list (fixpipe) | this tree (s) | exit | before (s) | exit |"
-echo "|---|---:|---:|---:|---:|"
-for l in $piglit_lists; do
+echo "| piglit list (fixpipe) | runs | this tree, median (s) | exit statuses | before, median (s) | exit statuses |"
+echo "|---|---:|---:|---:|---:|---:|"
+# list_time DIR WORK LIST LOG: one `./fixpipe piglit LIST` of the checkout DIR with the
+# build in WORK; prints "SECONDS EXIT"
+list_time() {
+    local t0 rc=0
     t0=$(date +%s.%N)
-    rc=0; "$root/fixpipe" piglit "$l" --driver fixpipe > "$out/piglit-$l.log" 2>&1 || rc=$?
-    a=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
-    b=n/a brc=""
+    (cd "$1" && FIXPIPE_WORK=$2 ./fixpipe piglit "$3" --driver fixpipe) > "$4" 2>&1 || rc=$?
+    awk -v a="$t0" -v b="$(date +%s.%N)" -v rc="$rc" 'BEGIN { printf "%.1f %s\n", b - a, rc }'
+}
+for l in $piglit_lists; do
+    : > "$out/piglit-$l.times"
+    for r in $(seq 1 "$piglit_runs"); do
+        echo "this $(list_time "$root" "${FIXPIPE_WORK:-$root/.fixpipe}" "$l" "$out/piglit-$l.$r.log")" \
+            >> "$out/piglit-$l.times"
+        [ -z "$before" ] ||
+            echo "before $(list_time "$before" "$before/.fixpipe" "$l" "$out/piglit-$l.$r.before.log")" \
+                >> "$out/piglit-$l.times"
+    done
+    a=$(awk '$1 == "this" { print $2 }' "$out/piglit-$l.times" | median)
+    ea=$(awk '$1 == "this" { print $3 }' "$out/piglit-$l.times" | paste -sd, -)
+    b=n/a eb=""
     if [ -n "$before" ]; then
-        t0=$(date +%s.%N)
-        brc=0; (cd "$before" && FIXPIPE_WORK=$before/.fixpipe ./fixpipe piglit "$l" --driver fixpipe) \
-            > "$out/piglit-$l.before.log" 2>&1 || brc=$?
-        b=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+        b=$(awk '$1 == "before" { print $2 }' "$out/piglit-$l.times" | median)
+        eb=$(awk '$1 == "before" { print $3 }' "$out/piglit-$l.times" | paste -sd, -)
     fi
-    echo "| $l | $a | $rc | $b | $brc |"
+    echo "| $l | $piglit_runs | $a | $ea | $b | $eb |"
 done

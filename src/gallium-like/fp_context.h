@@ -57,6 +57,7 @@ struct fp_vertex_shader {
    void *draw_vs_llvm;              /* once compiled */
    struct pipe_shader_state state;  /* its own copy of the tokens */
    bool samples;
+   bool llvm_failed;
    uint64_t vertices;
 };
 

@@ -238,14 +238,9 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
          if (!inputs[i][c])
             inputs[i][c] = lp_build_const_vec(gallivm, type, 0.0);
 
+   /* no system values: the screen has FACE, POSITION and PCOORD as inputs */
    struct lp_bld_tgsi_system_values system_values;
    memset(&system_values, 0, sizeof(system_values));
-   system_values.front_facing = LLVMBuildLoad2(
-      b, LLVMInt8TypeInContext(lc),
-      fp_byte_ptr(gallivm, quad, offsetof(struct rast_quad, front_facing),
-                  LLVMInt8TypeInContext(lc)), "");
-   system_values.front_facing = LLVMBuildZExt(b, system_values.front_facing,
-                                              LLVMInt32TypeInContext(lc), "");
 
    LLVMTypeRef buffers_type = LLVMArrayType(lp_build_create_jit_buffer_type(gallivm),
                                             LP_MAX_TGSI_CONST_BUFFERS);

@@ -153,6 +153,20 @@ static LLVMValueRef fp_ctx_load_ptr(struct gallivm_state *gallivm, LLVMValueRef 
    return LLVMBuildLoad2(b, type, p, "");
 }
 
+/* The texture unit an instruction names: its index plus a dynamic offset
+ * (sampler arrays), whose first lane is taken, as tgsi_exec takes it. */
+static LLVMValueRef fp_texture_unit(struct gallivm_state *gallivm, unsigned unit,
+                                    LLVMValueRef offset)
+{
+   LLVMValueRef texture = lp_build_const_int32(gallivm, unit);
+   if (!offset)
+      return texture;
+   if (LLVMGetTypeKind(LLVMTypeOf(offset)) == LLVMVectorTypeKind)
+      offset = LLVMBuildExtractElement(gallivm->builder, offset,
+                                       lp_build_const_int32(gallivm, 0), "");
+   return LLVMBuildAdd(gallivm->builder, texture, offset, "");
+}
+
 /* An array of n vectors in the entry block; returns its first element. */
 static LLVMValueRef fp_vec_array(struct gallivm_state *gallivm, LLVMTypeRef vec, unsigned n,
                                  const char *name)
@@ -221,13 +235,7 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
 
    LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4, "texel");
 
-   LLVMValueRef texture = lp_build_const_int32(gallivm, unit);
-   if (params->texture_index_offset) {
-      LLVMValueRef off = params->texture_index_offset;
-      if (LLVMGetTypeKind(LLVMTypeOf(off)) == LLVMVectorTypeKind)
-         off = LLVMBuildExtractElement(b, off, lp_build_const_int32(gallivm, 0), "");
-      texture = LLVMBuildAdd(b, texture, off, "");
-   }
+   LLVMValueRef texture = fp_texture_unit(gallivm, unit, params->texture_index_offset);
 
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp, vp, LLVMPointerType(ivec, 0), vp };
    LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), arg_types,
@@ -275,13 +283,8 @@ static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
       if (LLVMGetTypeKind(LLVMTypeOf(lod)) == LLVMVectorTypeKind)
          lod = LLVMBuildExtractElement(b, lod, lp_build_const_int32(gallivm, 0), "");
    }
-   LLVMValueRef texture = lp_build_const_int32(gallivm, params->texture_unit);
-   if (params->texture_unit_offset) {
-      LLVMValueRef off = params->texture_unit_offset;
-      if (LLVMGetTypeKind(LLVMTypeOf(off)) == LLVMVectorTypeKind)
-         off = LLVMBuildExtractElement(b, off, lp_build_const_int32(gallivm, 0), "");
-      texture = LLVMBuildAdd(b, texture, off, "");
-   }
+   LLVMValueRef texture = fp_texture_unit(gallivm, params->texture_unit,
+                                          params->texture_unit_offset);
    LLVMValueRef dims = lp_build_array_alloca(gallivm, i32, lp_build_const_int32(gallivm, 4),
                                              "dims");
    LLVMTypeRef arg_types[] = { voidp, i32, i32, LLVMPointerType(i32, 0) };

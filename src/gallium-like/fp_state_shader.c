@@ -124,13 +124,14 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
 {
    struct fp_vertex_shader *vs = fp->vs;
    vs->vertices += vertices;
-   if (vs->draw_vs_llvm || vs->samples || !fp->llvm_context || !vs->state.tokens)
+   if (vs->draw_vs_llvm || vs->samples || vs->llvm_failed || !fp->llvm_context ||
+       !vs->state.tokens)
       return;
    if (vs->vertices < FP_JIT_HOT_VERTICES && !(fp_env_debug() & FP_DEBUG_JITALL))
       return;
    vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
    if (!vs->draw_vs_llvm) {
-      vs->samples = true;   /* not again */
+      vs->llvm_failed = true;   /* stays interpreted */
       return;
    }
    fp->jit_stats.vs_compiled++;
