@@ -6,7 +6,11 @@
  * trivial shader, and prints the CPU time and covered pixels per second.
  * No GL, no Mesa: rast.h only (docs/dfx.md, "Speed").
  *
- *   fp-bench-persp [--triangles N] [SYSTEM ...]     (default: float dfx24 fx8.24 fx16.16)
+ *   fp-bench-persp [--triangles N] [--scalar] [SYSTEM ...]
+ *                                          (default: float dfx24 fx8.24 fx16.16)
+ *
+ * --scalar: the scalar reference datapath, nothing skipped (RAST_OPT_SCALAR,
+ * RAST_OPT_NOSKIP; docs/datapath.md) instead of dfx24's lanes.
  */
 #define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
@@ -48,6 +52,8 @@ static double cpu_seconds(void)
    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+static unsigned opts;
+
 static int run(const char *sys, int ntri)
 {
    const int W = 1024, H = 1024;
@@ -58,6 +64,7 @@ static int run(const char *sys, int ntri)
    }
    struct rast_context *rc = rast_create(rast_profile_by_name("seed"));
    rast_set_texfmt(rc, ns);
+   rast_set_options(rc, opts);
    uint8_t *fbm = calloc((size_t)W * H, 4);
    if (!rc || !fbm) {
       fprintf(stderr, "fp-bench-persp: out of memory\n");
@@ -122,8 +129,13 @@ int main(int argc, char **argv)
       first = 3;
    }
    if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
-      printf("usage: fp-bench-persp [--triangles N] [SYSTEM ...]  (%s)\n", numsys_names());
+      printf("usage: fp-bench-persp [--triangles N] [--scalar] [SYSTEM ...]  (%s)\n",
+             numsys_names());
       return 0;
+   }
+   if (first < argc && !strcmp(argv[first], "--scalar")) {
+      opts = RAST_OPT_SCALAR | RAST_OPT_NOSKIP;
+      first++;
    }
    if (ntri < 1) {
       fprintf(stderr, "fp-bench-persp: bad --triangles\n");

@@ -18,6 +18,7 @@
 
 #include "fp_context.h"
 #include "fixed/numsys.h"
+#include "rast/lanes.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
 
@@ -36,6 +37,10 @@ static void fp_print_stats(const struct fp_context *fp)
            st->pixels_shaded, st->samples_passed);
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
            fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
+   fprintf(stderr, "  datapath: %s; skipped: quads with a constant 1/w %" PRIu64
+           ", constant component-quads %" PRIu64 "\n",
+           fp_env_debug() & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
+           st->skip_persp_w, st->skip_persp_comp);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
            "; vertex shaders compiled %" PRIu64 "\n",
@@ -146,6 +151,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    if (!fp->rast)
       goto fail;
    rast_set_texfmt(fp->rast, fp_env_texfmt());
+   rast_set_options(fp->rast, fp_env_rast_options());
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
    if (!fp->pipe.stream_uploader)

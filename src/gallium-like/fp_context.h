@@ -93,6 +93,9 @@ struct fp_context {
    unsigned num_vertex_buffers;
    struct pipe_constant_buffer constants[PIPE_SHADER_TYPES][PIPE_MAX_CONSTANT_BUFFERS];
    struct pipe_sampler_view *sampler_views[PIPE_SHADER_TYPES][PIPE_MAX_SHADER_SAMPLER_VIEWS];
+   /* Bumped by every sampler view or sampler state binding: a texture unit
+    * bound since then for the same objects is still right (fp_sampler.c). */
+   uint64_t tex_epoch;
    const struct pipe_sampler_state *samplers[PIPE_SHADER_TYPES][PIPE_MAX_SAMPLERS];
    unsigned sample_mask;
 

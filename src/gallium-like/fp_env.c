@@ -23,6 +23,10 @@ static const struct debug_named_value fp_debug_flags[] = {
      "interpret every shader (tgsi_exec; draw's vertex shaders without LLVM)" },
    { "jitall", FP_DEBUG_JITALL,
      "compile every shader at its first draw instead of once it is hot" },
+   { "scalar", FP_DEBUG_SCALAR,
+     "the model's scalar reference datapath instead of its lanes (same bits)" },
+   { "noskip", FP_DEBUG_NOSKIP,
+     "compute everything the model's skips leave out (same bits)" },
    DEBUG_NAMED_VALUE_END
 };
 
@@ -103,6 +107,12 @@ unsigned fp_env_debug(void)
 {
    util_call_once(&env_once, fp_env_parse);
    return env_debug;
+}
+
+unsigned fp_env_rast_options(void)
+{
+   const unsigned d = fp_env_debug();
+   return (d & FP_DEBUG_SCALAR ? RAST_OPT_SCALAR : 0u) | (d & FP_DEBUG_NOSKIP ? RAST_OPT_NOSKIP : 0u);
 }
 
 /* The texture path's number system: the unit (fp_sampler.c) and the

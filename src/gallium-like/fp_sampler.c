@@ -37,6 +37,10 @@ struct fp_tex_key {
 
 struct fp_tex_slot {
    bool valid;
+   /* the same view and sampler objects, bound in the same epoch, over the
+    * same storage: the unit is right without comparing the key */
+   uint64_t epoch;
+   const void *view, *sampler, *data;
    struct fp_tex_key key;
    struct tex_unit unit;
 };
@@ -233,6 +237,14 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
                                           const struct pipe_sampler_state *ss)
 {
    struct fp_tex_slot *slot = &ts->slot[index];
+   const void *data = fp_resource(fv->base.texture)->data;
+   if (slot->valid && slot->epoch == ts->fp->tex_epoch && slot->view == fv &&
+       slot->sampler == ss && slot->data == data)
+      return &slot->unit;
+   slot->epoch = ts->fp->tex_epoch;
+   slot->view = fv;
+   slot->sampler = ss;
+   slot->data = data;
    struct fp_tex_key key;
    fp_tex_key(&key, fv, ss);
    if (slot->valid && !memcmp(&key, &slot->key, sizeof(key)))
@@ -242,6 +254,7 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    fp_view_desc(fv, &vd);
    fp_sampler_desc(fv, ss, &sd);
    tex_unit_bind(&slot->unit, ts->ns, &vd, &sd, &ts->stats);
+   tex_unit_set_scalar(&slot->unit, fp_env_debug() & FP_DEBUG_SCALAR);
    memcpy(&slot->key, &key, sizeof(key));
    slot->valid = true;
    return &slot->unit;

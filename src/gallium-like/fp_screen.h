@@ -29,7 +29,10 @@ const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 /* FIXPIPE_DEBUG: flags in Mesa's style (FIXPIPE_DEBUG=help lists them) */
 #define FP_DEBUG_NOJIT   (1u << 0)   /* interpret every shader: tgsi_exec, draw without LLVM */
 #define FP_DEBUG_JITALL  (1u << 1)   /* compile shaders at first use, not once hot */
+#define FP_DEBUG_SCALAR  (1u << 2)   /* the model's scalar reference datapath, no lanes */
+#define FP_DEBUG_NOSKIP  (1u << 3)   /* compute what the model's skips leave out */
 unsigned fp_env_debug(void);
+unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
 
 /* Render-target formats the driver can pack from float (fp_format.c). */
 bool fp_format_renderable(enum pipe_format format);

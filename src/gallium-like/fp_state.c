@@ -248,6 +248,7 @@ static void fp_bind_sampler_states(struct pipe_context *pipe, enum pipe_shader_t
    draw_flush(fp->draw);
    for (unsigned i = 0; i < num && start + i < PIPE_MAX_SAMPLERS; i++)
       fp->samplers[shader][start + i] = samplers ? samplers[i] : NULL;
+   fp->tex_epoch++;
    fp->fs_dirty = true;
 }
 
@@ -292,6 +293,7 @@ static void fp_set_sampler_views(struct pipe_context *pipe, enum pipe_shader_typ
          pipe_sampler_view_reference(&fp->sampler_views[shader][slot], v);
       }
    }
+   fp->tex_epoch++;
    fp->fs_dirty = true;
 }
 

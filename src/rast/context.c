@@ -95,6 +95,12 @@ void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs)
    rc->dirty = true;
 }
 
+void rast_set_options(struct rast_context *rc, unsigned opts)
+{
+   rc->opts = opts;
+   rc->dirty = true;
+}
+
 void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns)
 {
    rc->texfmt = ns ? ns : numsys_default();

@@ -120,6 +120,20 @@ struct fr_tex {
    struct ns_stats st;                  /* moved to rast_stats per quad row */
    struct dfx_stats dst;
    bool reference;                      /* the generic quad for every system (tests) */
+   /* ---- the skips of the dfx24 lanes (interp_lanes.c), per primitive:
+    *      a plane whose differences are both zero is its v0 ---- */
+   bool lanes;                          /* t->quad is the lanes' */
+   double lv[1 + FR_MAX_COMP][3];       /* pl[] as the lanes hold them: v0, Δ1, Δ2 */
+   double lrdet;
+   bool skip;                           /* skips taken (not RAST_OPT_NOSKIP) */
+   bool w_const;                        /* 1/w constant: w = recip(v0) once */
+   bool w_one;                          /* and exactly 1: A · w is A */
+   struct dfx w;
+   struct dfx_stats w_ev;               /* recip(v0)'s events, counted per pixel */
+   bool comp_const[FR_MAX_COMP];        /* A/w constant */
+   float comp_val[FR_MAX_COMP];         /* with w constant: the component itself */
+   struct dfx_stats comp_ev[FR_MAX_COMP];
+   uint64_t n_const_w, n_const_comp;    /* moved to rast_stats per quad row */
 };
 
 struct rast_front {

@@ -15,6 +15,7 @@
 #include <string.h>
 #include "rast/front.h"
 #include "fixed/dfx_ops.h"
+#include "rast/lanes.h"
 
 /* ---- The perspective division of the texture path (seeds 002, 003) ----
  *
@@ -160,6 +161,41 @@ static inline unsigned bitlen64(uint64_t v)
    return v ? 64 - (unsigned)__builtin_clzll(v) : 0;
 }
 
+static bool plane_is_const(const struct fr_plane *p)
+{
+   return !p->d1.d.m && !p->d2.d.m;
+}
+
+/* The skips of the dfx24 lanes (interp_lanes.c) for this primitive: which
+ * planes are constant, and what a constant 1/w and the constant
+ * components give, with the range events each pixel would raise. */
+static void lanes_skips_setup(struct rast_front *fr)
+{
+   struct fr_tex *t = &fr->tex;
+   const struct dfx_format f = { DFX_MANT_BITS_SEED };
+   for (unsigned j = 0; j < 1 + fr->npersp; j++) {
+      t->lv[j][0] = dfx_to_double_i(f, t->pl[j].v0.d);
+      t->lv[j][1] = dfx_to_double_i(f, t->pl[j].d1.d);
+      t->lv[j][2] = dfx_to_double_i(f, t->pl[j].d2.d);
+   }
+   t->lrdet = dfx_to_double_i(f, t->rdet.d);
+   t->w_const = t->skip && plane_is_const(&t->pl[0]);
+   t->w_one = false;
+   if (t->w_const) {
+      t->w_ev = (struct dfx_stats){ 0, 0 };
+      t->w = dfx_recip_i(f, t->pl[0].v0.d, &t->w_ev);
+      t->w_one = t->w.s == 0 && t->w.l == 8 && t->w.m == 1u << (DFX_MANT_BITS_SEED - 4);
+   }
+   for (unsigned j = 0; j < fr->npersp; j++) {
+      t->comp_const[j] = t->skip && plane_is_const(&t->pl[1 + j]);
+      if (t->comp_const[j] && t->w_const) {
+         t->comp_ev[j] = (struct dfx_stats){ 0, 0 };
+         t->comp_val[j] = (float)dfx_to_double_i(f, dfx_mul_i(f, t->pl[1 + j].v0.d, t->w,
+                                                              &t->comp_ev[j]));
+      }
+   }
+}
+
 void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
                                    unsigned i0, unsigned i1, unsigned i2)
 {
@@ -199,6 +235,8 @@ void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *f
    for (unsigned j = 0; j < fr->npersp; j++)
       plane_set(&t->pl[1 + j], t->is_color[j] ? t->fns : ns, v0[p0 + j], v1[p0 + j],
                 v2[p0 + j], &st);
+   if (t->lanes)
+      lanes_skips_setup(fr);
    rc->stats.tex_sat += st.sat;
    rc->stats.tex_flush += st.flush;
 }
@@ -281,6 +319,14 @@ tex_quad_impl(struct rast_front *fr, struct rast_quad *q, bool divide, const enu
 static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divide)
 {
    tex_quad_impl(fr, q, divide, TEX_DFX19);
+}
+
+static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, bool divide)
+{
+   int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
+   tex_numerators(&fr->tex, an, bn);
+   if (divide)
+      rast_lanes()->persp_dfx19(fr, q, an, bn);
 }
 
 /* The reference for binary32: tex_quad_float must give its bits and range
@@ -366,7 +412,13 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
       t->any_color |= t->is_color[j];
    }
    t->begin = tex_begin;
-   if (t->reference)
+   t->skip = !(rc->opts & RAST_OPT_NOSKIP);
+   t->w_const = t->w_one = false;
+   t->lanes = !t->reference && !(rc->opts & RAST_OPT_SCALAR) && !t->any_color &&
+              ns->dfx.mant_bits == DFX_MANT_BITS_SEED;
+   if (t->lanes)
+      t->quad = tex_quad_dfx19_lanes;
+   else if (t->reference)
       t->quad = ns->dfx.mant_bits ? tex_quad_dfx : is_float ? tex_quad_float_ref : tex_quad_ns;
    else if (ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
       t->quad = tex_quad_dfx19;
@@ -392,6 +444,9 @@ static inline void tex_end(struct rast_context *rc, struct fr_tex *t)
    rc->stats.tex_sat += t->st.sat + t->dst.sat;
    rc->stats.tex_flush += t->st.flush + t->dst.flush;
    t->st.sat = t->st.flush = t->dst.sat = t->dst.flush = 0;
+   rc->stats.skip_persp_w += t->n_const_w;
+   rc->stats.skip_persp_comp += t->n_const_comp;
+   t->n_const_w = t->n_const_comp = 0;
 }
 
 static inline unsigned span_bits(const struct fr_row *r, int64_t x)

@@ -277,6 +277,10 @@ struct rast_stats {
    /* Range events of the texture path's number system (rast_set_texfmt):
     * saturation or overflow, and flush/underflow to zero. */
    uint64_t tex_sat, tex_flush;
+   /* Work the model skipped (docs/datapath.md), 0 with RAST_OPT_NOSKIP:
+    * quads whose 1/w is constant (one reciprocal per primitive), and
+    * component-quads whose A/w is constant (no plane evaluated). */
+   uint64_t skip_persp_w, skip_persp_comp;
 };
 
 /* ------------------------------------------------------------------ */
@@ -304,6 +308,11 @@ void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs);
  * selects the default, dfx24. */
 struct numsys;
 void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns);
+/* The datapath (FIXPIPE_DEBUG=scalar,noskip): RAST_OPT_SCALAR runs the
+ * scalar reference functions instead of the lanes (lanes.h), RAST_OPT_NOSKIP
+ * computes what the skips leave out.  Every choice gives the same bits. */
+enum { RAST_OPT_SCALAR = 1u << 0, RAST_OPT_NOSKIP = 1u << 1 };
+void rast_set_options(struct rast_context *rc, unsigned opts);
 
 /* Primitives: each vertex is vertex_size float[4] slots. */
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],

@@ -27,6 +27,7 @@ struct rast_context {
    float blend_color[4];
    struct rast_vertex_layout vl;
    struct rast_shader fs;
+   unsigned opts;                   /* RAST_OPT_* */
    const struct numsys *texfmt;     /* never NULL after rast_create */
 
    bool dirty;                      /* re-validate before the next primitive */

@@ -162,12 +162,19 @@ struct tex_unit {
    int kind;                      /* the number system's family (tex_ns.h) */
    ns_val k_zero, k_one, k_half, k_two, k_minus_one;
    ns_val k_texel_offset;        /* linear filtering: 1/2 - 2^-(TEX_WEIGHT_BITS+1) */
+   /* dfx24 on lanes (tex_lanes.c): the registers above as the lanes hold
+    * them, their values in doubles; [l][a]: scale, lo, hi of axis[l][a] */
+   double lk_one, lk_texel_offset;
+   double laxis[TEX_MAX_LEVELS][3][3];
 };
 
 /* Bind: copies the descriptors, converts constants into the number system
  * and chooses the functions.  The view's level data must stay valid. */
 void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
                    const struct tex_sampler_desc *s, struct ns_stats *stats);
+/* The scalar reference quads instead of the lanes' (FIXPIPE_DEBUG=scalar;
+ * the same bits). */
+void tex_unit_set_scalar(struct tex_unit *u, bool scalar);
 
 /* Sample a quad; rgba[channel][pixel], swizzled. */
 void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,

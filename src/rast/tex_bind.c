@@ -5,6 +5,7 @@
  */
 #include <string.h>
 #include "rast/tex_priv.h"
+#include "fixed/dfx.h"
 
 static unsigned target_dims(enum tex_target t)
 {
@@ -37,6 +38,24 @@ static void axis_bounds(const struct tex_unit *u, enum tex_wrap w, int32_t size,
    }
    ax->lo = u->ns->from_float(u->ns, lo, u->stats);
    ax->hi = u->ns->from_float(u->ns, hi, u->stats);
+}
+
+/* The lanes hold a dfx24 register as its value (fixed/dfx_lanes.h). */
+static double lanes_value(const struct tex_unit *u, ns_val v)
+{
+   return u->kind == TEX_NS_DFX && v.d.m ? dfx_to_double(u->ns->dfx, v.d) : 0.0;
+}
+
+static void lanes_constants(struct tex_unit *u)
+{
+   u->lk_one = lanes_value(u, u->k_one);
+   u->lk_texel_offset = lanes_value(u, u->k_texel_offset);
+   for (unsigned l = 0; l < u->view.num_levels; l++)
+      for (unsigned a = 0; a < 3; a++) {
+         u->laxis[l][a][0] = lanes_value(u, u->axis[l][a].scale);
+         u->laxis[l][a][1] = lanes_value(u, u->axis[l][a].lo);
+         u->laxis[l][a][2] = lanes_value(u, u->axis[l][a].hi);
+      }
 }
 
 void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
@@ -104,5 +123,11 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    u->lod_bias = tex_lod_fixed(s->lod_bias);
    u->min_lod = tex_lod_fixed(s->min_lod);
    u->max_lod = tex_lod_fixed(s->max_lod);
-   u->quad = tex_fast_choose(u);
+   u->quad = tex_fast_choose(u, false);
+   lanes_constants(u);
+}
+
+void tex_unit_set_scalar(struct tex_unit *u, bool scalar)
+{
+   u->quad = tex_fast_choose(u, scalar);
 }

@@ -1,4 +1,4 @@
-/* The perspective division's specialised quads (interp.c: tex_quad_dfx19
+/* The perspective division's specialised quads and lanes (interp.c: tex_quad_dfx19
  * with W = 19 a constant, tex_quad_float on float vectors) against the
  * generic quad (rast_interp_perspective_reference: tex_quad_impl with the
  * width read at run time for dfx24, with the scalar binary32 operations
@@ -8,20 +8,32 @@
  * some COLOR and LINEAR, random usage masks), w ratios up to 4000, both
  * edge rules, seed and wide profiles (wide: perspective COLOR in
  * binary32 beside the system), lines as well as triangles; helpers are
- * part of each quad's inputs. */
+ * part of each quad's inputs.  The same primitives go through the lanes
+ * (lanes.h: dfx24 on the default path, every instruction set the CPU
+ * runs), with and without the skips, and through RAST_OPT_SCALAR; some
+ * primitives have a constant 1/w (sometimes 1) and constant components,
+ * so that the skips are taken. */
 #include <math.h>
 #include <string.h>
 #include "tutil.h"
 #include "rast/front.h"
 #include "fixed/numsys.h"
+#include "rast/lanes.h"
 
 #define MAX_VALS (1u << 22)
 
 static struct tctx t;
 static struct rast_vertex_layout vl;
-static float *rec[2];
-static size_t nrec[2];
+/* pass 0: the generic reference; then each mode below */
+static const struct { unsigned opts; int isa; } modes[] = {
+   { 0, 0 }, { RAST_OPT_NOSKIP, 0 }, { 0, 1 }, { RAST_OPT_NOSKIP, 1 }, { RAST_OPT_SCALAR, 0 },
+};
+#define NPASS (1 + (int)(sizeof(modes) / sizeof(modes[0])))
+static float *rec[NPASS];
+static size_t nrec[NPASS];
+static uint64_t skipped_w, skipped_comp;
 static int pass;
+static bool avx2;
 static uint64_t quads, helpers, values;
 
 /* The used components of every quad, in order, with its position. */
@@ -42,7 +54,7 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
             n += RAST_QUAD_SIZE;
          }
    nrec[pass] = n;
-   if (pass) {
+   if (pass == 1) {
       quads++;
       helpers += 4 - (unsigned)__builtin_popcount(q->mask);
    }
@@ -90,6 +102,7 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
       double cx = 50 + 900 * t_rand(), cy = 50 + 900 * t_rand();
       /* w from 1/2 up to 4000 times that: the far end's 1/w is tiny */
       double wmax = pow(8000.0, t_rand());
+      const double shape = t_rand();       /* 2-D content: one w, maybe 1 */
       float v[3][1 + 8][4];
       memset(v, 0, sizeof v);
       for (int k = 0; k < 3; k++) {
@@ -97,13 +110,21 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
          v[k][0][1] = (float)(cy + size * (t_rand() - 0.5));
          v[k][0][2] = (float)t_rand();
          v[k][0][3] = (float)(1.0 / (0.5 * pow(wmax, t_rand())));
+         if (shape < 0.3)
+            v[k][0][3] = shape < 0.15 ? 1.0f : v[0][0][3];
          for (unsigned s = 1; s <= vl.num_varyings; s++)
             for (int c = 0; c < 4; c++)
-               v[k][s][c] = rnd_attr();
+               v[k][s][c] = shape < 0.5 && c == 1 ? v[0][s][c] : rnd_attr();
       }
       bool line = t_rand() < 0.1;
-      uint64_t e[2];
-      for (pass = 0; pass < 2; pass++) {
+      uint64_t e[NPASS];
+      for (pass = 0; pass < NPASS; pass++) {
+         if (pass) {
+            rast_lanes_set(modes[pass - 1].isa ? &rast_lanes_sse2 : &rast_lanes_avx2);
+            if (!avx2 && !modes[pass - 1].isa)
+               rast_lanes_set(&rast_lanes_sse2);
+            rast_set_options(t.rc, modes[pass - 1].opts);
+         }
          rast_interp_perspective_reference(t.rc, pass == 0);
          nrec[pass] = 0;
          const struct rast_stats *st = rast_get_stats(t.rc);
@@ -118,16 +139,21 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
       }
       events += e[1];
       values += nrec[1];
-      if (nrec[0] != nrec[1] || memcmp(rec[0], rec[1], nrec[0] * sizeof(float)) || e[0] != e[1]) {
-         if (bad++ < 5)
-            CHECK(false, "%s %s primitive %u (%s, %u varyings): %zu/%zu values, "
-                  "events 0x%llx/0x%llx, %s", profile, texfmt, n, line ? "line" : "triangle",
-                  vl.num_varyings, nrec[0], nrec[1], (unsigned long long)e[0],
-                  (unsigned long long)e[1],
-                  nrec[0] == nrec[1] && memcmp(rec[0], rec[1], nrec[0] * sizeof(float))
-                     ? "values differ" : "");
+      for (int p = 1; p < NPASS; p++) {
+         if (nrec[0] != nrec[p] || memcmp(rec[0], rec[p], nrec[0] * sizeof(float)) ||
+             e[0] != e[p]) {
+            if (bad++ < 5)
+               CHECK(false, "%s %s primitive %u (%s, %u varyings), mode %d: %zu/%zu values, "
+                     "events 0x%llx/0x%llx, %s", profile, texfmt, n,
+                     line ? "line" : "triangle", vl.num_varyings, p - 1, nrec[0], nrec[p],
+                     (unsigned long long)e[0], (unsigned long long)e[p],
+                     nrec[0] == nrec[p] && memcmp(rec[0], rec[p], nrec[0] * sizeof(float))
+                        ? "values differ" : "");
+         }
       }
    }
+   skipped_w += rast_get_stats(t.rc)->skip_persp_w;
+   skipped_comp += rast_get_stats(t.rc)->skip_persp_comp;
    t_fini(&t);
    printf("%-5s %-6s %u primitives: %llu differ; range events %llu sat, %llu flush\n",
           profile, texfmt, nprim, (unsigned long long)bad,
@@ -137,10 +163,13 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
 
 int main(void)
 {
-   rec[0] = malloc(MAX_VALS * sizeof(float));
-   rec[1] = malloc(MAX_VALS * sizeof(float));
-   if (!rec[0] || !rec[1])
-      return 1;
+   for (int p = 0; p < NPASS; p++)
+      if (!(rec[p] = malloc(MAX_VALS * sizeof(float))))
+         return 1;
+   __builtin_cpu_init();
+   avx2 = __builtin_cpu_supports("avx2");
+   if (!avx2)
+      printf("no AVX2 on this CPU: the SSE2 lanes only\n");
    t_seed(12345);
    uint64_t ev = 0;
    const unsigned nprim = 3000;
@@ -153,7 +182,10 @@ int main(void)
           (unsigned long long)helpers, (unsigned long long)values);
    CHECK(quads > 10000 && helpers > 1000, "the primitives covered quads with helpers");
    CHECK((ev & 0xffffffffu) > 0 || (ev >> 32) > 0, "range events were exercised");
-   free(rec[0]);
-   free(rec[1]);
+   printf("skips taken: %llu quads with a constant 1/w, %llu constant component-quads\n",
+          (unsigned long long)skipped_w, (unsigned long long)skipped_comp);
+   CHECK(skipped_w > 1000 && skipped_comp > 1000, "the skips were exercised");
+   for (int p = 0; p < NPASS; p++)
+      free(rec[p]);
    return t_summary("persp_fast");
 }

@@ -1,5 +1,6 @@
-/* The texture unit's specialised quad (tex_fast.c, dfx24 and binary32)
- * against its table path (tex_unit_sample_generic): the same bits out and
+/* The texture unit's specialised quads (tex_fast.c, dfx24 and binary32;
+ * dfx24's 2-D quad on lanes, tex_lanes.c, in every instruction set the CPU
+ * runs, and its scalar quad) against its table path (tex_unit_sample_generic): the same bits out and
  * the same range-event counts, on random units (every target but cube,
  * every wrap mode, filters, mip modes, LOD controls, shadow compare,
  * swizzles, decoded and callback formats, 1 to 9 levels) and random
@@ -12,6 +13,7 @@
 #include "rast/tex.h"
 #include "rast/tex_fast.h"
 #include "fixed/numsys.h"
+#include "rast/lanes.h"
 
 static uint64_t rng = 0x9e3779b97f4a7c15ull;
 static uint32_t rnd32(void)
@@ -246,16 +248,25 @@ static void rand_quad(struct tex_quad *q, const struct tex_unit *u)
    }
 }
 
-static uint64_t quads, fast_quads;
+static uint64_t quads, fast_quads, lanes_quads;
 
-static void quads_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit)
+enum mode { LANES_BEST, LANES_SSE2, SCALAR };
+
+static void quads_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit,
+                             enum mode mode)
 {
+   static const char *const mode_names[] = { "", " (SSE2 lanes)", " (scalar)" };
+   __builtin_cpu_init();
+   rast_lanes_set(mode == LANES_SSE2 || !__builtin_cpu_supports("avx2") ? &rast_lanes_sse2
+                                                                       : &rast_lanes_avx2);
    const struct numsys *ns = numsys_by_name(name);
    unsigned bad = 0, fast_units = 0;
    for (unsigned i = 0; i < units; i++) {
       struct tex_unit u;
       struct ns_stats s_fast = { 0, 0 }, s_gen = { 0, 0 };
       rand_unit(&u, ns, &s_fast);
+      if (mode == SCALAR)
+         tex_unit_set_scalar(&u, true);
       s_gen = s_fast;
       CHECK(!!u.quad == (fast && u.view.target != TEX_TARGET_CUBE),
             "%s: specialised quad %s", name, u.quad ? "chosen" : "missing");
@@ -281,11 +292,12 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
                   (unsigned long long)s_fast.flush);
          quads++;
          fast_quads += u.quad != NULL;
+         lanes_quads += u.quad && u.quad == rast_lanes()->tex_dfx19[u.dims - 1];
       }
    }
    CHECK(bad == 0, "%s: %u of %u quads differ", name, bad, units * per_unit);
-   printf("  %-8s %u units (%u specialised) x %u quads: %u differ\n", name, units, fast_units,
-          per_unit, bad);
+   printf("  %-8s %u units (%u specialised) x %u quads%s: %u differ\n", name, units,
+          fast_units, per_unit, mode_names[mode], bad);
 }
 
 int main(void)
@@ -298,10 +310,14 @@ int main(void)
    ops("float", TEX_FK_FLOAT);
    printf("  %llu operations\n", (unsigned long long)op_checks);
    printf("specialised quad vs the table path (bits and range events):\n");
-   quads_vs_generic("dfx24", true, 3000, 200);
-   quads_vs_generic("float", true, 3000, 200);
-   quads_vs_generic("fx16.16", false, 100, 50);   /* no specialisation: the table path */
-   quads_vs_generic("dfx23", false, 100, 50);
+   quads_vs_generic("dfx24", true, 3000, 200, LANES_BEST);
+   quads_vs_generic("dfx24", true, 3000, 200, LANES_SSE2);
+   quads_vs_generic("dfx24", true, 3000, 200, SCALAR);
+   quads_vs_generic("float", true, 3000, 200, LANES_BEST);
+   quads_vs_generic("fx16.16", false, 100, 50, LANES_BEST);   /* the table path */
+   quads_vs_generic("dfx23", false, 100, 50, LANES_BEST);
+   printf("  %llu quads on lanes\n", (unsigned long long)lanes_quads);
+   CHECK(lanes_quads > 300000, "only %llu quads took the lanes", (unsigned long long)lanes_quads);
    CHECK(fast_quads > 1000000, "only %llu quads took the specialised path",
          (unsigned long long)fast_quads);
    return t_summary("tex_fast");

@@ -1,0 +1,330 @@
+/*
+ * The dfx24 data paths of dfx_ops.h (W = 19, the seed's width) on four
+ * lanes at once: the perspective division and the texture unit work on a
+ * quad of pixels, and each lane is the scalar data path, operation for
+ * operation.  The scalar functions stay the reference (FIXPIPE_DEBUG=scalar
+ * selects them); tests/unit/test_dfx_lanes.c holds every function here to
+ * its scalar twin bit for bit, range events included, on millions of
+ * random operands.
+ *
+ * Written with GCC's vector extensions: a branch of the scalar code becomes
+ * a lane mask and a select.  Its users are compiled once per instruction
+ * set (AVX2, and the baseline's SSE2), and the driver picks the set at run
+ * time (src/rast/lanes.c).
+ *
+ * A register on a lane is its value, held exactly in a double (below): the
+ * fields of struct dfx are a function of the value, so the data paths keep
+ * the value and find the fields (the digit L, the mantissa's grid) where
+ * they decide something.  docs/datapath.md argues each step's exactness.
+ * Range events are counted per lane and summed once per quad, so the
+ * totals are the scalar path's.
+ */
+#ifndef FIXPIPE_DFX_LANES_H
+#define FIXPIPE_DFX_LANES_H
+
+#include <stdint.h>
+#include <string.h>
+#include "fixed/dfx_ops.h"
+
+#define DFXL_N 4
+
+/* Every function here is inline: no vector crosses a call, so the
+ * baseline build's warning about the AVX calling convention is moot. */
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+typedef int64_t dfxl_i __attribute__((vector_size(8 * DFXL_N)));
+typedef uint64_t dfxl_u __attribute__((vector_size(8 * DFXL_N)));
+typedef double dfxl_d __attribute__((vector_size(8 * DFXL_N)));
+
+#define DFXL_INLINE static inline __attribute__((always_inline))
+#define DFXL_W 19
+
+struct dfxl {
+   dfxl_d v;            /* the register's value, exactly (below) */
+};
+
+struct dfxl_stats {
+   dfxl_i sat, flush;
+};
+
+DFXL_INLINE dfxl_i dfxl_splat(int64_t v)
+{
+   dfxl_i r = { v, v, v, v };
+   return r;
+}
+
+/* mask ? a : b, mask lanes all ones or all zeros (a vector comparison) */
+DFXL_INLINE dfxl_i dfxl_sel(dfxl_i mask, dfxl_i a, dfxl_i b)
+{
+   return (a & mask) | (b & ~mask);
+}
+
+/* Logical shifts by per-lane counts in 0..63 (the fields are never
+ * negative, and a logical shift is one instruction where an arithmetic
+ * 64-bit one is not). */
+DFXL_INLINE dfxl_i dfxl_shr(dfxl_i a, dfxl_i n)
+{
+   return (dfxl_i)((dfxl_u)a >> (dfxl_u)n);
+}
+
+DFXL_INLINE dfxl_i dfxl_shl(dfxl_i a, dfxl_i n)
+{
+   return (dfxl_i)((dfxl_u)a << (dfxl_u)n);
+}
+
+/* Exact conversions between integers in [0, 2^52) and doubles. */
+#define DFXL_MAGIC 0x4330000000000000LL   /* the bits of 2^52 */
+DFXL_INLINE dfxl_d dfxl_to_d(dfxl_i a)
+{
+   return (dfxl_d)(a | dfxl_splat(DFXL_MAGIC)) - 0x1p52;
+}
+
+/* bitlen of any a >= 0 (below 2^63): a priority encoder in six steps. */
+DFXL_INLINE dfxl_i dfxl_bitlen64(dfxl_i a)
+{
+   dfxl_i n = dfxl_splat(0);
+   for (int b = 32; b >= 1; b >>= 1) {
+      const dfxl_i hi = dfxl_shr(a, dfxl_splat(b)) != 0;
+      n += hi & b;
+      a = dfxl_sel(hi, dfxl_shr(a, dfxl_splat(b)), a);
+   }
+   return n - (a != 0);
+}
+
+/* ---- The register on a lane: its value, exactly, in a double ----
+ *
+ * Every dfx24 value is ±M·2^(4L-47) with M below 2^19: a double holds it
+ * exactly, and so it holds the exact sum of two aligned operands and the
+ * exact 38-bit product of two mantissas.  The data paths then reduce to one
+ * step, the one the scalar code spells out in fields: truncate an exact
+ * value toward zero to the grid of its leading digit, 2^(4L-47) for the
+ * digit L holding its leading one, and check L against 0..15.  Zero is +0.
+ */
+
+DFXL_INLINE dfxl_d dfxl_pow2(dfxl_i e)        /* 2^e, e in -1022..1023 */
+{
+   return (dfxl_d)dfxl_shl(e + 1023, dfxl_splat(52));
+}
+
+DFXL_INLINE dfxl_d dfxl_abs(dfxl_d x)
+{
+   return (dfxl_d)((dfxl_i)x & dfxl_splat(INT64_MAX));
+}
+
+DFXL_INLINE dfxl_d dfxl_seld(dfxl_i mask, dfxl_d a, dfxl_d b)
+{
+   return (dfxl_d)dfxl_sel(mask, (dfxl_i)a, (dfxl_i)b);
+}
+
+#define DFXL_MAX_MAG (((1 << DFXL_W) - 1) * 0x1p13)   /* M = 2^W - 1 at L = 15 */
+
+DFXL_INLINE dfxl_i dfxl_exponent(dfxl_d x)        /* biased: p + 1023 */
+{
+   return dfxl_shr((dfxl_i)x, dfxl_splat(52)) & 0x7ff;
+}
+
+/* x truncated toward zero to multiples of 2^g, g at most x's exponent - 3:
+ * a double's sign and magnitude are apart, so truncating its magnitude is
+ * clearing the fraction bits below 2^g, c = 52 - (p - g) of them. */
+DFXL_INLINE dfxl_d dfxl_clear_low(dfxl_d x, dfxl_i c)
+{
+   return (dfxl_d)((dfxl_i)x & dfxl_shl(dfxl_splat(-1), c));
+}
+
+/* dfx_finish_i after the data path: the exact result x truncated toward
+ * zero to its digit's grid; above L = 15 the largest magnitude, below
+ * L = 0 zero, both counted where `live`.  An exact zero is +0.
+ *
+ * With x's leading one at 2^p, L = floor((p + 32) / 4) and the grid is
+ * 2^(4L - 47), so p - g = ((p + 32) mod 4) + 15: the mantissa keeps 16 to
+ * 19 bits, and with the biased exponent e = p + 1023 the bits to clear are
+ * 37 - ((e + 1) mod 4).  L > 15 is |x| >= 2^32, L < 0 is |x| < 2^-32. */
+DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, dfxl_i live, struct dfxl_stats *st)
+{
+   const dfxl_d ax = dfxl_abs(x);
+   const dfxl_i nz = ax != 0;
+   const dfxl_i sat = ax >= 0x1p32, flush = nz & (ax < 0x1p-32);
+   st->sat -= sat & live;
+   st->flush -= flush & live;
+   const dfxl_i c = 37 - ((dfxl_exponent(x) + 1) & 3);
+   dfxl_d r = dfxl_clear_low(x, c);
+   const dfxl_d big = (dfxl_d)((dfxl_i)(dfxl_d){ DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG,
+                                                 DFXL_MAX_MAG } |
+                               ((dfxl_i)x & dfxl_splat(INT64_MIN)));
+   r = dfxl_seld(sat, big, r);
+   struct dfxl o = { (dfxl_d)((dfxl_i)r & nz & ~flush) };
+   return o;
+}
+
+DFXL_INLINE struct dfxl dfxl_zero(void)
+{
+   struct dfxl z = { { 0, 0, 0, 0 } };
+   return z;
+}
+
+/* dfx_from_fixed_i: v * 2^-k to nearest, ties away from zero (an integer
+ * up to 2^63 does not fit a double, so this one works on the fields). */
+DFXL_INLINE struct dfxl dfxl_from_fixed(dfxl_i v, int k, struct dfxl_stats *st)
+{
+   const dfxl_i live = v != 0, neg = v < 0;
+   const dfxl_i n = dfxl_sel(neg, -v, v);
+   /* L = floor((bitlen - 1 - k + 32) / 4), biased to stay non-negative */
+   const dfxl_i l = dfxl_shr(dfxl_bitlen64(n) - 1 - k + 32 + 64, dfxl_splat(2)) - 16;
+   const dfxl_i sh = 4 * l - 47 + k;           /* bits of n to drop */
+   const dfxl_i up = sh <= 0;
+   dfxl_i m = dfxl_sel(up, dfxl_shl(n, dfxl_sel(up, -sh, dfxl_splat(0))),
+                       dfxl_shr(n, dfxl_sel(up, dfxl_splat(0), sh)));
+   m += dfxl_shr(n, dfxl_sel(up, dfxl_splat(0), sh - 1)) & ~up & 1;
+   /* a carry into the next digit is one more digit of the same value:
+    * the value below is exact either way, and dfxl_round finds its digit */
+   const dfxl_i lc = dfxl_sel(l < -20, dfxl_splat(-20), dfxl_sel(l > 40, dfxl_splat(40), l));
+   dfxl_d x = dfxl_to_d(m) * dfxl_pow2(4 * lc - 47);
+   x = (dfxl_d)((dfxl_i)x | dfxl_shl(neg & 1, dfxl_splat(63)));
+   return dfxl_round(x, live, st);
+}
+
+/* dfx_add_i: order by magnitude; the smaller truncated to the larger's
+ * grid with one guard digit (the 5-way aligner; 5 digits or more leave
+ * nothing of it); the exact sum; truncated to its own digit's grid. */
+DFXL_INLINE struct dfxl dfxl_add(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
+{
+   const dfxl_i swap = dfxl_abs(b.v) > dfxl_abs(a.v);
+   const dfxl_d hi = dfxl_seld(swap, b.v, a.v), lo = dfxl_seld(swap, a.v, b.v);
+   const dfxl_i eh = dfxl_exponent(hi), el = dfxl_exponent(lo);
+   /* digits apart: floor((e + 1) / 4) differ by 5 or more */
+   const dfxl_i keep = (lo == 0) | (dfxl_shr(eh + 1, dfxl_splat(2)) -
+                                    dfxl_shr(el + 1, dfxl_splat(2)) >= 5);
+   /* the guard digit's grid 2^(4 L_hi - 51): with 4 L_hi = ((eh + 1) & ~3) - 992
+    * the bits of lo below it are 32 - el + ((eh + 1) & ~3), 30 to 49 of them
+    * when lo is within 4 digits */
+   const dfxl_i c = dfxl_sel(keep, dfxl_splat(0), 32 - el + ((eh + 1) & ~3));
+   struct dfxl r = dfxl_round(hi + dfxl_clear_low(lo, c), ~keep, st);
+   r.v = dfxl_seld(keep, hi, r.v);
+   return r;
+}
+
+DFXL_INLINE struct dfxl dfxl_neg(struct dfxl a)
+{
+   a.v = dfxl_seld(a.v == 0, a.v, -a.v);
+   return a;
+}
+
+DFXL_INLINE struct dfxl dfxl_sub(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
+{
+   return dfxl_add(a, dfxl_neg(b), st);
+}
+
+/* dfx_mul_i (Fig. 9): the exact product truncated to W bits. */
+DFXL_INLINE struct dfxl dfxl_mul(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
+{
+   return dfxl_round(a.v * b.v, dfxl_splat(-1), st);
+}
+
+/* dfx_recip_i: the truncated reciprocal.  The double quotient 1/v is
+ * within 2^-53 of the exact one, which is at least 2^-19 of its grid step
+ * away from the next grid point unless it lies on one (M divides the
+ * power of two): truncating the double gives the exact truncation.  1/0
+ * saturates to the largest positive value. */
+DFXL_INLINE struct dfxl dfxl_recip(struct dfxl a, struct dfxl_stats *st)
+{
+   const dfxl_i zero = a.v == 0;
+   const dfxl_d one = { 1, 1, 1, 1 };
+   struct dfxl r = dfxl_round(one / dfxl_seld(zero, one, a.v), ~zero, st);
+   st->sat -= zero;
+   const dfxl_d big = { DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG };
+   r.v = dfxl_seld(zero, big, r.v);
+   return r;
+}
+
+/* dfx_to_double_i, then binary32 (exact: W bits in binary32's range). */
+DFXL_INLINE void dfxl_to_float(struct dfxl a, float out[DFXL_N])
+{
+   typedef float v4f __attribute__((vector_size(4 * DFXL_N)));
+   const v4f f = __builtin_convertvector(a.v, v4f);
+   memcpy(out, &f, sizeof(f));
+}
+
+/* Between struct dfx and lanes. */
+DFXL_INLINE double dfxl_value(struct dfx a)
+{
+   return a.m ? dfx_to_double_i((struct dfx_format){ DFXL_W }, a) : 0.0;
+}
+
+DFXL_INLINE struct dfxl dfxl_load(const struct dfx a[DFXL_N])
+{
+   struct dfxl r;
+   for (int i = 0; i < DFXL_N; i++)
+      r.v[i] = dfxl_value(a[i]);
+   return r;
+}
+
+DFXL_INLINE struct dfxl dfxl_broadcast(struct dfx a)
+{
+   const double v = dfxl_value(a);
+   struct dfxl r = { { v, v, v, v } };
+   return r;
+}
+
+/* The fields of a value (tests, the scalar fall-backs). */
+DFXL_INLINE struct dfx dfxl_fields(double v)
+{
+   uint64_t b;
+   memcpy(&b, &v, sizeof(b));
+   const int e = (int)((b >> 52) & 0x7ff);      /* biased; a value is never subnormal */
+   if (!e)
+      return dfx_zero();
+   /* as dfxl_round: L = (e + 1) / 4 - 248, M = the 53-bit mantissa's top
+    * 16 + (e + 1) mod 4 bits */
+   const uint64_t mant = (b & ((UINT64_C(1) << 52) - 1)) | (UINT64_C(1) << 52);
+   struct dfx r = { (uint8_t)(b >> 63), (uint8_t)(((e + 1) >> 2) - 248),
+                    (uint32_t)(mant >> (37 - ((e + 1) & 3))) };
+   return r;
+}
+
+DFXL_INLINE void dfxl_store(struct dfxl a, struct dfx out[DFXL_N])
+{
+   for (int i = 0; i < DFXL_N; i++)
+      out[i] = dfxl_fields(a.v[i]);
+}
+
+/* ---- What the texture unit adds: floor, the integer input, the coordinate
+ *      input, comparisons (tex_fast.h's scalar operations) ---- */
+
+/* floor(x) for |x| < 2^51: to nearest by the 2^52 trick, then down. */
+DFXL_INLINE dfxl_d dfxl_floor(dfxl_d x)
+{
+   const dfxl_d M = (dfxl_d)(((dfxl_i)x & dfxl_splat(INT64_MIN)) | (dfxl_i)(dfxl_d){
+      0x1p52, 0x1p52, 0x1p52, 0x1p52 });
+   const dfxl_d r = (x + M) - M;
+   return dfxl_seld(r > x, r - 1, r);
+}
+
+/* 2^(g) for the grid g of a nonzero value's digit: g = p - 15 - ((e + 1) mod 4). */
+DFXL_INLINE dfxl_d dfxl_grid(dfxl_d x)
+{
+   const dfxl_i e = dfxl_exponent(x);
+   return (dfxl_d)dfxl_shl(e - 15 - ((e + 1) & 3), dfxl_splat(52));
+}
+
+/* dfx_from_fixed_i of an integer (k = 0) that a double holds: to nearest,
+ * ties away from zero, on the grid of its digit (half a step added to the
+ * magnitude, then truncated; a carry into the next digit lands on a power
+ * of two, which every coarser grid holds). */
+DFXL_INLINE struct dfxl dfxl_from_int(dfxl_d x, struct dfxl_stats *st)
+{
+   const dfxl_d ax = dfxl_abs(x);
+   const dfxl_d h = dfxl_grid(ax) * 0.5;
+   const dfxl_d up = ax + dfxl_seld(ax == 0, (dfxl_d){ 0, 0, 0, 0 }, h);
+   const dfxl_d sgn = (dfxl_d)((dfxl_i)x & dfxl_splat(INT64_MIN));
+   return dfxl_round((dfxl_d)((dfxl_i)up | (dfxl_i)sgn), dfxl_splat(-1), st);
+}
+
+DFXL_INLINE void dfxl_stats_add(struct dfx_stats *to, struct dfxl_stats st)
+{
+   for (int i = 0; i < DFXL_N; i++) {
+      to->sat += (uint64_t)st.sat[i];
+      to->flush += (uint64_t)st.flush[i];
+   }
+}
+
+#endif

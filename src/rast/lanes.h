@@ -1,0 +1,39 @@
+/*
+ * The model's datapath on lanes: the quad's four pixels at once through
+ * the same data paths as the scalar code (src/fixed/dfx_lanes.h).  The
+ * functions are compiled once per instruction set (-DLANES_SUFFIX=_avx2
+ * with -mavx2, _sse2 with the baseline) and rast_lanes() picks one set per
+ * process from the CPU.  The scalar functions stay the reference
+ * (RAST_OPT_SCALAR); tests hold both sets to them bit for bit.
+ */
+#ifndef FIXPIPE_LANES_H
+#define FIXPIPE_LANES_H
+
+#include <stdint.h>
+#include "rast/rast.h"
+#include "rast/tex.h"
+
+struct rast_front;
+
+struct rast_lanes {
+   const char *isa;                       /* "avx2", "sse2" */
+   /* The perspective division of a quad in dfx24 (W = 19) from the quad's
+    * numerators; the COLOR components of the wide profile stay scalar. */
+   void (*persp_dfx19)(struct rast_front *fr, struct rast_quad *q,
+                       const int64_t an[RAST_QUAD_SIZE], const int64_t bn[RAST_QUAD_SIZE]);
+   /* The texture unit's quad in dfx24, by dimensionality 1..3 (NULL: none). */
+   tex_quad_fn tex_dfx19[3];
+};
+
+#define LANES_GLUE2(a, b) a##b
+#define LANES_GLUE(a, b) LANES_GLUE2(a, b)
+#define LANES_FN(name) LANES_GLUE(name, LANES_SUFFIX)
+
+extern const struct rast_lanes rast_lanes_avx2, rast_lanes_sse2;
+
+/* The set for this CPU: AVX2 where it has it. */
+const struct rast_lanes *rast_lanes(void);
+/* Another set from now on (tests: every set against the scalar path). */
+void rast_lanes_set(const struct rast_lanes *set);
+
+#endif

@@ -1,0 +1,16 @@
+/*
+ * One instruction set's table of lane functions (see lanes.h): this file
+ * is compiled once per set, with LANES_SUFFIX naming it.
+ */
+#include "rast/lanes.h"
+#include <stddef.h>
+#include "rast/lanes_fns.h"
+
+#define LANES_STR2(x) #x
+#define LANES_STR(x) LANES_STR2(x)
+
+const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
+   .isa = LANES_STR(LANES_SUFFIX) + 1,
+   .persp_dfx19 = LANES_FN(persp_dfx19_lanes),
+   .tex_dfx19 = { NULL, LANES_FN(tex_dfx19_2d_lanes), NULL },
+};

@@ -1,0 +1,118 @@
+#!/bin/sh
+# The model's datapath on lanes with its skips against the scalar reference
+# computing everything (docs/datapath.md): every end-to-end program of
+# tolerances.txt, the demo, and every checked-in trace (traces/recorded, and
+# every 50th frame of the benchmark's traces/bench/glmark2-long.trace) are
+# rendered through fixpipe twice, with compiled shaders both times,
+#   FIXPIPE_DEBUG=jitall                  the default datapath: lanes, skips
+#   FIXPIPE_DEBUG=jitall,scalar,noskip    the scalar reference, nothing skipped
+# and every image must be the same bytes.  The default runs of the programs
+# must also have taken the lanes (FIXPIPE_STATS names the instruction set),
+# and some of them skipped work.
+# One line per check, then "N passed, N failed"; exit 1 on a failure.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+build=${FP_BUILD_DIR:-$root/build/std}
+out=$build/datapath-identity
+rm -rf "$out"
+mkdir -p "$out"
+passed=0 failed=0
+pass() { passed=$((passed + 1)); echo "PASS $1"; }
+fail() { failed=$((failed + 1)); echo "FAIL $1"; }
+MODES="lanes scalar"
+flags() { [ "$1" = lanes ] && echo jitall || echo jitall,scalar,noskip; }
+
+# skips NAME: the default run's skip counters, summed over its contexts
+skips() {
+    sed -n 's/.*datapath: \([a-z0-9]*\); skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\).*/\1 \2 \3/p' \
+        "$out/$1.lanes.log" | awk '{ isa = $1; w += $2; c += $3 } END { print isa, w + 0, c + 0 }'
+}
+
+total_w=0 total_c=0
+check_lanes() { # NAME
+    set -- $(skips "$1")
+    case ${1:-} in
+    avx2 | sse2) total_w=$((total_w + $2)); total_c=$((total_c + $3)) ;;
+    *) fail "$name: the default run did not report the lanes (datapath: ${1:-none})"; return 1 ;;
+    esac
+    if grep -q "datapath: scalar" "$out/$name.scalar.log"; then :; else
+        fail "$name: the scalar run did not report the scalar datapath"; return 1
+    fi
+}
+
+render() { # NAME PROGRAM ARGS...
+    name=$1 prog=$2
+    shift 2
+    for m in $MODES; do
+        if ! FIXPIPE_DEBUG=$(flags $m) FIXPIPE_STATS=1 \
+             "$root/fixpipe" run --no-xvfb --driver fixpipe -- "$prog" -o "$out/$name.$m.png" "$@" \
+             > "$out/$name.$m.log" 2>&1; then
+            fail "$name: the $m run failed ($(tail -n 1 "$out/$name.$m.log"))"
+            return 1
+        fi
+    done
+    check_lanes "$name" || return 1
+    if cmp -s "$out/$name.lanes.png" "$out/$name.scalar.png"; then
+        pass "$name: lanes = scalar,noskip"
+    else
+        fail "$name: lanes and scalar,noskip differ ($("$build/tools/fp-compare" "$out/$name.lanes.png" "$out/$name.scalar.png" | grep differing))"
+    fi
+}
+
+grep -v '^#' "$here/tolerances.txt" | grep -v '^[[:space:]]*$' > "$out/list"
+while IFS= read -r line; do
+    spec=${line%%|*}
+    # shellcheck disable=SC2086
+    set -- $spec
+    name=$1 prog=$2
+    shift 2
+    render "$name" "$build/tests/e2e/$prog" "$@"
+done < "$out/list"
+render demo "$build/tools/fp-demo" --scene all --frames 3
+
+# replay TRACE NAME SNAPSHOT-CALLS: both modes' snapshots, byte for byte
+replay() {
+    trace=$1 name=$2 snaps=$3
+    for m in $MODES; do
+        mkdir -p "$out/$name.$m"
+        set -- --snapshot-prefix="$out/$name.$m/"
+        [ -n "$snaps" ] && set -- "$@" --snapshot="$snaps"
+        if ! FIXPIPE_DEBUG=$(flags $m) FIXPIPE_STATS=1 \
+             "$root/fixpipe" run --no-xvfb --driver fixpipe -- env WAFFLE_PLATFORM=surfaceless_egl \
+             eglretrace --headless "$@" "$trace" > "$out/$name.$m.log" 2>&1; then
+            fail "$name: the $m replay failed ($(tail -n 1 "$out/$name.$m.log"))"
+            return 1
+        fi
+    done
+    # (eglretrace ends without destroying its context: no FIXPIPE_STATS to check)
+    n=$(ls "$out/$name.lanes" | wc -l)
+    if [ "$n" -eq 0 ] || [ "$n" -ne "$(ls "$out/$name.scalar" | wc -l)" ]; then
+        fail "$name: $n snapshots with the lanes, $(ls "$out/$name.scalar" | wc -l) scalar"
+        return 1
+    fi
+    if diff -rq "$out/$name.lanes" "$out/$name.scalar" > "$out/$name.diff" 2>&1; then
+        pass "$name: $n frames, lanes = scalar,noskip"
+    else
+        fail "$name: $(wc -l < "$out/$name.diff") of $n frames differ"
+    fi
+}
+
+for t in "$root"/traces/recorded/*.trace; do
+    name=$(basename "$t" .trace)
+    snaps=$(python3 -c 'import json, sys; s = json.load(open(sys.argv[1])).get("snap_calls"); print(",".join(map(str, s)) if s else "")' \
+            "${t%.trace}.json")
+    replay "$t" "$name" "$snaps"
+done
+long=$root/traces/bench/glmark2-long.trace
+snaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$long" 2>/dev/null |
+        awk '/eglSwapBuffers/ { if (n++ % 50 == 0) { sub(/ .*/, ""); printf "%s%s", s, $0; s = "," } }')
+replay "$long" glmark2-long "$snaps"
+
+if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ]; then
+    pass "skips taken: $total_w quads with a constant 1/w, $total_c constant component-quads"
+else
+    fail "skips taken: $total_w quads with a constant 1/w, $total_c constant component-quads"
+fi
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]

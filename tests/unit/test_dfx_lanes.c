@@ -1,0 +1,189 @@
+/*
+ * The dfx24 data paths on lanes (src/fixed/dfx_lanes.h) against their
+ * scalar twins (dfx_ops.h), bit for bit and event for event: millions of
+ * random operands, weighted toward the cases with their own logic (zero,
+ * equal digits, shifts of 4 and 5 digits, cancellation, the ends of the
+ * range, mantissas at 2^15 and 2^19 - 1).  Built once per instruction set
+ * (TEST_ISA names it); the AVX2 build checks the CPU first.
+ */
+#include <stdio.h>
+#include <string.h>
+#include "fixed/dfx_lanes.h"
+#include "tutil.h"
+
+#ifndef TEST_ISA
+#define TEST_ISA "baseline"
+#endif
+
+static const struct dfx_format F = { DFX_MANT_BITS_SEED };
+static uint64_t rng = 0x9e3779b97f4a7c15ull;
+
+static uint64_t rnd(void)
+{
+   rng ^= rng << 13;
+   rng ^= rng >> 7;
+   rng ^= rng << 17;
+   return rng;
+}
+
+static struct dfx rnd_dfx(void)
+{
+   const uint32_t lo = 1u << 15, hi = (1u << 19) - 1;
+   struct dfx a;
+   switch (rnd() % 16) {
+   case 0:
+      return dfx_zero();
+   case 1:
+      a.m = lo;
+      break;
+   case 2:
+      a.m = hi;
+      break;
+   case 3:
+      a.m = lo + (uint32_t)(rnd() % 16);
+      break;
+   default:
+      a.m = lo + (uint32_t)(rnd() % (hi - lo + 1));
+      break;
+   }
+   a.s = rnd() & 1;
+   const unsigned r = rnd() % 8;
+   a.l = r == 0 ? 0 : r == 1 ? DFX_L_MAX : (uint8_t)(rnd() % 16);
+   return a;
+}
+
+/* b near a: equal digits and shifts of 0..6 digits, both signs, for the
+ * adder's alignment and cancellation. */
+static struct dfx rnd_near(struct dfx a)
+{
+   struct dfx b = rnd_dfx();
+   if (!a.m || rnd() % 2)
+      return b;
+   int l = a.l - (int)(rnd() % 7);
+   b.l = (uint8_t)(l < 0 ? 0 : l);
+   if (rnd() % 4 == 0)
+      b.m = a.m ^ (uint32_t)(rnd() % 8);
+   if (b.m < (1u << 15))
+      b.m |= 1u << 15;
+   return b;
+}
+
+static bool same(struct dfx a, struct dfx b)
+{
+   return a.s == b.s && a.l == b.l && a.m == b.m;
+}
+
+static uint64_t n_checked;
+
+static void check(const char *op, const struct dfx *in_a, const struct dfx *in_b,
+                  const struct dfx want[DFXL_N], struct dfx_stats ws, struct dfxl r,
+                  struct dfxl_stats rs)
+{
+   struct dfx got[DFXL_N];
+   struct dfx_stats gs = { 0, 0 };
+   dfxl_store(r, got);
+   dfxl_stats_add(&gs, rs);
+   for (int i = 0; i < DFXL_N; i++) {
+      n_checked++;
+      CHECK(same(got[i], want[i]),
+            "%s lane %d: a = (%u,%u,%u) b = (%u,%u,%u): got (%u,%u,%u) want (%u,%u,%u)", op, i,
+            in_a[i].s, in_a[i].l, in_a[i].m, in_b ? in_b[i].s : 0, in_b ? in_b[i].l : 0,
+            in_b ? in_b[i].m : 0, got[i].s, got[i].l, got[i].m, want[i].s, want[i].l,
+            want[i].m);
+   }
+   CHECK(gs.sat == ws.sat && gs.flush == ws.flush,
+         "%s: events sat %llu flush %llu, want %llu %llu", op, (unsigned long long)gs.sat,
+         (unsigned long long)gs.flush, (unsigned long long)ws.sat,
+         (unsigned long long)ws.flush);
+}
+
+static void test_binary(void)
+{
+   struct dfx a[DFXL_N], b[DFXL_N], want[DFXL_N];
+   for (int i = 0; i < DFXL_N; i++) {
+      a[i] = rnd_dfx();
+      b[i] = rnd_near(a[i]);
+   }
+   const struct dfxl A = dfxl_load(a), B = dfxl_load(b);
+   struct dfx_stats ws;
+   struct dfxl_stats rs;
+
+   ws = (struct dfx_stats){ 0, 0 };
+   rs = (struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0) };
+   for (int i = 0; i < DFXL_N; i++)
+      want[i] = dfx_add_i(F, a[i], b[i], &ws);
+   check("add", a, b, want, ws, dfxl_add(A, B, &rs), rs);
+
+   ws = (struct dfx_stats){ 0, 0 };
+   rs = (struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0) };
+   for (int i = 0; i < DFXL_N; i++)
+      want[i] = dfx_add_i(F, a[i], dfx_neg(b[i]), &ws);
+   check("sub", a, b, want, ws, dfxl_sub(A, B, &rs), rs);
+
+   ws = (struct dfx_stats){ 0, 0 };
+   rs = (struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0) };
+   for (int i = 0; i < DFXL_N; i++)
+      want[i] = dfx_mul_i(F, a[i], b[i], &ws);
+   check("mul", a, b, want, ws, dfxl_mul(A, B, &rs), rs);
+
+   ws = (struct dfx_stats){ 0, 0 };
+   rs = (struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0) };
+   for (int i = 0; i < DFXL_N; i++)
+      want[i] = dfx_recip_i(F, a[i], &ws);
+   check("recip", a, NULL, want, ws, dfxl_recip(A, &rs), rs);
+
+   float fw[DFXL_N], fg[DFXL_N];
+   for (int i = 0; i < DFXL_N; i++)
+      fw[i] = (float)dfx_to_double_i(F, a[i]);
+   dfxl_to_float(A, fg);
+   for (int i = 0; i < DFXL_N; i++) {
+      n_checked++;
+      CHECK(!memcmp(&fw[i], &fg[i], sizeof(float)), "to_float (%u,%u,%u): %a, want %a",
+            a[i].s, a[i].l, a[i].m, (double)fg[i], (double)fw[i]);
+   }
+}
+
+/* Numerators as the perspective division makes them: any sign, up to
+ * 2^60, with k (the determinant's length) 1..60. */
+static void test_from_fixed(void)
+{
+   int64_t v[DFXL_N];
+   struct dfx want[DFXL_N], in[DFXL_N];
+   const int k = 1 + (int)(rnd() % 60);
+   for (int i = 0; i < DFXL_N; i++) {
+      const unsigned bits = (unsigned)(rnd() % 61);
+      int64_t x = bits ? (int64_t)(rnd() >> (64 - bits)) : 0;
+      if (rnd() % 8 == 0)
+         x = (int64_t)1 << (rnd() % 60);                 /* a power of two */
+      if (rnd() % 8 == 0)
+         x |= (int64_t)((1ull << (rnd() % 40)) - 1);     /* rounding carries */
+      v[i] = rnd() & 1 ? -x : x;
+      in[i] = dfx_zero();
+   }
+   struct dfx_stats ws = { 0, 0 };
+   const struct fx_format fx = { 0, (uint8_t)k };
+   for (int i = 0; i < DFXL_N; i++)
+      want[i] = dfx_from_fixed_i(F, fx, v[i], &ws);
+   struct dfxl_stats rs = { dfxl_splat(0), dfxl_splat(0) };
+   const dfxl_i V = { v[0], v[1], v[2], v[3] };
+   check("from_fixed", in, NULL, want, ws, dfxl_from_fixed(V, k, &rs), rs);
+}
+
+int main(void)
+{
+#if defined(__AVX2__)
+   __builtin_cpu_init();
+   if (!__builtin_cpu_supports("avx2")) {
+      printf("dfx_lanes (%s): this CPU has no AVX2; the driver takes the baseline lanes\n",
+             TEST_ISA);
+      return 77;
+   }
+#endif
+   for (long n = 0; n < 1500000; n++) {
+      test_binary();
+      test_from_fixed();
+   }
+   printf("dfx_lanes (%s): %llu lane results compared with the scalar data paths\n", TEST_ISA,
+          (unsigned long long)n_checked);
+   return t_summary("dfx_lanes");
+}
