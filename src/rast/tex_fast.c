@@ -35,23 +35,7 @@ TEX_FAST_INLINE void quad(const struct tex_unit *u, const struct tex_quad *q,
       layer[p] = array ? layer_of(u, q->layer[p]) : 0;
    }
 
-   switch (ctl) {
-   case TEX_LOD_IMPLICIT:
-   case TEX_LOD_BIAS: {
-      const int32_t l = lod_diffs(u, k, dims, c, &x);
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = ctl == TEX_LOD_BIAS && l != TEX_LOD_NONE ? l + tex_lod_fixed(q->lod[p]) : l;
-      break;
-   }
-   case TEX_LOD_EXPLICIT:
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = tex_lod_fixed(q->lod[p]);
-      break;
-   default:
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = 0;
-      break;
-   }
+   lods(ctl, tex_lod_from_diffs(ctl) ? lod_diffs(u, k, dims, c, &x) : 0, q, lod);
 
    unsigned l0 = 0, l1 = 0;
    uint32_t frac = 0;

@@ -202,6 +202,35 @@ TEX_FAST_INLINE int32_t layer_of(const struct tex_unit *u, float l)
    return f >= (float)(u->view.layers - 1) ? u->view.layers - 1 : (int32_t)f;
 }
 
+/* Whether the LOD comes from the quad's coordinate differences. */
+TEX_FAST_INLINE bool tex_lod_from_diffs(enum tex_lod_control ctl)
+{
+   return ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
+}
+
+/* Each pixel's LOD register before the sampler's clamps: `l` from the
+ * differences (implicit, bias), the explicit LOD, or 0. */
+TEX_FAST_INLINE void lods(enum tex_lod_control ctl, int32_t l, const struct tex_quad *q,
+                          int32_t lod[TEX_QUAD])
+{
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      switch (ctl) {
+      case TEX_LOD_IMPLICIT:
+         lod[p] = l;
+         break;
+      case TEX_LOD_BIAS:
+         lod[p] = l != TEX_LOD_NONE ? l + tex_lod_fixed(q->lod[p]) : l;
+         break;
+      case TEX_LOD_EXPLICIT:
+         lod[p] = tex_lod_fixed(q->lod[p]);
+         break;
+      default:
+         lod[p] = 0;
+         break;
+      }
+   }
+}
+
 /* tex_lod_diffs. */
 TEX_FAST_INLINE int32_t lod_diffs(const struct tex_unit *u, const enum tex_fk k,
                                   const unsigned dims, ns_val c[TEX_QUAD][3], struct tex_fst *x)

@@ -45,20 +45,28 @@ coord(const struct tex_unit *u, const float v[TEX_QUAD], struct tex_fst *x)
    return o;
 }
 
+/* floor(a) saturated to int32 (counted), as a double, and which lanes saturated. */
+static inline __attribute__((always_inline)) dfxl_d
+floor_int32(dfxl_d a, dfxl_i *sat, struct dfxl_stats *st)
+{
+   const dfxl_d fl = dfxl_floor(a);
+   const dfxl_i hi = fl > (double)INT32_MAX, lo = fl < (double)INT32_MIN;
+   *sat = hi | lo;
+   st->sat -= *sat;
+   return dfxl_seld(hi, (dfxl_d){ INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX },
+                    dfxl_seld(lo, (dfxl_d){ INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN }, fl));
+}
+
 /* tex_ffloor with TEX_WEIGHT_BITS fraction bits: the integer part (floor),
  * saturated to int32 (counted, fraction 0 then), and the fraction's bits. */
 static inline __attribute__((always_inline)) void
 floor_frac(struct dfxl a, lanes_v4i *ip, lanes_v4i *frac, struct dfxl_stats *st)
 {
-   const dfxl_d fl = dfxl_floor(a.v);
-   const dfxl_d fr = dfxl_floor(a.v * (double)TEX_WEIGHT_ONE) - fl * (double)TEX_WEIGHT_ONE;
-   const dfxl_i hi = fl > (double)INT32_MAX, lo = fl < (double)INT32_MIN;
-   st->sat -= hi | lo;
-   const dfxl_d cl = dfxl_seld(hi, (dfxl_d){ INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX },
-                               dfxl_seld(lo, (dfxl_d){ INT32_MIN, INT32_MIN, INT32_MIN,
-                                                       INT32_MIN }, fl));
+   dfxl_i sat;
+   const dfxl_d cl = floor_int32(a.v, &sat, st);
+   const dfxl_d fr = dfxl_floor(a.v * (double)TEX_WEIGHT_ONE) - cl * (double)TEX_WEIGHT_ONE;
    *ip = __builtin_convertvector(cl, lanes_v4i);
-   *frac = __builtin_convertvector(dfxl_seld(hi | lo, (dfxl_d){ 0, 0, 0, 0 }, fr), lanes_v4i);
+   *frac = __builtin_convertvector(dfxl_seld(sat, (dfxl_d){ 0, 0, 0, 0 }, fr), lanes_v4i);
 }
 
 /* frac_of: c - floor(c) (floor saturated to int32, through binary32 into
@@ -66,16 +74,11 @@ floor_frac(struct dfxl a, lanes_v4i *ip, lanes_v4i *frac, struct dfxl_stats *st)
 static inline __attribute__((always_inline)) struct dfxl
 lanes_frac_of(struct dfxl c, dfxl_i *odd, struct dfxl_stats *st)
 {
-   const dfxl_d fl = dfxl_floor(c.v);
-   const dfxl_i hi = fl > (double)INT32_MAX, lo = fl < (double)INT32_MIN;
-   st->sat -= hi | lo;
-   const dfxl_d cl = dfxl_seld(hi, (dfxl_d){ INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX },
-                               dfxl_seld(lo, (dfxl_d){ INT32_MIN, INT32_MIN, INT32_MIN,
-                                                       INT32_MIN }, fl));
+   dfxl_i sat;
+   const dfxl_d cl = floor_int32(c.v, &sat, st);
    const lanes_v4i i = __builtin_convertvector(cl, lanes_v4i);
    *odd = __builtin_convertvector(i & 1, dfxl_i) != 0;
-   typedef float v4f_ __attribute__((vector_size(16)));
-   const dfxl_d asf = __builtin_convertvector(__builtin_convertvector(cl, v4f_), dfxl_d);
+   const dfxl_d asf = __builtin_convertvector(__builtin_convertvector(cl, lanes_v4f), dfxl_d);
    return dfxl_sub(c, dfxl_from_int(asf, st), st);
 }
 
@@ -239,23 +242,7 @@ void LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, const struct tex_qua
    for (unsigned p = 0; p < TEX_QUAD; p++)
       layer[p] = array ? layer_of(u, q->layer[p]) : 0;
 
-   switch (ctl) {
-   case TEX_LOD_IMPLICIT:
-   case TEX_LOD_BIAS: {
-      const int32_t l = lod2(u, cs, ct, &st);
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = ctl == TEX_LOD_BIAS && l != TEX_LOD_NONE ? l + tex_lod_fixed(q->lod[p]) : l;
-      break;
-   }
-   case TEX_LOD_EXPLICIT:
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = tex_lod_fixed(q->lod[p]);
-      break;
-   default:
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         lod[p] = 0;
-      break;
-   }
+   lods(ctl, tex_lod_from_diffs(ctl) ? lod2(u, cs, ct, &st) : 0, q, lod);
 
    int32_t cl[TEX_QUAD];
    for (unsigned p = 0; p < TEX_QUAD; p++)
