@@ -156,12 +156,6 @@ DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, dfxl_i live, struct dfxl_stats *st)
    return o;
 }
 
-DFXL_INLINE struct dfxl dfxl_zero(void)
-{
-   struct dfxl z = { { 0, 0, 0, 0 } };
-   return z;
-}
-
 /* dfx_from_fixed_i: v * 2^-k to nearest, ties away from zero (an integer
  * up to 2^63 does not fit a double, so this one works on the fields). */
 DFXL_INLINE struct dfxl dfxl_from_fixed(dfxl_i v, int k, struct dfxl_stats *st)
@@ -255,13 +249,6 @@ DFXL_INLINE struct dfxl dfxl_load(const struct dfx a[DFXL_N])
    struct dfxl r;
    for (int i = 0; i < DFXL_N; i++)
       r.v[i] = dfxl_value(a[i]);
-   return r;
-}
-
-DFXL_INLINE struct dfxl dfxl_broadcast(struct dfx a)
-{
-   const double v = dfxl_value(a);
-   struct dfxl r = { { v, v, v, v } };
    return r;
 }
 

@@ -239,7 +239,7 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    struct fp_tex_slot *slot = &ts->slot[index];
    const void *data = fp_resource(fv->base.texture)->data;
    if (slot->valid && slot->epoch == ts->fp->tex_epoch && slot->view == fv &&
-       slot->sampler == ss && slot->data == data)
+       slot->sampler == ss && slot->data == data && !(fp_env_debug() & FP_DEBUG_NOSKIP))
       return &slot->unit;
    slot->epoch = ts->fp->tex_epoch;
    slot->view = fv;

@@ -128,7 +128,7 @@ struct fr_tex {
    bool skip;                           /* skips taken (not RAST_OPT_NOSKIP) */
    bool w_const;                        /* 1/w constant: w = recip(v0) once */
    bool w_one;                          /* and exactly 1: A · w is A */
-   struct dfx w;
+   double lw;                           /* that w, as the lanes hold it */
    struct dfx_stats w_ev;               /* recip(v0)'s events, counted per pixel */
    bool comp_const[FR_MAX_COMP];        /* A/w constant */
    float comp_val[FR_MAX_COMP];         /* with w constant: the component itself */

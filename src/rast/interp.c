@@ -16,6 +16,7 @@
 #include "rast/front.h"
 #include "fixed/dfx_ops.h"
 #include "rast/lanes.h"
+#include "fixed/dfx_lanes.h"
 
 /* ---- The perspective division of the texture path (seeds 002, 003) ----
  *
@@ -173,24 +174,26 @@ static void lanes_skips_setup(struct rast_front *fr)
 {
    struct fr_tex *t = &fr->tex;
    const struct dfx_format f = { DFX_MANT_BITS_SEED };
+   struct dfx w = dfx_zero();
    for (unsigned j = 0; j < 1 + fr->npersp; j++) {
-      t->lv[j][0] = dfx_to_double_i(f, t->pl[j].v0.d);
-      t->lv[j][1] = dfx_to_double_i(f, t->pl[j].d1.d);
-      t->lv[j][2] = dfx_to_double_i(f, t->pl[j].d2.d);
+      t->lv[j][0] = dfxl_value(t->pl[j].v0.d);
+      t->lv[j][1] = dfxl_value(t->pl[j].d1.d);
+      t->lv[j][2] = dfxl_value(t->pl[j].d2.d);
    }
-   t->lrdet = dfx_to_double_i(f, t->rdet.d);
+   t->lrdet = dfxl_value(t->rdet.d);
    t->w_const = t->skip && plane_is_const(&t->pl[0]);
    t->w_one = false;
    if (t->w_const) {
       t->w_ev = (struct dfx_stats){ 0, 0 };
-      t->w = dfx_recip_i(f, t->pl[0].v0.d, &t->w_ev);
-      t->w_one = t->w.s == 0 && t->w.l == 8 && t->w.m == 1u << (DFX_MANT_BITS_SEED - 4);
+      w = dfx_recip_i(f, t->pl[0].v0.d, &t->w_ev);
+      t->lw = dfxl_value(w);
+      t->w_one = t->lw == 1.0;
    }
    for (unsigned j = 0; j < fr->npersp; j++) {
       t->comp_const[j] = t->skip && plane_is_const(&t->pl[1 + j]);
       if (t->comp_const[j] && t->w_const) {
          t->comp_ev[j] = (struct dfx_stats){ 0, 0 };
-         t->comp_val[j] = (float)dfx_to_double_i(f, dfx_mul_i(f, t->pl[1 + j].v0.d, t->w,
+         t->comp_val[j] = (float)dfx_to_double_i(f, dfx_mul_i(f, t->pl[1 + j].v0.d, w,
                                                               &t->comp_ev[j]));
       }
    }

@@ -67,7 +67,7 @@ void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
    struct dfxl w;
    unsigned first = 0;
    if (t->w_const) {
-      w = splat(dfxl_value(t->w));
+      w = splat(t->lw);
       count(&t->dst, t->w_ev, RAST_QUAD_SIZE);
       t->n_const_w++;
    } else {

@@ -5,7 +5,7 @@
  */
 #include <string.h>
 #include "rast/tex_priv.h"
-#include "fixed/dfx.h"
+#include "fixed/dfx_lanes.h"
 
 static unsigned target_dims(enum tex_target t)
 {
@@ -40,10 +40,10 @@ static void axis_bounds(const struct tex_unit *u, enum tex_wrap w, int32_t size,
    ax->hi = u->ns->from_float(u->ns, hi, u->stats);
 }
 
-/* The lanes hold a dfx24 register as its value (fixed/dfx_lanes.h). */
+/* The unit's constants as the dfx24 lanes hold them (tex_lanes.c). */
 static double lanes_value(const struct tex_unit *u, ns_val v)
 {
-   return u->kind == TEX_NS_DFX && v.d.m ? dfx_to_double(u->ns->dfx, v.d) : 0.0;
+   return u->kind == TEX_NS_DFX ? dfxl_value(v.d) : 0.0;
 }
 
 static void lanes_constants(struct tex_unit *u)
@@ -124,7 +124,8 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    u->min_lod = tex_lod_fixed(s->min_lod);
    u->max_lod = tex_lod_fixed(s->max_lod);
    u->quad = tex_fast_choose(u, false);
-   lanes_constants(u);
+   if (u->kind == TEX_NS_DFX && ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
+      lanes_constants(u);
 }
 
 void tex_unit_set_scalar(struct tex_unit *u, bool scalar)

@@ -19,6 +19,18 @@ TEX_FAST_INLINE ns_val frac_of(const enum tex_fk k, ns_val c, bool *odd, struct 
    return tex_fsub(k, c, tex_fint(k, fl, x), x);
 }
 
+/* The clamping wrap modes (all but the two repeats): whether the
+ * coordinate is mirrored (|c|) before the clamp, and whether linear taps
+ * outside the texture read the border.  Invalid modes clamp to the edge,
+ * as tex_addr_choose. */
+TEX_FAST_INLINE void clamp_mode(unsigned wrap, bool linear, bool *mirror, bool *border)
+{
+   *mirror = wrap == TEX_WRAP_MIRROR_CLAMP || wrap == TEX_WRAP_MIRROR_CLAMP_TO_EDGE ||
+             wrap == TEX_WRAP_MIRROR_CLAMP_TO_BORDER;
+   *border = wrap == TEX_WRAP_CLAMP_TO_BORDER || wrap == TEX_WRAP_MIRROR_CLAMP_TO_BORDER ||
+             ((wrap == TEX_WRAP_CLAMP || wrap == TEX_WRAP_MIRROR_CLAMP) && linear);
+}
+
 /* tex_addr.c's functions, the wrap mode a switch (invalid modes as
  * CLAMP_TO_EDGE, as tex_addr_choose). */
 TEX_FAST_INLINE void addr(const struct tex_unit *u, const enum tex_fk k, const bool linear,
@@ -49,28 +61,12 @@ TEX_FAST_INLINE void addr(const struct tex_unit *u, const enum tex_fk k, const b
       c = odd ? tex_fsub(k, u->k_one, f, x) : f;
       break;
    }
-   case TEX_WRAP_CLAMP:
-      c = tex_ns_clamp(nk, c, ax->lo, ax->hi);
-      border = linear;
+   default: {
+      bool mirror;
+      clamp_mode(wrap, linear, &mirror, &border);
+      c = tex_ns_clamp(nk, mirror ? tex_ns_abs(nk, c) : c, ax->lo, ax->hi);
       break;
-   case TEX_WRAP_CLAMP_TO_BORDER:
-      c = tex_ns_clamp(nk, c, ax->lo, ax->hi);
-      border = true;
-      break;
-   case TEX_WRAP_MIRROR_CLAMP:
-      c = tex_ns_clamp(nk, tex_ns_abs(nk, c), ax->lo, ax->hi);
-      border = linear;
-      break;
-   case TEX_WRAP_MIRROR_CLAMP_TO_EDGE:
-      c = tex_ns_clamp(nk, tex_ns_abs(nk, c), ax->lo, ax->hi);
-      break;
-   case TEX_WRAP_MIRROR_CLAMP_TO_BORDER:
-      c = tex_ns_clamp(nk, tex_ns_abs(nk, c), ax->lo, ax->hi);
-      border = true;
-      break;
-   default:
-      c = tex_ns_clamp(nk, c, ax->lo, ax->hi);
-      break;
+   }
    }
    ns_val s = tex_fmul(k, c, ax->scale, x);
    if (!linear) {

@@ -133,31 +133,14 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       c.v = dfxl_seld(odd, m.v, f.v);
       break;
    }
-   case TEX_WRAP_CLAMP:
-      c = clamp(c, lax);
-      border = linear;
-      break;
-   case TEX_WRAP_CLAMP_TO_BORDER:
-      c = clamp(c, lax);
-      border = true;
-      break;
-   case TEX_WRAP_MIRROR_CLAMP:
-      c.v = dfxl_abs(c.v);
-      c = clamp(c, lax);
-      border = linear;
-      break;
-   case TEX_WRAP_MIRROR_CLAMP_TO_EDGE:
-      c.v = dfxl_abs(c.v);
+   default: {
+      bool mirror;
+      clamp_mode(wrap, linear, &mirror, &border);
+      if (mirror)
+         c.v = dfxl_abs(c.v);
       c = clamp(c, lax);
       break;
-   case TEX_WRAP_MIRROR_CLAMP_TO_BORDER:
-      c.v = dfxl_abs(c.v);
-      c = clamp(c, lax);
-      border = true;
-      break;
-   default:
-      c = clamp(c, lax);
-      break;
+   }
    }
    struct dfxl s = dfxl_mul(c, splat(lax[0]), st);
    if (!linear) {
