@@ -38,9 +38,9 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
            fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
    fprintf(stderr, "  datapath: %s; skipped: quads with a constant 1/w %" PRIu64
-           ", constant component-quads %" PRIu64 "\n",
+           ", constant component-quads %" PRIu64 ", texture quads without a LOD %" PRIu64 "\n",
            fp_env_debug() & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
-           st->skip_persp_w, st->skip_persp_comp);
+           st->skip_persp_w, st->skip_persp_comp, st->skip_tex_lod);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
            "; vertex shaders compiled %" PRIu64 "\n",

@@ -51,6 +51,7 @@ struct fp_tgsi_sampler {
    enum pipe_shader_type stage;
    const struct numsys *ns;
    struct ns_stats stats;
+   uint64_t skip_lod;             /* quads sampled without their LOD */
    struct fp_tex_slot slot[PIPE_MAX_SAMPLERS];
 };
 
@@ -254,7 +255,8 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    fp_view_desc(fv, &vd);
    fp_sampler_desc(fv, ss, &sd);
    tex_unit_bind(&slot->unit, ts->ns, &vd, &sd, &ts->stats);
-   tex_unit_set_scalar(&slot->unit, fp_env_debug() & FP_DEBUG_SCALAR);
+   tex_unit_set_datapath(&slot->unit, fp_env_debug() & FP_DEBUG_SCALAR,
+                         fp_env_debug() & FP_DEBUG_NOSKIP);
    memcpy(&slot->key, &key, sizeof(key));
    slot->valid = true;
    return &slot->unit;
@@ -274,9 +276,9 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 /* Range events go to the model's counters (FIXPIPE_STATS). */
 static inline void fp_tex_stats(struct fp_tgsi_sampler *ts)
 {
-   if (ts->stats.sat | ts->stats.flush) {
-      tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush);
-      ts->stats.sat = ts->stats.flush = 0;
+   if (ts->stats.sat | ts->stats.flush | ts->skip_lod) {
+      tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush, ts->skip_lod);
+      ts->stats.sat = ts->stats.flush = ts->skip_lod = 0;
    }
 }
 
@@ -337,7 +339,9 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
             co[a][p] += k;
       }
    }
-   tex_unit_sample(u, &q, fp_lod_control(control), rgba);
+   const enum tex_lod_control ctl = fp_lod_control(control);
+   ts->skip_lod += u->lod_skipped && (ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS);
+   tex_unit_sample(u, &q, ctl, rgba);
    fp_tex_stats(ts);
 }
 

@@ -21,8 +21,10 @@ struct rast_lanes {
     * numerators; the COLOR components of the wide profile stay scalar. */
    void (*persp_dfx19)(struct rast_front *fr, struct rast_quad *q,
                        const int64_t an[RAST_QUAD_SIZE], const int64_t bn[RAST_QUAD_SIZE]);
-   /* The texture unit's quad in dfx24, by dimensionality 1..3 (NULL: none). */
-   tex_quad_fn tex_dfx19[3];
+   /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
+    * rectangle), specialised for the unit's state; `nolod`: the one that
+    * leaves out the LOD (tex_unit_lod_unused). */
+   tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool nolod);
 };
 
 #define LANES_GLUE2(a, b) a##b

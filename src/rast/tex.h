@@ -157,6 +157,7 @@ struct tex_unit {
    /* dfx24 and binary32: the whole quad specialised (tex_fast.c), NULL for
     * the table path above. */
    tex_quad_fn quad;
+   bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
    struct tex_axis axis[TEX_MAX_LEVELS][3];
    int32_t lod_bias, min_lod, max_lod;   /* units of 2^-TEX_LOD_FRAC_BITS */
    int kind;                      /* the number system's family (tex_ns.h) */
@@ -172,9 +173,16 @@ struct tex_unit {
  * and chooses the functions.  The view's level data must stay valid. */
 void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
                    const struct tex_sampler_desc *s, struct ns_stats *stats);
-/* The scalar reference quads instead of the lanes' (FIXPIPE_DEBUG=scalar;
- * the same bits). */
-void tex_unit_set_scalar(struct tex_unit *u, bool scalar);
+/* The datapath (FIXPIPE_DEBUG=scalar,noskip): `scalar` takes the scalar
+ * reference quads instead of the lanes' (the same bits); `noskip` computes
+ * the LOD even where the sampler cannot use it (the same bits; the range
+ * events of a LOD left out are not counted, the modeled unit not clocking
+ * it).  tex_unit_bind chooses as with both false. */
+void tex_unit_set_datapath(struct tex_unit *u, bool scalar, bool noskip);
+/* Whether no LOD can change what the unit samples: it only ever reads one
+ * level (no mip filter, one level, or texel coordinates) and minifies and
+ * magnifies alike. */
+bool tex_unit_lod_unused(const struct tex_unit *u);
 
 /* Sample a quad; rgba[channel][pixel], swizzled. */
 void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
@@ -199,7 +207,7 @@ unsigned tex_format_bytes(enum tex_format f);
 /* Adds the unit's range events to the model's counters (rast_stats
  * tex_sat / tex_flush, printed by FIXPIPE_STATS). */
 struct rast_context;
-void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush);
+void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod);
 
 /* Pieces of the data path, for tests. */
 int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */

@@ -123,12 +123,12 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    u->lod_bias = tex_lod_fixed(s->lod_bias);
    u->min_lod = tex_lod_fixed(s->min_lod);
    u->max_lod = tex_lod_fixed(s->max_lod);
-   u->quad = tex_fast_choose(u, false);
    if (u->kind == TEX_NS_DFX && ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
       lanes_constants(u);
+   tex_unit_set_datapath(u, false, false);
 }
 
-void tex_unit_set_scalar(struct tex_unit *u, bool scalar)
+void tex_unit_set_datapath(struct tex_unit *u, bool scalar, bool noskip)
 {
-   u->quad = tex_fast_choose(u, scalar);
+   u->quad = tex_fast_choose(u, scalar, noskip, &u->lod_skipped);
 }

@@ -73,8 +73,9 @@ QUAD_FN(quad_float_1d, TEX_FK_FLOAT, 1)
 QUAD_FN(quad_float_2d, TEX_FK_FLOAT, 2)
 QUAD_FN(quad_float_3d, TEX_FK_FLOAT, 3)
 
-tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar)
+tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod)
 {
+   *nolod = false;
    static const tex_quad_fn table[2][3] = {
       { quad_dfx19_1d, quad_dfx19_2d, quad_dfx19_3d },
       { quad_float_1d, quad_float_2d, quad_float_3d },
@@ -82,8 +83,11 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar)
    if (u->view.target == TEX_TARGET_CUBE || u->dims < 1 || u->dims > 3)
       return NULL;
    if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED) {
-      const tex_quad_fn lanes = rast_lanes()->tex_dfx19[u->dims - 1];
-      return lanes && !scalar ? lanes : table[0][u->dims - 1];
+      if (!scalar && u->dims == 2 && rast_lanes()->tex_dfx19_2d) {
+         *nolod = !noskip && tex_unit_lod_unused(u);
+         return rast_lanes()->tex_dfx19_2d(u, *nolod);
+      }
+      return table[0][u->dims - 1];
    }
    if (u->kind == TEX_NS_FLOAT)
       return table[1][u->dims - 1];

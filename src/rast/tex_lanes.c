@@ -90,9 +90,32 @@ clamp(struct dfxl c, const double lh[3])
    return c;
 }
 
+/* mask ? a : b on int32 lanes (mask a vector comparison). */
+static inline __attribute__((always_inline)) lanes_v4i
+sel4i(lanes_v4i mask, lanes_v4i a, lanes_v4i b)
+{
+   return (a & mask) | (b & ~mask);
+}
+
+/* tex_clampi and tex_inside on the lanes. */
+static inline __attribute__((always_inline)) lanes_v4i
+clamp4i(lanes_v4i i, int32_t lo, int32_t hi)
+{
+   const lanes_v4i l = { lo, lo, lo, lo }, h = { hi, hi, hi, hi };
+   return sel4i(i < l, l, sel4i(i > h, h, i));
+}
+
+static inline __attribute__((always_inline)) lanes_v4i
+inside4i(lanes_v4i i, int32_t size)
+{
+   const lanes_v4i s = { size, size, size, size };
+   return sel4i((i >= 0) & (i < s), i, (lanes_v4i){ -1, -1, -1, -1 });
+}
+
+/* One axis of the quad's addresses: the two texel indices (-1: the
+ * border) and the weight of the second, per pixel. */
 struct lanes_addr {
-   int32_t i0[TEX_QUAD], i1[TEX_QUAD];
-   uint32_t w[TEX_QUAD];
+   lanes_v4i i0, i1, w;
 };
 
 /* tex_fast_path.h's addr on the quad. */
@@ -104,24 +127,23 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    dfxl_i odd;
    lanes_v4i i, w;
    const int32_t size = ax->size;
+   const lanes_v4i zero = { 0, 0, 0, 0 };
    switch (wrap) {
    case TEX_WRAP_REPEAT: {
       const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, st), splat(lax[0]), st);
       if (!linear) {
          floor_frac(s, &i, &w, st);
-         for (unsigned p = 0; p < TEX_QUAD; p++) {
-            a->i0[p] = a->i1[p] = tex_clampi(i[p], 0, size - 1);
-            a->w[p] = 0;
-         }
+         a->i0 = a->i1 = clamp4i(i, 0, size - 1);
+         a->w = zero;
          return;
       }
       floor_frac(dfxl_sub(s, splat(u->lk_texel_offset), st), &i, &w, st);
-      for (unsigned p = 0; p < TEX_QUAD; p++) {
-         const int32_t k = tex_clampi(i[p], -1, size - 1);
-         a->i0[p] = k < 0 ? size - 1 : k;
-         a->i1[p] = k + 1 >= size ? 0 : k + 1;
-         a->w[p] = (uint32_t)w[p];
-      }
+      const lanes_v4i k = clamp4i(i, -1, size - 1);
+      const lanes_v4i last = { size - 1, size - 1, size - 1, size - 1 };
+      const lanes_v4i sz = { size, size, size, size };
+      a->i0 = sel4i(k < 0, last, k);
+      a->i1 = sel4i(k + 1 >= sz, zero, k + 1);
+      a->w = w;
       return;
    }
    case TEX_WRAP_MIRROR_REPEAT: {
@@ -145,49 +167,167 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    struct dfxl s = dfxl_mul(c, splat(lax[0]), st);
    if (!linear) {
       floor_frac(s, &i, &w, st);
-      for (unsigned p = 0; p < TEX_QUAD; p++) {
-         a->i0[p] = a->i1[p] = border ? tex_inside(i[p], size) : tex_clampi(i[p], 0, size - 1);
-         a->w[p] = 0;
-      }
+      a->i0 = a->i1 = border ? inside4i(i, size) : clamp4i(i, 0, size - 1);
+      a->w = zero;
       return;
    }
    s = dfxl_sub(s, splat(u->lk_texel_offset), st);
    floor_frac(s, &i, &w, st);
-   for (unsigned p = 0; p < TEX_QUAD; p++) {
-      const int64_t k = i[p];
-      a->w[p] = (uint32_t)w[p];
-      if (border) {
-         a->i0[p] = tex_inside(k, size);
-         a->i1[p] = tex_inside(k + 1, size);
-      } else {
-         a->i0[p] = tex_clampi(k, 0, size - 1);
-         a->i1[p] = tex_clampi(k + 1, 0, size - 1);
-      }
+   /* the scalar path's i + 1 in 64 bits: INT32_MAX + 1 is outside and
+    * above every size, as INT32_MAX itself */
+   const lanes_v4i max = { INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX };
+   const lanes_v4i i1 = i - (i != max);
+   a->w = w;
+   if (border) {
+      a->i0 = inside4i(i, size);
+      a->i1 = inside4i(i1, size);
+   } else {
+      a->i0 = clamp4i(i, 0, size - 1);
+      a->i1 = clamp4i(i1, 0, size - 1);
    }
 }
 
-/* tex_fast_path.h's level for two dimensions, the quad's addresses at once. */
+/* The 4-byte layouts (tex_fast_path.h's fetch and tap) for the whole quad,
+ * a channel of up to eight taps in one vector: where the scalar path
+ * decodes a texel and blends four channels at a time, these decode and
+ * blend one channel of every tap, the same IEEE operations element by
+ * element.  Shadow samplers and other layouts take the per-pixel taps. */
+typedef float lanes_v8f __attribute__((vector_size(32)));
+typedef int32_t lanes_v8i __attribute__((vector_size(32)));
+
+static inline bool soa_layout(const struct tex_unit *u)
+{
+   const enum tex_format f = u->view.format;
+   return f >= TEX_FMT_RGBA8 && f <= TEX_FMT_BGRX8 && !(u->samp.compare && u->view.depth);
+}
+
+/* The eight taps' words; `out`: lanes whose tap is outside (the border). */
+static inline __attribute__((always_inline)) lanes_v8i
+soa_words(const struct tex_level *lv, lanes_v8i x, lanes_v8i y, const size_t zoff[TEX_QUAD],
+          unsigned n, lanes_v8i *out)
+{
+   *out = (x | y) < 0;
+   lanes_v8i w = { 0, 0, 0, 0, 0, 0, 0, 0 };
+   for (unsigned k = 0; k < n; k++) {
+      const int32_t xi = (*out)[k] ? 0 : x[k], yi = (*out)[k] ? 0 : y[k];
+      uint32_t t;
+      memcpy(&t, lv->data + zoff[k & 3] + (size_t)yi * lv->row_stride + (size_t)xi * 4, 4);
+      w[k] = (int32_t)t;
+   }
+   return w;
+}
+
+/* tex_unorm8 of one channel of the words, the border where outside. */
+static inline __attribute__((always_inline)) lanes_v8f
+soa_channel(const struct tex_unit *u, lanes_v8i words, lanes_v8i out, unsigned ch)
+{
+   const enum tex_format f = u->view.format;
+   const bool bgr = f == TEX_FMT_BGRA8 || f == TEX_FMT_BGRX8;
+   const int sh = ch == 0 ? (bgr ? 16 : 0) : ch == 1 ? 8 : ch == 2 ? (bgr ? 0 : 16) : 24;
+   lanes_v8f v = __builtin_convertvector((words >> sh) & 0xff, lanes_v8f) * (1.0f / 255.0f);
+   if (ch == 3 && (f == TEX_FMT_RGBX8 || f == TEX_FMT_BGRX8))
+      v = (lanes_v8f){ 1, 1, 1, 1, 1, 1, 1, 1 };
+   const float b = u->samp.border[ch];
+   const lanes_v8f bv = { b, b, b, b, b, b, b, b };
+   return (lanes_v8f)(((lanes_v8i)bv & out) | ((lanes_v8i)v & ~out));
+}
+
+static inline __attribute__((always_inline)) lanes_v4f lo4(lanes_v8f v)
+{
+   return (lanes_v4f){ v[0], v[1], v[2], v[3] };
+}
+
+static inline __attribute__((always_inline)) lanes_v4f hi4(lanes_v8f v)
+{
+   return (lanes_v4f){ v[4], v[5], v[6], v[7] };
+}
+
+/* lerp4 per element: a + f (b - a), f the weight over TEX_WEIGHT_ONE. */
+static inline __attribute__((always_inline)) lanes_v4f
+weight4(lanes_v4i w)
+{
+   return __builtin_convertvector(w, lanes_v4f) * (1.0f / TEX_WEIGHT_ONE);
+}
+
+/* tex_fast_path.h's level for two dimensions, one channel of the quad
+ * per vector. */
 static inline __attribute__((always_inline)) void
-level2(const struct tex_unit *u, const bool linear, unsigned l, struct dfxl cs, struct dfxl ct,
-       const int layer[TEX_QUAD], const float ref[TEX_QUAD], v4f out[TEX_QUAD],
-       struct dfxl_stats *st)
+soa_level2(const struct tex_unit *u, const bool linear, unsigned l, const struct lanes_addr *A,
+           const struct lanes_addr *B, const size_t zoff[TEX_QUAD], lanes_v4f out[4])
+{
+   const struct tex_level *lv = &u->view.level[l];
+   if (!linear) {
+      const lanes_v8i x = { A->i0[0], A->i0[1], A->i0[2], A->i0[3] };
+      const lanes_v8i y = { B->i0[0], B->i0[1], B->i0[2], B->i0[3] };
+      lanes_v8i o;
+      const lanes_v8i w = soa_words(lv, x, y, zoff, TEX_QUAD, &o);
+      for (unsigned ch = 0; ch < 4; ch++)
+         out[ch] = lo4(soa_channel(u, w, o, ch));
+      return;
+   }
+   /* taps (i0, j0) and (i0, j1) in one vector, (i1, j0) and (i1, j1) in the other */
+   const lanes_v8i x0 = { A->i0[0], A->i0[1], A->i0[2], A->i0[3],
+                          A->i0[0], A->i0[1], A->i0[2], A->i0[3] };
+   const lanes_v8i x1 = { A->i1[0], A->i1[1], A->i1[2], A->i1[3],
+                          A->i1[0], A->i1[1], A->i1[2], A->i1[3] };
+   const lanes_v8i y = { B->i0[0], B->i0[1], B->i0[2], B->i0[3],
+                         B->i1[0], B->i1[1], B->i1[2], B->i1[3] };
+   lanes_v8i o0, o1;
+   const lanes_v8i w0 = soa_words(lv, x0, y, zoff, 8, &o0);
+   const lanes_v8i w1 = soa_words(lv, x1, y, zoff, 8, &o1);
+   const lanes_v4f fa = weight4(A->w), fb = weight4(B->w);
+   const lanes_v8f fa8 = { fa[0], fa[1], fa[2], fa[3], fa[0], fa[1], fa[2], fa[3] };
+   for (unsigned ch = 0; ch < 4; ch++) {
+      const lanes_v8f t0 = soa_channel(u, w0, o0, ch), t1 = soa_channel(u, w1, o1, ch);
+      const lanes_v8f e = t0 + fa8 * (t1 - t0);
+      const lanes_v4f e0 = lo4(e), e1 = hi4(e);
+      out[ch] = e0 + fb * (e1 - e0);
+   }
+}
+
+/* What a quad function is specialised for (a negative field: read from
+ * the unit per quad): the wrap modes of s and t, whether the texels take
+ * the one-channel-per-vector filter, whether the LOD is left out (the
+ * sampler cannot use it: tex_unit_lod_unused). */
+struct quad_kind {
+   int ws, wt, soa;
+   bool nolod;
+};
+
+/* tex_fast_path.h's level for two dimensions, the quad's addresses at
+ * once; the result one channel per vector. */
+static inline __attribute__((always_inline)) void
+level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, unsigned l,
+       struct dfxl cs, struct dfxl ct, const int layer[TEX_QUAD], const float ref[TEX_QUAD],
+       lanes_v4f out[4], struct dfxl_stats *st)
 {
    const struct tex_level *lv = &u->view.level[l];
    const struct tex_axis *ax = u->axis[l];
    struct lanes_addr A, B;
-   lanes_addr_of(u, linear, u->samp.wrap[0], &ax[0], u->laxis[l][0], cs, &A, st);
-   lanes_addr_of(u, linear, u->samp.wrap[1], &ax[1], u->laxis[l][1], ct, &B, st);
+   lanes_addr_of(u, linear, k.ws < 0 ? u->samp.wrap[0] : (unsigned)k.ws, &ax[0],
+                 u->laxis[l][0], cs, &A, st);
+   lanes_addr_of(u, linear, k.wt < 0 ? u->samp.wrap[1] : (unsigned)k.wt, &ax[1],
+                 u->laxis[l][1], ct, &B, st);
+   if (k.soa > 0 || (k.soa < 0 && soa_layout(u))) {
+      size_t zoff[TEX_QUAD];
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         zoff[p] = (size_t)layer[p] * lv->img_stride;
+      soa_level2(u, linear, l, &A, &B, zoff, out);
+      return;
+   }
    for (unsigned p = 0; p < TEX_QUAD; p++) {
       const int z = layer[p];
-      if (!linear) {
-         out[p] = tap(u, lv, A.i0[p], B.i0[p], z, ref[p]);
-         continue;
-      }
-      out[p] = lerp4(lerp4(tap(u, lv, A.i0[p], B.i0[p], z, ref[p]),
-                           tap(u, lv, A.i1[p], B.i0[p], z, ref[p]), A.w[p]),
-                     lerp4(tap(u, lv, A.i0[p], B.i1[p], z, ref[p]),
-                           tap(u, lv, A.i1[p], B.i1[p], z, ref[p]), A.w[p]),
-                     B.w[p]);
+      v4f t;
+      if (!linear)
+         t = tap(u, lv, A.i0[p], B.i0[p], z, ref[p]);
+      else
+         t = lerp4(lerp4(tap(u, lv, A.i0[p], B.i0[p], z, ref[p]),
+                         tap(u, lv, A.i1[p], B.i0[p], z, ref[p]), (uint32_t)A.w[p]),
+                   lerp4(tap(u, lv, A.i0[p], B.i1[p], z, ref[p]),
+                         tap(u, lv, A.i1[p], B.i1[p], z, ref[p]), (uint32_t)A.w[p]),
+                   (uint32_t)B.w[p]);
+      for (unsigned ch = 0; ch < 4; ch++)
+         out[ch][p] = t[ch];
    }
 }
 
@@ -208,8 +348,9 @@ lod2(const struct tex_unit *u, struct dfxl cs, struct dfxl ct, struct dfxl_stats
    return tex_lod_from_rho(u, r);
 }
 
-void LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, const struct tex_quad *q,
-                                  enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
+static inline __attribute__((always_inline)) void
+quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control ctl,
+      float rgba[4][TEX_QUAD], const struct quad_kind k)
 {
    if (ctl == TEX_LOD_DERIVS) {
       tex_unit_sample_generic(u, q, ctl, rgba);
@@ -221,15 +362,16 @@ void LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, const struct tex_qua
    const struct dfxl cs = coord(u, q->s, &x), ct = coord(u, q->t, &x);
    int layer[TEX_QUAD];
    int32_t lod[TEX_QUAD];
-   v4f out[TEX_QUAD];
+   lanes_v4f out[4];
    for (unsigned p = 0; p < TEX_QUAD; p++)
       layer[p] = array ? layer_of(u, q->layer[p]) : 0;
 
-   lods(ctl, tex_lod_from_diffs(ctl) ? lod2(u, cs, ct, &st) : 0, q, lod);
-
-   int32_t cl[TEX_QUAD];
-   for (unsigned p = 0; p < TEX_QUAD; p++)
-      cl[p] = tex_clamp_lod(u, lod[p]);
+   int32_t cl[TEX_QUAD] = { 0, 0, 0, 0 };
+   if (!k.nolod) {
+      lods(ctl, tex_lod_from_diffs(ctl) ? lod2(u, cs, ct, &st) : 0, q, lod);
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         cl[p] = tex_clamp_lod(u, lod[p]);
+   }
    if (cl[0] == cl[1] && cl[0] == cl[2] && cl[0] == cl[3]) {
       unsigned l0, l1;
       uint32_t frac;
@@ -237,17 +379,18 @@ void LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, const struct tex_qua
       tex_unit_select(u, cl[0], &l0, &l1, &frac, &f);
       const bool linear = f != TEX_FILTER_NEAREST;
       if (linear)
-         level2(u, true, l0, cs, ct, layer, q->ref, out, &st);
+         level2(u, k, true, l0, cs, ct, layer, q->ref, out, &st);
       else
-         level2(u, false, l0, cs, ct, layer, q->ref, out, &st);
+         level2(u, k, false, l0, cs, ct, layer, q->ref, out, &st);
       if (frac) {
-         v4f o1[TEX_QUAD];
+         lanes_v4f o1[4];
          if (linear)
-            level2(u, true, l1, cs, ct, layer, q->ref, o1, &st);
+            level2(u, k, true, l1, cs, ct, layer, q->ref, o1, &st);
          else
-            level2(u, false, l1, cs, ct, layer, q->ref, o1, &st);
-         for (unsigned p = 0; p < TEX_QUAD; p++)
-            out[p] = lerp4(out[p], o1[p], frac);
+            level2(u, k, false, l1, cs, ct, layer, q->ref, o1, &st);
+         const float fr = (float)frac * (1.0f / TEX_WEIGHT_ONE);
+         for (unsigned ch = 0; ch < 4; ch++)
+            out[ch] = out[ch] + fr * (o1[ch] - out[ch]);   /* lerp4 */
       }
    } else {
       /* levels differ inside the quad: pixel by pixel, as tex_fast.c */
@@ -259,18 +402,55 @@ void LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, const struct tex_qua
          uint32_t frac;
          enum tex_filter f;
          tex_unit_select(u, cl[p], &l0, &l1, &frac, &f);
-         out[p] = level_f(u, TEX_FK_DFX19, 2, f, l0, c, layer[p], q->ref[p], &x);
+         v4f t = level_f(u, TEX_FK_DFX19, 2, f, l0, c, layer[p], q->ref[p], &x);
          if (frac)
-            out[p] = lerp4(out[p], level_f(u, TEX_FK_DFX19, 2, f, l1, c, layer[p], q->ref[p],
-                                           &x), frac);
+            t = lerp4(t, level_f(u, TEX_FK_DFX19, 2, f, l1, c, layer[p], q->ref[p], &x), frac);
+         for (unsigned ch = 0; ch < 4; ch++)
+            out[ch][p] = t[ch];
       }
    }
 
    for (unsigned ch = 0; ch < 4; ch++) {
       const unsigned s = u->view.swizzle[ch];
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         rgba[ch][p] = s < 4 ? out[p][s] : s == TEX_SWZ_1 ? 1.0f : 0.0f;
+      const float konst = s == TEX_SWZ_1 ? 1.0f : 0.0f;
+      const lanes_v4f v = s < 4 ? out[s] : (lanes_v4f){ konst, konst, konst, konst };
+      memcpy(rgba[ch], &v, sizeof(v));
    }
    dfxl_stats_add(&x.d, st);
    tex_fst_flush(&x, u->stats);
+}
+
+/* The quad functions, specialised per sampler state where the replays
+ * spend their time; the generic one reads everything from the unit. */
+#define QUAD2_FN(name, ws, wt, soa, nolod)                                                   \
+   static void name(const struct tex_unit *u, const struct tex_quad *q,                      \
+                    enum tex_lod_control ctl, float rgba[4][TEX_QUAD])                       \
+   {                                                                                         \
+      quad2(u, q, ctl, rgba, (struct quad_kind){ ws, wt, soa, nolod });                      \
+   }
+
+QUAD2_FN(quad2_generic, -1, -1, -1, false)
+QUAD2_FN(quad2_generic_nolod, -1, -1, -1, true)
+QUAD2_FN(quad2_rr, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, false)
+QUAD2_FN(quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, true)
+QUAD2_FN(quad2_ee, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, false)
+QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true)
+QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false)
+QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true)
+
+tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool nolod)
+{
+   static const struct {
+      enum tex_wrap ws, wt;
+      tex_quad_fn fn[2];
+   } special[] = {
+      { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, { quad2_rr, quad2_rr_nolod } },
+      { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, { quad2_ee, quad2_ee_nolod } },
+      { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, { quad2_mm, quad2_mm_nolod } },
+   };
+   if (soa_layout(u))
+      for (unsigned i = 0; i < sizeof(special) / sizeof(special[0]); i++)
+         if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt)
+            return special[i].fn[nolod];
+   return nolod ? quad2_generic_nolod : quad2_generic;
 }

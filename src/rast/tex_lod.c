@@ -82,6 +82,14 @@ int32_t tex_lod_derivs(const struct tex_unit *u, const float ddx[3], const float
    return tex_lod_grads(u, dx, dy, dims, scale);
 }
 
+/* tex_unit_select then gives level 0, no fraction and the one filter for
+ * every LOD. */
+bool tex_unit_lod_unused(const struct tex_unit *u)
+{
+   return (u->samp.mip == TEX_MIP_NONE || u->view.num_levels == 1 || !u->samp.normalized) &&
+          u->samp.min_filter == u->samp.mag_filter;
+}
+
 /* GL's level choice on the LOD register (already biased and clamped):
  * magnification below or at 0; NEAREST takes ceil(lod + 1/2) - 1 (ties
  * toward the finer level); LINEAR the two levels around lod with its 8

@@ -209,6 +209,8 @@ static void rand_unit(struct tex_unit *u, const struct numsys *ns, struct ns_sta
       v.swizzle[c] = (uint8_t)(rndn(3) ? c : rndn(6));
    for (unsigned a = 0; a < 3; a++)
       s.wrap[a] = (enum tex_wrap)rndn(TEX_WRAP_COUNT);
+   if (rndn(2))   /* one mode on every axis, as most samplers (the specialised lanes quads) */
+      s.wrap[1] = s.wrap[2] = s.wrap[0];
    s.min_filter = (enum tex_filter)rndn(2);
    s.mag_filter = (enum tex_filter)rndn(2);
    s.mip = (enum tex_mip)rndn(3);
@@ -248,7 +250,7 @@ static void rand_quad(struct tex_quad *q, const struct tex_unit *u)
    }
 }
 
-static uint64_t quads, fast_quads, lanes_quads;
+static uint64_t quads, fast_quads, lanes_quads, nolod_quads;
 
 enum mode { LANES_BEST, LANES_SSE2, SCALAR };
 
@@ -266,18 +268,34 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
       struct ns_stats s_fast = { 0, 0 }, s_gen = { 0, 0 };
       rand_unit(&u, ns, &s_fast);
       if (mode == SCALAR)
-         tex_unit_set_scalar(&u, true);
+         tex_unit_set_datapath(&u, true, false);
       s_gen = s_fast;
       CHECK(!!u.quad == (fast && u.view.target != TEX_TARGET_CUBE),
             "%s: specialised quad %s", name, u.quad ? "chosen" : "missing");
       fast_units += u.quad != NULL;
       for (unsigned j = 0; j < per_unit; j++) {
+         /* the lanes with their skips and without (noskip) in turn */
+         if (mode != SCALAR)
+            tex_unit_set_datapath(&u, false, j & 1);
          struct tex_quad q;
          rand_quad(&q, &u);
          const enum tex_lod_control ctl = (enum tex_lod_control)rndn(5);
          float r0[4][TEX_QUAD], r1[4][TEX_QUAD];
-         u.stats = &s_gen;
+         /* a LOD left out raises none of its range events: the reference
+          * for the events is then the quad sampled at LOD 0, computing no
+          * LOD; the bits are those of the quad with its LOD computed */
+         const bool nolod = u.lod_skipped && (ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS);
+         struct ns_stats s_lod = { 0, 0 };
+         u.stats = nolod ? &s_lod : &s_gen;
          tex_unit_sample_generic(&u, &q, ctl, r0);
+         if (nolod) {
+            float rz[4][TEX_QUAD];
+            u.stats = &s_gen;
+            tex_unit_sample_generic(&u, &q, TEX_LOD_ZERO, rz);
+            CHECK(!memcmp(r0, rz, sizeof(r0)), "%s unit %u quad %u: LOD unused but it matters",
+                  name, i, j);
+            nolod_quads++;
+         }
          u.stats = &s_fast;
          tex_unit_sample(&u, &q, ctl, r1);
          const bool ok = !memcmp(r0, r1, sizeof(r0)) && s_gen.sat == s_fast.sat &&
@@ -292,7 +310,8 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
                   (unsigned long long)s_fast.flush);
          quads++;
          fast_quads += u.quad != NULL;
-         lanes_quads += u.quad && u.quad == rast_lanes()->tex_dfx19[u.dims - 1];
+         lanes_quads += u.quad && u.dims == 2 && u.kind == TEX_NS_DFX &&
+                        u.quad == rast_lanes()->tex_dfx19_2d(&u, u.lod_skipped);
       }
    }
    CHECK(bad == 0, "%s: %u of %u quads differ", name, bad, units * per_unit);
@@ -316,7 +335,9 @@ int main(void)
    quads_vs_generic("float", true, 3000, 200, LANES_BEST);
    quads_vs_generic("fx16.16", false, 100, 50, LANES_BEST);   /* the table path */
    quads_vs_generic("dfx23", false, 100, 50, LANES_BEST);
-   printf("  %llu quads on lanes\n", (unsigned long long)lanes_quads);
+   printf("  %llu quads on lanes, %llu of them without a LOD\n", (unsigned long long)lanes_quads,
+          (unsigned long long)nolod_quads);
+   CHECK(nolod_quads > 10000, "only %llu quads left the LOD out", (unsigned long long)nolod_quads);
    CHECK(lanes_quads > 300000, "only %llu quads took the lanes", (unsigned long long)lanes_quads);
    CHECK(fast_quads > 1000000, "only %llu quads took the specialised path",
          (unsigned long long)fast_quads);
