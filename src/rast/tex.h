@@ -166,6 +166,7 @@ struct tex_unit {
    /* dfx24 on lanes (tex_lanes.c): the registers above as the lanes hold
     * them, their values in doubles; [l][a]: scale, lo, hi of axis[l][a] */
    double lk_one, lk_texel_offset;
+   bool lanes_soa;                /* the filter one channel per vector (tex_bind.c) */
    double laxis[TEX_MAX_LEVELS][3][3];
 };
 

@@ -46,8 +46,26 @@ static double lanes_value(const struct tex_unit *u, ns_val v)
    return u->kind == TEX_NS_DFX ? dfxl_value(v.d) : 0.0;
 }
 
+/* Whether the lanes' filter takes the unit one channel per vector: 4-byte
+ * texels without a shadow compare, every tap's byte offset in int32. */
+static bool lanes_soa(const struct tex_unit *u)
+{
+   const enum tex_format f = u->view.format;
+   if (f < TEX_FMT_RGBA8 || f > TEX_FMT_BGRX8 || (u->samp.compare && u->view.depth))
+      return false;
+   const uint64_t layers = u->view.layers > 1 ? (uint64_t)u->view.layers : 1;
+   for (unsigned l = 0; l < u->view.num_levels; l++) {
+      const struct tex_level *lv = &u->view.level[l];
+      const uint64_t w = lv->w > 1 ? (uint64_t)lv->w : 1, h = lv->h > 1 ? (uint64_t)lv->h : 1;
+      if ((layers - 1) * lv->img_stride + (h - 1) * lv->row_stride + w * 4 > INT32_MAX)
+         return false;
+   }
+   return true;
+}
+
 static void lanes_constants(struct tex_unit *u)
 {
+   u->lanes_soa = lanes_soa(u);
    u->lk_one = lanes_value(u, u->k_one);
    u->lk_texel_offset = lanes_value(u, u->k_texel_offset);
    for (unsigned l = 0; l < u->view.num_levels; l++)

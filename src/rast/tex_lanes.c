@@ -11,6 +11,9 @@
 #include "rast/tex_fast_path.h"
 #include "rast/lanes_fns.h"
 #include "fixed/dfx_lanes.h"
+#ifdef __AVX2__
+#include <immintrin.h>
+#endif
 
 typedef float lanes_v4f __attribute__((vector_size(16)));
 typedef int32_t lanes_v4i __attribute__((vector_size(16)));
@@ -197,29 +200,46 @@ typedef int32_t lanes_v8i __attribute__((vector_size(32)));
 
 static inline bool soa_layout(const struct tex_unit *u)
 {
-   const enum tex_format f = u->view.format;
-   return f >= TEX_FMT_RGBA8 && f <= TEX_FMT_BGRX8 && !(u->samp.compare && u->view.depth);
+   return u->lanes_soa;
 }
 
-/* The eight taps' words; `out`: lanes whose tap is outside (the border). */
+/* The taps' words at byte offsets `off` (lanes whose tap is in the
+ * texture; the others read the level's first texel and are replaced by
+ * the border afterwards). */
 static inline __attribute__((always_inline)) lanes_v8i
-soa_words(const struct tex_level *lv, lanes_v8i x, lanes_v8i y, const size_t zoff[TEX_QUAD],
-          unsigned n, lanes_v8i *out)
+gather8(const struct tex_level *lv, lanes_v8i off)
 {
-   *out = (x | y) < 0;
-   lanes_v8i w = { 0, 0, 0, 0, 0, 0, 0, 0 };
-   for (unsigned k = 0; k < n; k++) {
-      const int32_t xi = (*out)[k] ? 0 : x[k], yi = (*out)[k] ? 0 : y[k];
+#ifdef __AVX2__
+   return (lanes_v8i)_mm256_i32gather_epi32((const int *)(const void *)lv->data, (__m256i)off, 1);
+#else
+   lanes_v8i w;
+   for (unsigned k = 0; k < 8; k++) {
       uint32_t t;
-      memcpy(&t, lv->data + zoff[k & 3] + (size_t)yi * lv->row_stride + (size_t)xi * 4, 4);
+      memcpy(&t, lv->data + off[k], 4);
       w[k] = (int32_t)t;
    }
    return w;
+#endif
+}
+
+/* Offsets of taps (x, y) in the level, in pixels' layers `zoff` (bytes);
+ * `out`: the taps outside the texture, when the wrap modes have a border. */
+static inline __attribute__((always_inline)) lanes_v8i
+soa_offsets(const struct tex_level *lv, lanes_v8i x, lanes_v8i y, lanes_v8i zoff, bool border,
+            lanes_v8i *out)
+{
+   const int32_t rs = (int32_t)lv->row_stride;
+   const lanes_v8i off = zoff + y * rs + x * 4;
+   *out = (lanes_v8i){ 0, 0, 0, 0, 0, 0, 0, 0 };
+   if (!border)
+      return off;
+   *out = (x | y) < 0;
+   return off & ~*out;
 }
 
 /* tex_unorm8 of one channel of the words, the border where outside. */
 static inline __attribute__((always_inline)) lanes_v8f
-soa_channel(const struct tex_unit *u, lanes_v8i words, lanes_v8i out, unsigned ch)
+soa_channel(const struct tex_unit *u, lanes_v8i words, bool border, lanes_v8i out, unsigned ch)
 {
    const enum tex_format f = u->view.format;
    const bool bgr = f == TEX_FMT_BGRA8 || f == TEX_FMT_BGRX8;
@@ -227,6 +247,8 @@ soa_channel(const struct tex_unit *u, lanes_v8i words, lanes_v8i out, unsigned c
    lanes_v8f v = __builtin_convertvector((words >> sh) & 0xff, lanes_v8f) * (1.0f / 255.0f);
    if (ch == 3 && (f == TEX_FMT_RGBX8 || f == TEX_FMT_BGRX8))
       v = (lanes_v8f){ 1, 1, 1, 1, 1, 1, 1, 1 };
+   if (!border)
+      return v;
    const float b = u->samp.border[ch];
    const lanes_v8f bv = { b, b, b, b, b, b, b, b };
    return (lanes_v8f)(((lanes_v8i)bv & out) | ((lanes_v8i)v & ~out));
@@ -234,12 +256,12 @@ soa_channel(const struct tex_unit *u, lanes_v8i words, lanes_v8i out, unsigned c
 
 static inline __attribute__((always_inline)) lanes_v4f lo4(lanes_v8f v)
 {
-   return (lanes_v4f){ v[0], v[1], v[2], v[3] };
+   return __builtin_shufflevector(v, v, 0, 1, 2, 3);
 }
 
 static inline __attribute__((always_inline)) lanes_v4f hi4(lanes_v8f v)
 {
-   return (lanes_v4f){ v[4], v[5], v[6], v[7] };
+   return __builtin_shufflevector(v, v, 4, 5, 6, 7);
 }
 
 /* lerp4 per element: a + f (b - a), f the weight over TEX_WEIGHT_ONE. */
@@ -250,35 +272,35 @@ weight4(lanes_v4i w)
 }
 
 /* tex_fast_path.h's level for two dimensions, one channel of the quad
- * per vector. */
+ * per vector.  `border`: whether a tap can be outside (the wrap modes). */
 static inline __attribute__((always_inline)) void
-soa_level2(const struct tex_unit *u, const bool linear, unsigned l, const struct lanes_addr *A,
-           const struct lanes_addr *B, const size_t zoff[TEX_QUAD], lanes_v4f out[4])
+soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsigned l,
+           const struct lanes_addr *A, const struct lanes_addr *B, lanes_v4i zoff,
+           lanes_v4f out[4])
 {
    const struct tex_level *lv = &u->view.level[l];
+   const lanes_v8i z = __builtin_shufflevector(zoff, zoff, 0, 1, 2, 3, 0, 1, 2, 3);
    if (!linear) {
-      const lanes_v8i x = { A->i0[0], A->i0[1], A->i0[2], A->i0[3] };
-      const lanes_v8i y = { B->i0[0], B->i0[1], B->i0[2], B->i0[3] };
+      const lanes_v8i x = __builtin_shufflevector(A->i0, A->i0, 0, 1, 2, 3, 0, 1, 2, 3);
+      const lanes_v8i y = __builtin_shufflevector(B->i0, B->i0, 0, 1, 2, 3, 0, 1, 2, 3);
       lanes_v8i o;
-      const lanes_v8i w = soa_words(lv, x, y, zoff, TEX_QUAD, &o);
+      const lanes_v8i w = gather8(lv, soa_offsets(lv, x, y, z, border, &o));
       for (unsigned ch = 0; ch < 4; ch++)
-         out[ch] = lo4(soa_channel(u, w, o, ch));
+         out[ch] = lo4(soa_channel(u, w, border, o, ch));
       return;
    }
    /* taps (i0, j0) and (i0, j1) in one vector, (i1, j0) and (i1, j1) in the other */
-   const lanes_v8i x0 = { A->i0[0], A->i0[1], A->i0[2], A->i0[3],
-                          A->i0[0], A->i0[1], A->i0[2], A->i0[3] };
-   const lanes_v8i x1 = { A->i1[0], A->i1[1], A->i1[2], A->i1[3],
-                          A->i1[0], A->i1[1], A->i1[2], A->i1[3] };
-   const lanes_v8i y = { B->i0[0], B->i0[1], B->i0[2], B->i0[3],
-                         B->i1[0], B->i1[1], B->i1[2], B->i1[3] };
+   const lanes_v8i x0 = __builtin_shufflevector(A->i0, A->i0, 0, 1, 2, 3, 0, 1, 2, 3);
+   const lanes_v8i x1 = __builtin_shufflevector(A->i1, A->i1, 0, 1, 2, 3, 0, 1, 2, 3);
+   const lanes_v8i y = __builtin_shufflevector(B->i0, B->i1, 0, 1, 2, 3, 4, 5, 6, 7);
    lanes_v8i o0, o1;
-   const lanes_v8i w0 = soa_words(lv, x0, y, zoff, 8, &o0);
-   const lanes_v8i w1 = soa_words(lv, x1, y, zoff, 8, &o1);
+   const lanes_v8i w0 = gather8(lv, soa_offsets(lv, x0, y, z, border, &o0));
+   const lanes_v8i w1 = gather8(lv, soa_offsets(lv, x1, y, z, border, &o1));
    const lanes_v4f fa = weight4(A->w), fb = weight4(B->w);
-   const lanes_v8f fa8 = { fa[0], fa[1], fa[2], fa[3], fa[0], fa[1], fa[2], fa[3] };
+   const lanes_v8f fa8 = __builtin_shufflevector(fa, fa, 0, 1, 2, 3, 0, 1, 2, 3);
    for (unsigned ch = 0; ch < 4; ch++) {
-      const lanes_v8f t0 = soa_channel(u, w0, o0, ch), t1 = soa_channel(u, w1, o1, ch);
+      const lanes_v8f t0 = soa_channel(u, w0, border, o0, ch),
+                      t1 = soa_channel(u, w1, border, o1, ch);
       const lanes_v8f e = t0 + fa8 * (t1 - t0);
       const lanes_v4f e0 = lo4(e), e1 = hi4(e);
       out[ch] = e0 + fb * (e1 - e0);
@@ -293,6 +315,16 @@ struct quad_kind {
    int ws, wt, soa;
    bool nolod;
 };
+
+/* Whether a wrap mode (negative: not known here) can put a tap outside. */
+static inline __attribute__((always_inline)) bool may_border(int wrap, bool linear)
+{
+   if (wrap < 0)
+      return true;
+   bool mirror, border;
+   clamp_mode((unsigned)wrap, linear, &mirror, &border);
+   return border;
+}
 
 /* tex_fast_path.h's level for two dimensions, the quad's addresses at
  * once; the result one channel per vector. */
@@ -309,10 +341,9 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
    lanes_addr_of(u, linear, k.wt < 0 ? u->samp.wrap[1] : (unsigned)k.wt, &ax[1],
                  u->laxis[l][1], ct, &B, st);
    if (k.soa > 0 || (k.soa < 0 && soa_layout(u))) {
-      size_t zoff[TEX_QUAD];
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         zoff[p] = (size_t)layer[p] * lv->img_stride;
-      soa_level2(u, linear, l, &A, &B, zoff, out);
+      const lanes_v4i zoff = { layer[0], layer[1], layer[2], layer[3] };
+      soa_level2(u, linear, may_border(k.ws, linear) || may_border(k.wt, linear), l, &A, &B,
+                 zoff * (int32_t)lv->img_stride, out);
       return;
    }
    for (unsigned p = 0; p < TEX_QUAD; p++) {
