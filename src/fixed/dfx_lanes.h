@@ -43,9 +43,26 @@ struct dfxl {
    dfxl_d v;            /* the register's value, exactly (below) */
 };
 
+/* Range events per lane.  With `optimistic` (a constant in each user, so
+ * the compiler keeps one of the two ways), the data paths leave out the
+ * saturation and flush of their results and only mark in `trouble` the
+ * lanes where an event happened: range events are rare, so a quad computes
+ * this way and, if any lane is marked, again with every event handled and
+ * counted (dfxl_any).  Where nothing is marked the results are the same
+ * bits: an operation without a range event is the plain truncation. */
 struct dfxl_stats {
    dfxl_i sat, flush;
+   dfxl_i trouble;
+   bool optimistic;
 };
+
+#define DFXL_STATS(opt) ((struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0), dfxl_splat(0), (opt) })
+
+/* Whether some lane is marked. */
+DFXL_INLINE bool dfxl_any(dfxl_i m)
+{
+   return (m[0] | m[1] | m[2] | m[3]) != 0;
+}
 
 DFXL_INLINE dfxl_i dfxl_splat(int64_t v)
 {
@@ -143,6 +160,12 @@ DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, dfxl_i live, struct dfxl_stats *st)
 {
    const dfxl_d ax = dfxl_abs(x);
    const dfxl_i nz = ax != 0;
+   if (st->optimistic) {
+      st->trouble |= ((ax >= 0x1p32) | (ax < 0x1p-32)) & nz & live;
+      const dfxl_i c = 37 - ((dfxl_exponent(x) + 1) & 3);
+      struct dfxl o = { (dfxl_d)((dfxl_i)dfxl_clear_low(x, c) & nz) };
+      return o;
+   }
    const dfxl_i sat = ax >= 0x1p32, flush = nz & (ax < 0x1p-32);
    st->sat -= sat & live;
    st->flush -= flush & live;

@@ -17,7 +17,9 @@
  * the adder returns v0 unchanged, neither with an event), so a constant
  * 1/w takes its reciprocal once per primitive, and a constant component
  * with a constant w is one value; the events those operations would have
- * raised are counted per pixel all the same.
+ * raised are counted per pixel all the same.  Each quad is first computed
+ * optimistically (dfx_lanes.h), and again with its range events handled
+ * where one happened; not with noskip.
  */
 #include "rast/front.h"
 #include "rast/lanes_fns.h"
@@ -35,12 +37,14 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
    to->flush += ev.flush * times;
 }
 
-void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
-                                 const int64_t an[RAST_QUAD_SIZE],
-                                 const int64_t bn[RAST_QUAD_SIZE])
+/* The quad; `optimistic` (dfx_lanes.h): false, leaving nothing counted,
+ * when a lane had a range event. */
+static inline __attribute__((always_inline)) bool
+persp(struct rast_front *fr, struct rast_quad *q, const int64_t an[RAST_QUAD_SIZE],
+      const int64_t bn[RAST_QUAD_SIZE], const bool optimistic)
 {
    struct fr_tex *t = &fr->tex;
-   struct dfxl_stats st = { dfxl_splat(0), dfxl_splat(0) };
+   struct dfxl_stats st = DFXL_STATS(optimistic);
    const dfxl_i nA = { an[0], an[1], an[2], an[3] }, nB = { bn[0], bn[1], bn[2], bn[3] };
    const struct dfxl rdet = splat(t->lrdet);
    const struct dfxl a = dfxl_mul(dfxl_from_fixed(nA, (int)t->k, &st), rdet, &st);
@@ -68,8 +72,6 @@ void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
    unsigned first = 0;
    if (t->w_const) {
       w = splat(t->lw);
-      count(&t->dst, t->w_ev, RAST_QUAD_SIZE);
-      t->n_const_w++;
    } else {
       w = dfxl_recip(v[0], &st);
       first = 1;
@@ -80,18 +82,38 @@ void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
       const unsigned j = idx[i] - 1;
       dfxl_to_float(v[i], q->in[fr->persp[j].var][fr->persp[j].chan]);
    }
+   unsigned n_const = 0;
    for (unsigned j = 0; j < fr->npersp; j++) {
       if (!t->comp_const[j])
          continue;
       float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
-      t->n_const_comp++;
+      n_const++;
       if (t->w_const) {
          for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
             o[i] = t->comp_val[j];
-         count(&t->dst, t->comp_ev[j], RAST_QUAD_SIZE);
       } else {
          dfxl_to_float(dfxl_mul(splat(t->lv[1 + j][0]), w, &st), o);
       }
    }
+   if (optimistic && dfxl_any(st.trouble))
+      return false;
+   /* the events of the values computed once per primitive, for every pixel */
+   if (t->w_const) {
+      count(&t->dst, t->w_ev, RAST_QUAD_SIZE);
+      t->n_const_w++;
+      for (unsigned j = 0; j < fr->npersp; j++)
+         if (t->comp_const[j])
+            count(&t->dst, t->comp_ev[j], RAST_QUAD_SIZE);
+   }
+   t->n_const_comp += n_const;
    dfxl_stats_add(&t->dst, st);
+   return true;
+}
+
+void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
+                                 const int64_t an[RAST_QUAD_SIZE],
+                                 const int64_t bn[RAST_QUAD_SIZE])
+{
+   if (!fr->tex.skip || !persp(fr, q, an, bn, true))
+      persp(fr, q, an, bn, false);
 }

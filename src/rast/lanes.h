@@ -23,8 +23,10 @@ struct rast_lanes {
                        const int64_t an[RAST_QUAD_SIZE], const int64_t bn[RAST_QUAD_SIZE]);
    /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
     * rectangle), specialised for the unit's state; `nolod`: the one that
-    * leaves out the LOD (tex_unit_lod_unused). */
-   tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool nolod);
+    * leaves out the LOD (tex_unit_lod_unused); `noskip`: the one that
+    * computes every quad with its range events handled at each operation
+    * (not optimistically, dfx_lanes.h). */
+   tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool noskip, bool nolod);
 };
 
 #define LANES_GLUE2(a, b) a##b

@@ -85,7 +85,7 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
    if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED) {
       if (!scalar && u->dims == 2 && rast_lanes()->tex_dfx19_2d) {
          *nolod = !noskip && tex_unit_lod_unused(u);
-         return rast_lanes()->tex_dfx19_2d(u, *nolod);
+         return rast_lanes()->tex_dfx19_2d(u, noskip, *nolod);
       }
       return table[0][u->dims - 1];
    }

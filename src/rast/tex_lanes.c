@@ -151,10 +151,11 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    }
    case TEX_WRAP_MIRROR_REPEAT: {
       const struct dfxl f = lanes_frac_of(c, &odd, st);
-      struct dfxl_stats ev = { dfxl_splat(0), dfxl_splat(0) };
+      struct dfxl_stats ev = DFXL_STATS(st->optimistic);
       const struct dfxl m = dfxl_sub(splat(u->lk_one), f, &ev);
       st->sat += ev.sat & odd;                   /* the scalar path subtracts where odd */
       st->flush += ev.flush & odd;
+      st->trouble |= ev.trouble & odd;
       c.v = dfxl_seld(odd, m.v, f.v);
       break;
    }
@@ -310,10 +311,11 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
 /* What a quad function is specialised for (a negative field: read from
  * the unit per quad): the wrap modes of s and t, whether the texels take
  * the one-channel-per-vector filter, whether the LOD is left out (the
- * sampler cannot use it: tex_unit_lod_unused). */
+ * sampler cannot use it: tex_unit_lod_unused), whether the quad is first
+ * computed optimistically (dfx_lanes.h). */
 struct quad_kind {
    int ws, wt, soa;
-   bool nolod;
+   bool nolod, optimistic;
 };
 
 /* Whether a wrap mode (negative: not known here) can put a tap outside. */
@@ -379,16 +381,18 @@ lod2(const struct tex_unit *u, struct dfxl cs, struct dfxl ct, struct dfxl_stats
    return tex_lod_from_rho(u, r);
 }
 
-static inline __attribute__((always_inline)) void
+/* The quad; `optimistic` (dfx_lanes.h): false, leaving nothing counted,
+ * when a lane had a range event. */
+static inline __attribute__((always_inline)) bool
 quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control ctl,
-      float rgba[4][TEX_QUAD], const struct quad_kind k)
+      float rgba[4][TEX_QUAD], const struct quad_kind k, const bool optimistic)
 {
    if (ctl == TEX_LOD_DERIVS) {
       tex_unit_sample_generic(u, q, ctl, rgba);
-      return;
+      return true;
    }
    struct tex_fst x = { { 0, 0 }, { 0, 0 } };
-   struct dfxl_stats st = { dfxl_splat(0), dfxl_splat(0) };
+   struct dfxl_stats st = DFXL_STATS(optimistic);
    const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
    const struct dfxl cs = coord(u, q->s, &x), ct = coord(u, q->t, &x);
    int layer[TEX_QUAD];
@@ -447,30 +451,38 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
       const lanes_v4f v = s < 4 ? out[s] : (lanes_v4f){ konst, konst, konst, konst };
       memcpy(rgba[ch], &v, sizeof(v));
    }
+   if (optimistic && dfxl_any(st.trouble))
+      return false;
    dfxl_stats_add(&x.d, st);
    tex_fst_flush(&x, u->stats);
+   return true;
 }
 
 /* The quad functions, specialised per sampler state where the replays
  * spend their time; the generic one reads everything from the unit. */
-#define QUAD2_FN(name, ws, wt, soa, nolod)                                                   \
+#define QUAD2_FN(name, ws, wt, soa, nolod, opt)                                              \
    static void name(const struct tex_unit *u, const struct tex_quad *q,                      \
                     enum tex_lod_control ctl, float rgba[4][TEX_QUAD])                       \
    {                                                                                         \
-      quad2(u, q, ctl, rgba, (struct quad_kind){ ws, wt, soa, nolod });                      \
+      const struct quad_kind k = { ws, wt, soa, nolod, opt };                                \
+      if (!opt || !quad2(u, q, ctl, rgba, k, true))                                          \
+         quad2(u, q, ctl, rgba, k, false);                                                   \
    }
 
-QUAD2_FN(quad2_generic, -1, -1, -1, false)
-QUAD2_FN(quad2_generic_nolod, -1, -1, -1, true)
-QUAD2_FN(quad2_rr, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, false)
-QUAD2_FN(quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, true)
-QUAD2_FN(quad2_ee, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, false)
-QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true)
-QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false)
-QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true)
+QUAD2_FN(quad2_precise, -1, -1, -1, false, false)
+QUAD2_FN(quad2_generic, -1, -1, -1, false, true)
+QUAD2_FN(quad2_generic_nolod, -1, -1, -1, true, true)
+QUAD2_FN(quad2_rr, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, false, true)
+QUAD2_FN(quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, true, true)
+QUAD2_FN(quad2_ee, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, false, true)
+QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true, true)
+QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false, true)
+QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true, true)
 
-tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool nolod)
+tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod)
 {
+   if (noskip)
+      return quad2_precise;
    static const struct {
       enum tex_wrap ws, wt;
       tex_quad_fn fn[2];

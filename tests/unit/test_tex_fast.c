@@ -311,7 +311,7 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
          quads++;
          fast_quads += u.quad != NULL;
          lanes_quads += u.quad && u.dims == 2 && u.kind == TEX_NS_DFX &&
-                        u.quad == rast_lanes()->tex_dfx19_2d(&u, u.lod_skipped);
+                        u.quad == rast_lanes()->tex_dfx19_2d(&u, j & 1, u.lod_skipped);
       }
    }
    CHECK(bad == 0, "%s: %u of %u quads differ", name, bad, units * per_unit);
