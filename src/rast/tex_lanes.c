@@ -311,11 +311,10 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
 /* What a quad function is specialised for (a negative field: read from
  * the unit per quad): the wrap modes of s and t, whether the texels take
  * the one-channel-per-vector filter, whether the LOD is left out (the
- * sampler cannot use it: tex_unit_lod_unused), whether the quad is first
- * computed optimistically (dfx_lanes.h). */
+ * sampler cannot use it: tex_unit_lod_unused). */
 struct quad_kind {
    int ws, wt, soa;
-   bool nolod, optimistic;
+   bool nolod;
 };
 
 /* Whether a wrap mode (negative: not known here) can put a tap outside. */
@@ -413,20 +412,17 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
       enum tex_filter f;
       tex_unit_select(u, cl[0], &l0, &l1, &frac, &f);
       const bool linear = f != TEX_FILTER_NEAREST;
-      if (linear)
-         level2(u, k, true, l0, cs, ct, layer, q->ref, out, &st);
-      else
-         level2(u, k, false, l0, cs, ct, layer, q->ref, out, &st);
-      if (frac) {
-         lanes_v4f o1[4];
+      /* one level, or two: one copy of each level function in the code */
+      lanes_v4f o[2][4];
+      for (unsigned i = 0; i < (frac ? 2u : 1u); i++) {
          if (linear)
-            level2(u, k, true, l1, cs, ct, layer, q->ref, o1, &st);
+            level2(u, k, true, i ? l1 : l0, cs, ct, layer, q->ref, o[i], &st);
          else
-            level2(u, k, false, l1, cs, ct, layer, q->ref, o1, &st);
-         const float fr = (float)frac * (1.0f / TEX_WEIGHT_ONE);
-         for (unsigned ch = 0; ch < 4; ch++)
-            out[ch] = out[ch] + fr * (o1[ch] - out[ch]);   /* lerp4 */
+            level2(u, k, false, i ? l1 : l0, cs, ct, layer, q->ref, o[i], &st);
       }
+      const float fr = (float)frac * (1.0f / TEX_WEIGHT_ONE);
+      for (unsigned ch = 0; ch < 4; ch++)
+         out[ch] = frac ? o[0][ch] + fr * (o[1][ch] - o[0][ch]) : o[0][ch];   /* lerp4 */
    } else {
       /* levels differ inside the quad: pixel by pixel, as tex_fast.c */
       for (unsigned p = 0; p < TEX_QUAD; p++) {
@@ -460,24 +456,37 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
 
 /* The quad functions, specialised per sampler state where the replays
  * spend their time; the generic one reads everything from the unit. */
-#define QUAD2_FN(name, ws, wt, soa, nolod, opt)                                              \
+/* The careful way, for every wrap mode: taken for noskip, and where an
+ * optimistic quad had a range event (rare: one copy of the code, with and
+ * without the LOD). */
+static void quad2_precise(const struct tex_unit *u, const struct tex_quad *q,
+                          enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
+{
+   quad2(u, q, ctl, rgba, (struct quad_kind){ -1, -1, -1, false }, false);
+}
+
+static void quad2_precise_nolod(const struct tex_unit *u, const struct tex_quad *q,
+                                enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
+{
+   quad2(u, q, ctl, rgba, (struct quad_kind){ -1, -1, -1, true }, false);
+}
+
+#define QUAD2_FN(name, ws, wt, soa, nolod)                                                   \
    static void name(const struct tex_unit *u, const struct tex_quad *q,                      \
                     enum tex_lod_control ctl, float rgba[4][TEX_QUAD])                       \
    {                                                                                         \
-      const struct quad_kind k = { ws, wt, soa, nolod, opt };                                \
-      if (!opt || !quad2(u, q, ctl, rgba, k, true))                                          \
-         quad2(u, q, ctl, rgba, k, false);                                                   \
+      if (!quad2(u, q, ctl, rgba, (struct quad_kind){ ws, wt, soa, nolod }, true))           \
+         (nolod ? quad2_precise_nolod : quad2_precise)(u, q, ctl, rgba);                     \
    }
 
-QUAD2_FN(quad2_precise, -1, -1, -1, false, false)
-QUAD2_FN(quad2_generic, -1, -1, -1, false, true)
-QUAD2_FN(quad2_generic_nolod, -1, -1, -1, true, true)
-QUAD2_FN(quad2_rr, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, false, true)
-QUAD2_FN(quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, true, true)
-QUAD2_FN(quad2_ee, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, false, true)
-QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true, true)
-QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false, true)
-QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true, true)
+QUAD2_FN(quad2_generic, -1, -1, -1, false)
+QUAD2_FN(quad2_generic_nolod, -1, -1, -1, true)
+QUAD2_FN(quad2_rr, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, false)
+QUAD2_FN(quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, 1, true)
+QUAD2_FN(quad2_ee, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, false)
+QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true)
+QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false)
+QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true)
 
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod)
 {
