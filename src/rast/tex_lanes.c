@@ -195,14 +195,10 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
  * a channel of up to eight taps in one vector: where the scalar path
  * decodes a texel and blends four channels at a time, these decode and
  * blend one channel of every tap, the same IEEE operations element by
- * element.  Shadow samplers and other layouts take the per-pixel taps. */
+ * element, for the units tex_bind.c marks `lanes_soa`.  Shadow samplers
+ * and other layouts take the per-pixel taps. */
 typedef float lanes_v8f __attribute__((vector_size(32)));
 typedef int32_t lanes_v8i __attribute__((vector_size(32)));
-
-static inline bool soa_layout(const struct tex_unit *u)
-{
-   return u->lanes_soa;
-}
 
 /* The taps' words at byte offsets `off` (lanes whose tap is in the
  * texture; the others read the level's first texel and are replaced by
@@ -341,7 +337,7 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
                  u->laxis[l][0], cs, &A, st);
    lanes_addr_of(u, linear, k.wt < 0 ? u->samp.wrap[1] : (unsigned)k.wt, &ax[1],
                  u->laxis[l][1], ct, &B, st);
-   if (k.soa > 0 || (k.soa < 0 && soa_layout(u))) {
+   if (k.soa > 0 || (k.soa < 0 && u->lanes_soa)) {
       const lanes_v4i zoff = { layer[0], layer[1], layer[2], layer[3] };
       soa_level2(u, linear, may_border(k.ws, linear) || may_border(k.wt, linear), l, &A, &B,
                  zoff * (int32_t)lv->img_stride, out);
@@ -500,7 +496,7 @@ tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, 
       { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, { quad2_ee, quad2_ee_nolod } },
       { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, { quad2_mm, quad2_mm_nolod } },
    };
-   if (soa_layout(u))
+   if (u->lanes_soa)
       for (unsigned i = 0; i < sizeof(special) / sizeof(special[0]); i++)
          if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt)
             return special[i].fn[nolod];

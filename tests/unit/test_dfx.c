@@ -25,10 +25,7 @@ static uint64_t rng = 88172645463325252ull;
 
 static uint64_t rnd(void)
 {
-   rng ^= rng << 13;
-   rng ^= rng >> 7;
-   rng ^= rng << 17;
-   return rng;
+   return t_xorshift(&rng);
 }
 
 static int ex(int l) { return 4 * l + 4 - F.mant_bits - 32; }

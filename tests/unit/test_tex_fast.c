@@ -18,10 +18,7 @@
 static uint64_t rng = 0x9e3779b97f4a7c15ull;
 static uint32_t rnd32(void)
 {
-   rng ^= rng << 13;
-   rng ^= rng >> 7;
-   rng ^= rng << 17;
-   return (uint32_t)(rng >> 16);
+   return (uint32_t)(t_xorshift(&rng) >> 16);
 }
 static unsigned rndn(unsigned n) { return rnd32() % n; }
 static float rndu(void) { return (float)rnd32() / 4294967296.0f; }

@@ -11,6 +11,16 @@
 
 extern unsigned t_failures;
 
+/* xorshift64 (Marsaglia): one step of a test's reproducible random
+ * numbers; each test keeps and seeds its own state. */
+static inline uint64_t t_xorshift(uint64_t *state)
+{
+   *state ^= *state << 13;
+   *state ^= *state >> 7;
+   *state ^= *state << 17;
+   return *state;
+}
+
 #define CHECK(cond, ...) do { \
       if (!(cond)) { \
          if (t_failures++ < 20) { \
