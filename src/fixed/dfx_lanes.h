@@ -25,6 +25,9 @@
 #include <stdint.h>
 #include <string.h>
 #include "fixed/dfx_ops.h"
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
 
 #define DFXL_N 4
 
@@ -45,23 +48,33 @@ struct dfxl {
 
 /* Range events per lane.  With `optimistic` (a constant in each user, so
  * the compiler keeps one of the two ways), the data paths leave out the
- * saturation and flush of their results and only mark in `trouble` the
- * lanes where an event happened: range events are rare, so a quad computes
- * this way and, if any lane is marked, again with every event handled and
- * counted (dfxl_any).  Where nothing is marked the results are the same
- * bits: an operation without a range event is the plain truncation. */
+ * saturation and flush of their results and only keep, per lane, the
+ * largest magnitude any operation produced and the smallest nonzero one:
+ * range events are rare, so a quad computes this way and, if those bounds
+ * show an event in some lane (dfxl_trouble), again with every event
+ * handled and counted.  Where no lane is marked the results are the same
+ * bits: an operation without a range event is the plain truncation.  Two
+ * bounds cost two instructions per operation where a mask of the events
+ * would cost seven. */
 struct dfxl_stats {
    dfxl_i sat, flush;
-   dfxl_i trouble;
+   dfxl_d hi, lo;       /* optimistic: max |x|; min over nonzero x of |x| one step down */
    bool optimistic;
 };
 
-#define DFXL_STATS(opt) ((struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0), dfxl_splat(0), (opt) })
+#define DFXL_STATS(opt)                                                                      \
+   ((struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0), { 0, 0, 0, 0 },                       \
+                         { __builtin_inf(), __builtin_inf(), __builtin_inf(), __builtin_inf() }, \
+                         (opt) })
 
 /* Whether some lane is marked. */
 DFXL_INLINE bool dfxl_any(dfxl_i m)
 {
+#ifdef __AVX__
+   return _mm256_movemask_pd((__m256d)m) != 0;      /* a mask lane is all ones or zeros */
+#else
    return (m[0] | m[1] | m[2] | m[3]) != 0;
+#endif
 }
 
 DFXL_INLINE dfxl_i dfxl_splat(int64_t v)
@@ -73,7 +86,13 @@ DFXL_INLINE dfxl_i dfxl_splat(int64_t v)
 /* mask ? a : b, mask lanes all ones or all zeros (a vector comparison) */
 DFXL_INLINE dfxl_i dfxl_sel(dfxl_i mask, dfxl_i a, dfxl_i b)
 {
+#ifdef __AVX2__
+   /* one instruction where the expression below is three: blendv reads
+    * each lane's sign, and a mask lane is all ones or all zeros */
+   return (dfxl_i)_mm256_blendv_pd((__m256d)b, (__m256d)a, (__m256d)mask);
+#else
    return (a & mask) | (b & ~mask);
+#endif
 }
 
 /* Logical shifts by per-lane counts in 0..63 (the fields are never
@@ -123,6 +142,14 @@ DFXL_INLINE dfxl_d dfxl_pow2(dfxl_i e)        /* 2^e, e in -1022..1023 */
    return (dfxl_d)dfxl_shl(e + 1023, dfxl_splat(52));
 }
 
+DFXL_INLINE double dfxl_pow2_1(int e)      /* the same, one number */
+{
+   const uint64_t b = (uint64_t)(e + 1023) << 52;
+   double d;
+   memcpy(&d, &b, sizeof(d));
+   return d;
+}
+
 DFXL_INLINE dfxl_d dfxl_abs(dfxl_d x)
 {
    return (dfxl_d)((dfxl_i)x & dfxl_splat(INT64_MAX));
@@ -148,28 +175,79 @@ DFXL_INLINE dfxl_d dfxl_clear_low(dfxl_d x, dfxl_i c)
    return (dfxl_d)((dfxl_i)x & dfxl_shl(dfxl_splat(-1), c));
 }
 
+/* a < b ? a : b and a > b ? a : b per lane: where a is a NaN, b (the
+ * instructions' own rule). */
+DFXL_INLINE dfxl_d dfxl_mind(dfxl_d a, dfxl_d b)
+{
+#ifdef __AVX__
+   return (dfxl_d)_mm256_min_pd((__m256d)a, (__m256d)b);
+#else
+   return dfxl_seld(a < b, a, b);
+#endif
+}
+
+DFXL_INLINE dfxl_d dfxl_maxd(dfxl_d a, dfxl_d b)
+{
+#ifdef __AVX__
+   return (dfxl_d)_mm256_max_pd((__m256d)a, (__m256d)b);
+#else
+   return dfxl_seld(a > b, a, b);
+#endif
+}
+
+/* The lanes of an optimistic way that had a range event: some result at or
+ * above 2^32 (L > 15), or a nonzero one below 2^-32 (L < 0).  `lo` holds
+ * the magnitudes' bits less one (dfxl_round), so its threshold is 2^-32's
+ * bits less one. */
+DFXL_INLINE dfxl_i dfxl_trouble(const struct dfxl_stats *st)
+{
+   const double lo_t = 0x1.fffffffffffffp-33;   /* the double below 2^-32 */
+   return (st->hi >= 0x1p32) | (st->lo < lo_t);
+}
+
+/* `from`'s bounds into `st` where `m` (optimistic), its counts where `m`. */
+DFXL_INLINE void dfxl_merge_where(struct dfxl_stats *st, const struct dfxl_stats *from, dfxl_i m)
+{
+   st->sat += from->sat & m;
+   st->flush += from->flush & m;
+   if (st->optimistic) {
+      const dfxl_d h = dfxl_seld(m, from->hi, (dfxl_d){ 0, 0, 0, 0 });
+      const dfxl_d l = dfxl_seld(m, from->lo, (dfxl_d){ __builtin_inf(), __builtin_inf(),
+                                                          __builtin_inf(), __builtin_inf() });
+      st->hi = dfxl_maxd(h, st->hi);
+      st->lo = dfxl_mind(l, st->lo);
+   }
+}
+
 /* dfx_finish_i after the data path: the exact result x truncated toward
  * zero to its digit's grid; above L = 15 the largest magnitude, below
- * L = 0 zero, both counted where `live`.  An exact zero is +0.
+ * L = 0 zero, both counted.  An exact zero is +0.
  *
  * With x's leading one at 2^p, L = floor((p + 32) / 4) and the grid is
  * 2^(4L - 47), so p - g = ((p + 32) mod 4) + 15: the mantissa keeps 16 to
  * 19 bits, and with the biased exponent e = p + 1023 the bits to clear are
- * 37 - ((e + 1) mod 4).  L > 15 is |x| >= 2^32, L < 0 is |x| < 2^-32. */
-DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, dfxl_i live, struct dfxl_stats *st)
+ * 37 - ((e + 1) mod 4) (the sign above e's eleven bits leaves that alone).
+ * L > 15 is |x| >= 2^32, L < 0 is |x| < 2^-32.
+ *
+ * The optimistic way keeps the bounds: the largest |x|, and the smallest
+ * |x| less one step of its bits, where zero becomes a NaN, which
+ * dfxl_mind passes over.  It takes x's zero as it is: only a product is
+ * ever -0 (dfxl_mul makes it +0). */
+DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, struct dfxl_stats *st)
 {
    const dfxl_d ax = dfxl_abs(x);
-   const dfxl_i nz = ax != 0;
+   const dfxl_i c = 37 - ((dfxl_shr((dfxl_i)x, dfxl_splat(52)) + 1) & 3);
    if (st->optimistic) {
-      st->trouble |= ((ax >= 0x1p32) | (ax < 0x1p-32)) & nz & live;
-      const dfxl_i c = 37 - ((dfxl_exponent(x) + 1) & 3);
-      struct dfxl o = { (dfxl_d)((dfxl_i)dfxl_clear_low(x, c) & nz) };
+      const dfxl_d l = (dfxl_d)((dfxl_i)ax - 1);
+      st->hi = dfxl_maxd(ax, st->hi);
+      st->lo = dfxl_mind(l, st->lo);
+      struct dfxl o = { dfxl_clear_low(x, c) };
       return o;
    }
+   const dfxl_i nz = ax != 0;
    const dfxl_i sat = ax >= 0x1p32, flush = nz & (ax < 0x1p-32);
-   st->sat -= sat & live;
-   st->flush -= flush & live;
-   const dfxl_i c = 37 - ((dfxl_exponent(x) + 1) & 3);
+   st->sat -= sat;
+   st->flush -= flush;
    dfxl_d r = dfxl_clear_low(x, c);
    const dfxl_d big = (dfxl_d)((dfxl_i)(dfxl_d){ DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG,
                                                  DFXL_MAX_MAG } |
@@ -179,12 +257,34 @@ DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, dfxl_i live, struct dfxl_stats *st)
    return o;
 }
 
-/* dfx_from_fixed_i: v * 2^-k to nearest, ties away from zero (an integer
- * up to 2^63 does not fit a double, so this one works on the fields). */
+/* dfx_from_fixed_i: v * 2^-k to nearest, ties away from zero.
+ *
+ * Careful: an integer up to 2^63 does not fit a double, so this way works
+ * on the fields.  Optimistic: below 2^52 (every numerator of a primitive
+ * in the 12.12 screen) v is a double exactly, and so is v * 2^-k; half a
+ * step of its digit's grid added to its magnitude, truncated, is the
+ * nearest with ties away from zero (dfxl_from_int), and the sum is exact:
+ * the magnitude has at most 52 significant bits, so even with a carry into
+ * the next power of two the bits down to the half step fit 53.  Larger v
+ * mark the lane (a quad the careful way recomputes). */
+/* 2^(g) for the grid g of a nonzero value's digit: g = p - 15 - ((e + 1) mod 4). */
+DFXL_INLINE dfxl_d dfxl_grid(dfxl_d x)
+{
+   const dfxl_i e = dfxl_exponent(x);
+   return (dfxl_d)dfxl_shl(e - 15 - ((e + 1) & 3), dfxl_splat(52));
+}
+
 DFXL_INLINE struct dfxl dfxl_from_fixed(dfxl_i v, int k, struct dfxl_stats *st)
 {
-   const dfxl_i live = v != 0, neg = v < 0;
+   const dfxl_i neg = v < 0;
    const dfxl_i n = dfxl_sel(neg, -v, v);
+   if (st->optimistic) {
+      const dfxl_i big = dfxl_shr(n, dfxl_splat(52)) != 0;     /* -INT64_MIN too */
+      st->hi = dfxl_seld(big, (dfxl_d){ 0x1p32, 0x1p32, 0x1p32, 0x1p32 }, st->hi);
+      const dfxl_d ax = dfxl_to_d(n & dfxl_splat(((int64_t)1 << 52) - 1)) * dfxl_pow2_1(-k);
+      const dfxl_d up = ax + (dfxl_d)((dfxl_i)(dfxl_grid(ax) * 0.5) & (ax != 0));
+      return dfxl_round((dfxl_d)((dfxl_i)up | dfxl_shl(neg & 1, dfxl_splat(63))), st);
+   }
    /* L = floor((bitlen - 1 - k + 32) / 4), biased to stay non-negative */
    const dfxl_i l = dfxl_shr(dfxl_bitlen64(n) - 1 - k + 32 + 64, dfxl_splat(2)) - 16;
    const dfxl_i sh = 4 * l - 47 + k;           /* bits of n to drop */
@@ -197,27 +297,30 @@ DFXL_INLINE struct dfxl dfxl_from_fixed(dfxl_i v, int k, struct dfxl_stats *st)
    const dfxl_i lc = dfxl_sel(l < -20, dfxl_splat(-20), dfxl_sel(l > 40, dfxl_splat(40), l));
    dfxl_d x = dfxl_to_d(m) * dfxl_pow2(4 * lc - 47);
    x = (dfxl_d)((dfxl_i)x | dfxl_shl(neg & 1, dfxl_splat(63)));
-   return dfxl_round(x, live, st);
+   return dfxl_round(x, st);
 }
 
 /* dfx_add_i: order by magnitude; the smaller truncated to the larger's
  * grid with one guard digit (the 5-way aligner; 5 digits or more leave
- * nothing of it); the exact sum; truncated to its own digit's grid. */
+ * nothing of it); the exact sum; truncated to its own digit's grid.
+ *
+ * With D = (e_hi + 1) & ~3 = 4 L_hi + 992: the smaller is 5 digits below
+ * or more (L_lo <= L_hi - 5) exactly when |lo| < 2^(4 L_hi - 48), a power
+ * of two with the biased exponent D - 17 (zero is below it too); else the
+ * bits of lo below the guard digit's grid 2^(4 L_hi - 51) are
+ * 32 - e_lo + D, 30 to 49 of them.  Where lo is dropped the sum is hi,
+ * which the truncation leaves as it is, without an event. */
 DFXL_INLINE struct dfxl dfxl_add(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
 {
-   const dfxl_i swap = dfxl_abs(b.v) > dfxl_abs(a.v);
+   const dfxl_d aa = dfxl_abs(a.v), ab = dfxl_abs(b.v);
+   const dfxl_i swap = ab > aa;
    const dfxl_d hi = dfxl_seld(swap, b.v, a.v), lo = dfxl_seld(swap, a.v, b.v);
-   const dfxl_i eh = dfxl_exponent(hi), el = dfxl_exponent(lo);
-   /* digits apart: floor((e + 1) / 4) differ by 5 or more */
-   const dfxl_i keep = (lo == 0) | (dfxl_shr(eh + 1, dfxl_splat(2)) -
-                                    dfxl_shr(el + 1, dfxl_splat(2)) >= 5);
-   /* the guard digit's grid 2^(4 L_hi - 51): with 4 L_hi = ((eh + 1) & ~3) - 992
-    * the bits of lo below it are 32 - el + ((eh + 1) & ~3), 30 to 49 of them
-    * when lo is within 4 digits */
-   const dfxl_i c = dfxl_sel(keep, dfxl_splat(0), 32 - el + ((eh + 1) & ~3));
-   struct dfxl r = dfxl_round(hi + dfxl_clear_low(lo, c), ~keep, st);
-   r.v = dfxl_seld(keep, hi, r.v);
-   return r;
+   const dfxl_d alo = dfxl_seld(swap, aa, ab);
+   const dfxl_i d = (dfxl_shr((dfxl_i)dfxl_seld(swap, ab, aa), dfxl_splat(52)) + 1) & ~3;
+   const dfxl_i keep = alo < (dfxl_d)dfxl_shl(d - 17, dfxl_splat(52));
+   const dfxl_i c = (32 - dfxl_shr((dfxl_i)alo, dfxl_splat(52)) + d) & ~keep;
+   const dfxl_d lo_al = (dfxl_d)((dfxl_i)dfxl_clear_low(lo, c) & ~keep);
+   return dfxl_round(hi + lo_al, st);
 }
 
 DFXL_INLINE struct dfxl dfxl_neg(struct dfxl a)
@@ -234,7 +337,7 @@ DFXL_INLINE struct dfxl dfxl_sub(struct dfxl a, struct dfxl b, struct dfxl_stats
 /* dfx_mul_i (Fig. 9): the exact product truncated to W bits. */
 DFXL_INLINE struct dfxl dfxl_mul(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
 {
-   return dfxl_round(a.v * b.v, dfxl_splat(-1), st);
+   return dfxl_round(a.v * b.v + 0.0, st);      /* a zero product is +0 */
 }
 
 /* dfx_recip_i: the truncated reciprocal.  The double quotient 1/v is
@@ -246,7 +349,7 @@ DFXL_INLINE struct dfxl dfxl_recip(struct dfxl a, struct dfxl_stats *st)
 {
    const dfxl_i zero = a.v == 0;
    const dfxl_d one = { 1, 1, 1, 1 };
-   struct dfxl r = dfxl_round(one / dfxl_seld(zero, one, a.v), ~zero, st);
+   struct dfxl r = dfxl_round(one / dfxl_seld(zero, one, a.v), st);
    st->sat -= zero;
    const dfxl_d big = { DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG };
    r.v = dfxl_seld(zero, big, r.v);
@@ -309,13 +412,6 @@ DFXL_INLINE dfxl_d dfxl_floor(dfxl_d x)
    return dfxl_seld(r > x, r - 1, r);
 }
 
-/* 2^(g) for the grid g of a nonzero value's digit: g = p - 15 - ((e + 1) mod 4). */
-DFXL_INLINE dfxl_d dfxl_grid(dfxl_d x)
-{
-   const dfxl_i e = dfxl_exponent(x);
-   return (dfxl_d)dfxl_shl(e - 15 - ((e + 1) & 3), dfxl_splat(52));
-}
-
 /* dfx_from_fixed_i of an integer (k = 0) that a double holds: to nearest,
  * ties away from zero, on the grid of its digit (half a step added to the
  * magnitude, then truncated; a carry into the next digit lands on a power
@@ -326,7 +422,7 @@ DFXL_INLINE struct dfxl dfxl_from_int(dfxl_d x, struct dfxl_stats *st)
    const dfxl_d h = dfxl_grid(ax) * 0.5;
    const dfxl_d up = ax + dfxl_seld(ax == 0, (dfxl_d){ 0, 0, 0, 0 }, h);
    const dfxl_d sgn = (dfxl_d)((dfxl_i)x & dfxl_splat(INT64_MIN));
-   return dfxl_round((dfxl_d)((dfxl_i)up | (dfxl_i)sgn), dfxl_splat(-1), st);
+   return dfxl_round((dfxl_d)((dfxl_i)up | (dfxl_i)sgn), st);
 }
 
 DFXL_INLINE void dfxl_stats_add(struct dfx_stats *to, struct dfxl_stats st)

@@ -133,6 +133,13 @@ struct fr_tex {
    bool comp_const[FR_MAX_COMP];        /* A/w constant */
    float comp_val[FR_MAX_COMP];         /* with w constant: the component itself */
    struct dfx_stats comp_ev[FR_MAX_COMP];
+   /* the planes evaluated per pixel (1/w unless constant, then the
+    * components that are not), as lv[] indices, and where each goes in
+    * the quad (component's float offset in rast_quad.in) */
+   unsigned ln;
+   uint8_t lidx[1 + FR_MAX_COMP];
+   uint16_t lout[1 + FR_MAX_COMP];
+   unsigned n_const;                    /* constant components */
    uint64_t n_const_w, n_const_comp;    /* moved to rast_stats per quad row */
 };
 

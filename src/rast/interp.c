@@ -189,12 +189,23 @@ static void lanes_skips_setup(struct rast_front *fr)
       t->lw = dfxl_value(w);
       t->w_one = t->lw == 1.0;
    }
+   t->ln = 0;
+   t->n_const = 0;
+   if (!t->w_const)
+      t->lidx[t->ln++] = 0;
    for (unsigned j = 0; j < fr->npersp; j++) {
       t->comp_const[j] = t->skip && plane_is_const(&t->pl[1 + j]);
       if (t->comp_const[j] && t->w_const) {
          t->comp_ev[j] = (struct dfx_stats){ 0, 0 };
          t->comp_val[j] = (float)dfx_to_double_i(f, dfx_mul_i(f, t->pl[1 + j].v0.d, w,
                                                               &t->comp_ev[j]));
+      }
+      if (t->comp_const[j]) {
+         t->n_const++;
+      } else {
+         t->lout[t->ln] = (uint16_t)(&fr->quad.in[fr->persp[j].var][fr->persp[j].chan][0] -
+                                     &fr->quad.in[0][0][0]);
+         t->lidx[t->ln++] = (uint8_t)(1 + j);
       }
    }
 }
@@ -255,6 +266,15 @@ static void tex_begin(struct rast_front *fr, int64_t x, int64_t y)
    t->bn[1] = t->bn[0] + t->b_dy;
 }
 
+/* The numerators' registers moved on to the next quad. */
+static inline void tex_numerators_next(struct fr_tex *t)
+{
+   for (unsigned r = 0; r < 2; r++) {
+      t->an[r] += 2 * t->a_dx;
+      t->bn[r] += 2 * t->b_dx;
+   }
+}
+
 /* The quad's numerators (pixels x, x+1 of both scan lines), and the
  * registers moved on to the next quad. */
 static inline __attribute__((always_inline)) void
@@ -265,9 +285,8 @@ tex_numerators(struct fr_tex *t, int64_t an[RAST_QUAD_SIZE], int64_t bn[RAST_QUA
       an[2 * r + 1] = t->an[r] + t->a_dx;
       bn[2 * r] = t->bn[r];
       bn[2 * r + 1] = t->bn[r] + t->b_dx;
-      t->an[r] += 2 * t->a_dx;
-      t->bn[r] += 2 * t->b_dx;
    }
+   tex_numerators_next(t);
 }
 
 /* COLOR components of a non-float system: the same form in binary32. */
@@ -326,10 +345,9 @@ static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divi
 
 static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, bool divide)
 {
-   int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
-   tex_numerators(&fr->tex, an, bn);
    if (divide)
-      rast_lanes()->persp_dfx19(fr, q, an, bn);
+      rast_lanes()->persp_dfx19(fr, q);
+   tex_numerators_next(&fr->tex);
 }
 
 /* The reference for binary32: tex_quad_float must give its bits and range

@@ -38,33 +38,27 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
 }
 
 /* The quad; `optimistic` (dfx_lanes.h): false, leaving nothing counted,
- * when a lane had a range event. */
+ * when a lane had a range event.  `n`: the planes evaluated per pixel
+ * (t->ln), a constant in the common cases so that the planes stay in
+ * registers. */
 static inline __attribute__((always_inline)) bool
-persp(struct rast_front *fr, struct rast_quad *q, const int64_t an[RAST_QUAD_SIZE],
-      const int64_t bn[RAST_QUAD_SIZE], const bool optimistic)
+persp(struct rast_front *fr, struct rast_quad *q, const dfxl_i *an, const dfxl_i *bn,
+      const bool optimistic, const unsigned n)
 {
    struct fr_tex *t = &fr->tex;
    struct dfxl_stats st = DFXL_STATS(optimistic);
-   const dfxl_i nA = { an[0], an[1], an[2], an[3] }, nB = { bn[0], bn[1], bn[2], bn[3] };
+   const dfxl_i nA = *an, nB = *bn;
    const struct dfxl rdet = splat(t->lrdet);
    const struct dfxl a = dfxl_mul(dfxl_from_fixed(nA, (int)t->k, &st), rdet, &st);
    const struct dfxl b = dfxl_mul(dfxl_from_fixed(nB, (int)t->k, &st), rdet, &st);
 
-   /* the planes evaluated per pixel: 1/w unless constant, and the
-    * components that are not */
-   unsigned idx[1 + FR_MAX_COMP], n = 0;
-   if (!t->w_const)
-      idx[n++] = 0;
-   for (unsigned j = 0; j < fr->npersp; j++)
-      if (!t->comp_const[j])
-         idx[n++] = 1 + j;
    struct dfxl v[1 + FR_MAX_COMP], u[1 + FR_MAX_COMP];
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxl_mul(a, splat(t->lv[idx[i]][1]), &st);
+      v[i] = dfxl_mul(a, splat(t->lv[t->lidx[i]][1]), &st);
    for (unsigned i = 0; i < n; i++)
-      u[i] = dfxl_mul(b, splat(t->lv[idx[i]][2]), &st);
+      u[i] = dfxl_mul(b, splat(t->lv[t->lidx[i]][2]), &st);
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxl_add(splat(t->lv[idx[i]][0]), v[i], &st);
+      v[i] = dfxl_add(splat(t->lv[t->lidx[i]][0]), v[i], &st);
    for (unsigned i = 0; i < n; i++)
       v[i] = dfxl_add(v[i], u[i], &st);
 
@@ -76,26 +70,26 @@ persp(struct rast_front *fr, struct rast_quad *q, const int64_t an[RAST_QUAD_SIZ
       w = dfxl_recip(v[0], &st);
       first = 1;
    }
+   float *in = &q->in[0][0][0];
    for (unsigned i = first; i < n; i++) {
       if (!t->w_one)
          v[i] = dfxl_mul(v[i], w, &st);
-      const unsigned j = idx[i] - 1;
-      dfxl_to_float(v[i], q->in[fr->persp[j].var][fr->persp[j].chan]);
+      dfxl_to_float(v[i], in + t->lout[i]);
    }
-   unsigned n_const = 0;
-   for (unsigned j = 0; j < fr->npersp; j++) {
-      if (!t->comp_const[j])
-         continue;
-      float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
-      n_const++;
-      if (t->w_const) {
-         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-            o[i] = t->comp_val[j];
-      } else {
-         dfxl_to_float(dfxl_mul(splat(t->lv[1 + j][0]), w, &st), o);
+   if (t->n_const) {
+      for (unsigned j = 0; j < fr->npersp; j++) {
+         if (!t->comp_const[j])
+            continue;
+         float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
+         if (t->w_const) {
+            for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+               o[i] = t->comp_val[j];
+         } else {
+            dfxl_to_float(dfxl_mul(splat(t->lv[1 + j][0]), w, &st), o);
+         }
       }
    }
-   if (optimistic && dfxl_any(st.trouble))
+   if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
    /* the events of the values computed once per primitive, for every pixel */
    if (t->w_const) {
@@ -105,15 +99,43 @@ persp(struct rast_front *fr, struct rast_quad *q, const int64_t an[RAST_QUAD_SIZ
          if (t->comp_const[j])
             count(&t->dst, t->comp_ev[j], RAST_QUAD_SIZE);
    }
-   t->n_const_comp += n_const;
+   t->n_const_comp += t->n_const;
    dfxl_stats_add(&t->dst, st);
    return true;
 }
 
-void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
-                                 const int64_t an[RAST_QUAD_SIZE],
-                                 const int64_t bn[RAST_QUAD_SIZE])
+/* The optimistic quad for the common plane counts. */
+#define PERSP_N(nn)                                                                           \
+   static bool persp_##nn(struct rast_front *fr, struct rast_quad *q, const dfxl_i *an,      \
+                          const dfxl_i *bn)                                                   \
+   {                                                                                          \
+      return persp(fr, q, an, bn, true, nn);                                                  \
+   }
+PERSP_N(1)
+PERSP_N(2)
+PERSP_N(3)
+PERSP_N(4)
+
+/* The quad's numerators are built here from the registers, as vectors:
+ * written as four numbers and read as one vector they would wait on the
+ * processor's store forwarding. */
+void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q)
 {
-   if (!fr->tex.skip || !persp(fr, q, an, bn, true))
-      persp(fr, q, an, bn, false);
+   struct fr_tex *t = &fr->tex;
+   const dfxl_i an = { t->an[0], t->an[0] + t->a_dx, t->an[1], t->an[1] + t->a_dx };
+   const dfxl_i bn = { t->bn[0], t->bn[0] + t->b_dx, t->bn[1], t->bn[1] + t->b_dx };
+   const unsigned n = t->ln;
+   if (t->skip) {
+      bool done;
+      switch (n) {
+      case 1: done = persp_1(fr, q, &an, &bn); break;
+      case 2: done = persp_2(fr, q, &an, &bn); break;
+      case 3: done = persp_3(fr, q, &an, &bn); break;
+      case 4: done = persp_4(fr, q, &an, &bn); break;
+      default: done = persp(fr, q, &an, &bn, true, n); break;
+      }
+      if (done)
+         return;
+   }
+   persp(fr, q, &an, &bn, false, n);
 }

@@ -17,10 +17,11 @@ struct rast_front;
 
 struct rast_lanes {
    const char *isa;                       /* "avx2", "sse2" */
-   /* The perspective division of a quad in dfx24 (W = 19) from the quad's
-    * numerators; the COLOR components of the wide profile stay scalar. */
-   void (*persp_dfx19)(struct rast_front *fr, struct rast_quad *q,
-                       const int64_t an[RAST_QUAD_SIZE], const int64_t bn[RAST_QUAD_SIZE]);
+   /* The perspective division of a quad in dfx24 (W = 19) from the
+    * numerators' registers (fr->tex.an, bn: the quad's left pixels), which
+    * the caller then moves on; the COLOR components of the wide profile
+    * stay scalar. */
+   void (*persp_dfx19)(struct rast_front *fr, struct rast_quad *q);
    /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
     * rectangle), specialised for the unit's state; `nolod`: the one that
     * leaves out the LOD (tex_unit_lod_unused); `noskip`: the one that

@@ -4,9 +4,7 @@
 
 #include "rast/lanes.h"
 
-void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q,
-                                 const int64_t an[RAST_QUAD_SIZE],
-                                 const int64_t bn[RAST_QUAD_SIZE]);
+void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q);
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod);
 
 #endif

@@ -167,6 +167,14 @@ struct tex_unit {
     * them, their values in doubles; [l][a]: scale, lo, hi of axis[l][a] */
    double lk_one, lk_texel_offset;
    bool lanes_soa;                /* the filter one channel per vector (tex_bind.c) */
+   /* with lanes_soa, each result channel (after the swizzle) from the
+    * texel word: ((word >> shift) & mask) / 255 + add, the border's where
+    * outside; a constant channel (swizzle 0 or 1, X formats' alpha) has
+    * mask 0 */
+   struct tex_lanes_channel {
+      int32_t shift, mask;
+      float add, border;
+   } lanes_ch[4];
    double laxis[TEX_MAX_LEVELS][3][3];
 };
 

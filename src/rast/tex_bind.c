@@ -63,9 +63,33 @@ static bool lanes_soa(const struct tex_unit *u)
    return true;
 }
 
+/* The result channels of a lanes_soa unit from its texel words: the
+ * swizzle taken into the decoding, which filters constants exactly
+ * (a + f (a - a) is a). */
+static void lanes_channels(struct tex_unit *u)
+{
+   const enum tex_format f = u->view.format;
+   const bool bgr = f == TEX_FMT_BGRA8 || f == TEX_FMT_BGRX8;
+   const bool x = f == TEX_FMT_RGBX8 || f == TEX_FMT_BGRX8;
+   static const int32_t shift_rgba[4] = { 0, 8, 16, 24 }, shift_bgra[4] = { 16, 8, 0, 24 };
+   for (unsigned ch = 0; ch < 4; ch++) {
+      struct tex_lanes_channel *c = &u->lanes_ch[ch];
+      const unsigned s = u->view.swizzle[ch];
+      if (s < 4 && !(s == 3 && x)) {
+         *c = (struct tex_lanes_channel){ bgr ? shift_bgra[s] : shift_rgba[s], 0xff, 0.0f,
+                                          u->samp.border[s] };
+      } else {
+         const float k = s == 3 || s == TEX_SWZ_1 ? 1.0f : 0.0f;
+         *c = (struct tex_lanes_channel){ 0, 0, k, s < 4 ? u->samp.border[s] : k };
+      }
+   }
+}
+
 static void lanes_constants(struct tex_unit *u)
 {
    u->lanes_soa = lanes_soa(u);
+   if (u->lanes_soa)
+      lanes_channels(u);
    u->lk_one = lanes_value(u, u->k_one);
    u->lk_texel_offset = lanes_value(u, u->k_texel_offset);
    for (unsigned l = 0; l < u->view.num_levels; l++)

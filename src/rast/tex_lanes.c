@@ -42,9 +42,10 @@ coord(const struct tex_unit *u, const float v[TEX_QUAD], struct tex_fst *x)
    r = dfxl_seld((r != d) & (d < 0), r - dfxl_grid(d), r);
    const dfxl_i direct = (ad >= 0x1p-32) & (dfxl_abs(r) < 0x1p32);
    struct dfxl o = { (dfxl_d)((dfxl_i)r & direct) };
-   for (unsigned p = 0; p < TEX_QUAD; p++)
-      if (!direct[p] && v[p] != 0.0f)
-         o.v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, v[p], &x->n).d);
+   if (dfxl_any(~direct & (d != 0)))
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         if (!direct[p] && v[p] != 0.0f)
+            o.v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, v[p], &x->n).d);
    return o;
 }
 
@@ -153,9 +154,7 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       const struct dfxl f = lanes_frac_of(c, &odd, st);
       struct dfxl_stats ev = DFXL_STATS(st->optimistic);
       const struct dfxl m = dfxl_sub(splat(u->lk_one), f, &ev);
-      st->sat += ev.sat & odd;                   /* the scalar path subtracts where odd */
-      st->flush += ev.flush & odd;
-      st->trouble |= ev.trouble & odd;
+      dfxl_merge_where(st, &ev, odd);            /* the scalar path subtracts where odd */
       c.v = dfxl_seld(odd, m.v, f.v);
       break;
    }
@@ -234,19 +233,18 @@ soa_offsets(const struct tex_level *lv, lanes_v8i x, lanes_v8i y, lanes_v8i zoff
    return off & ~*out;
 }
 
-/* tex_unorm8 of one channel of the words, the border where outside. */
+/* Result channel `ch` of the words (tex_unorm8 of its byte after the
+ * swizzle, tex_bind.c's lanes_channels), the border where outside. */
 static inline __attribute__((always_inline)) lanes_v8f
 soa_channel(const struct tex_unit *u, lanes_v8i words, bool border, lanes_v8i out, unsigned ch)
 {
-   const enum tex_format f = u->view.format;
-   const bool bgr = f == TEX_FMT_BGRA8 || f == TEX_FMT_BGRX8;
-   const int sh = ch == 0 ? (bgr ? 16 : 0) : ch == 1 ? 8 : ch == 2 ? (bgr ? 0 : 16) : 24;
-   lanes_v8f v = __builtin_convertvector((words >> sh) & 0xff, lanes_v8f) * (1.0f / 255.0f);
-   if (ch == 3 && (f == TEX_FMT_RGBX8 || f == TEX_FMT_BGRX8))
-      v = (lanes_v8f){ 1, 1, 1, 1, 1, 1, 1, 1 };
+   const struct tex_lanes_channel *c = &u->lanes_ch[ch];
+   const lanes_v8f v =
+      __builtin_convertvector((words >> c->shift) & c->mask, lanes_v8f) * (1.0f / 255.0f) +
+      c->add;
    if (!border)
       return v;
-   const float b = u->samp.border[ch];
+   const float b = c->border;
    const lanes_v8f bv = { b, b, b, b, b, b, b, b };
    return (lanes_v8f)(((lanes_v8i)bv & out) | ((lanes_v8i)v & ~out));
 }
@@ -269,7 +267,8 @@ weight4(lanes_v4i w)
 }
 
 /* tex_fast_path.h's level for two dimensions, one channel of the quad
- * per vector.  `border`: whether a tap can be outside (the wrap modes). */
+ * per vector, the result channels (after the swizzle).  `border`: whether
+ * a tap can be outside (the wrap modes). */
 static inline __attribute__((always_inline)) void
 soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsigned l,
            const struct lanes_addr *A, const struct lanes_addr *B, lanes_v4i zoff,
@@ -324,8 +323,9 @@ static inline __attribute__((always_inline)) bool may_border(int wrap, bool line
 }
 
 /* tex_fast_path.h's level for two dimensions, the quad's addresses at
- * once; the result one channel per vector. */
-static inline __attribute__((always_inline)) void
+ * once; the result one channel per vector, and whether in the order after
+ * the swizzle (the one-channel-per-vector filter) or before. */
+static inline __attribute__((always_inline)) bool
 level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, unsigned l,
        struct dfxl cs, struct dfxl ct, const int layer[TEX_QUAD], const float ref[TEX_QUAD],
        lanes_v4f out[4], struct dfxl_stats *st)
@@ -341,7 +341,7 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
       const lanes_v4i zoff = { layer[0], layer[1], layer[2], layer[3] };
       soa_level2(u, linear, may_border(k.ws, linear) || may_border(k.wt, linear), l, &A, &B,
                  zoff * (int32_t)lv->img_stride, out);
-      return;
+      return true;
    }
    for (unsigned p = 0; p < TEX_QUAD; p++) {
       const int z = layer[p];
@@ -357,6 +357,7 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
       for (unsigned ch = 0; ch < 4; ch++)
          out[ch][p] = t[ch];
    }
+   return false;
 }
 
 /* tex_lod_diffs for two dimensions: the four differences in one vector. */
@@ -390,11 +391,13 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
    struct dfxl_stats st = DFXL_STATS(optimistic);
    const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
    const struct dfxl cs = coord(u, q->s, &x), ct = coord(u, q->t, &x);
-   int layer[TEX_QUAD];
+   int layer[TEX_QUAD] = { 0, 0, 0, 0 };
    int32_t lod[TEX_QUAD];
    lanes_v4f out[4];
-   for (unsigned p = 0; p < TEX_QUAD; p++)
-      layer[p] = array ? layer_of(u, q->layer[p]) : 0;
+   bool swizzled;
+   if (array)
+      for (unsigned p = 0; p < TEX_QUAD; p++)
+         layer[p] = layer_of(u, q->layer[p]);
 
    int32_t cl[TEX_QUAD] = { 0, 0, 0, 0 };
    if (!k.nolod) {
@@ -402,7 +405,13 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
       for (unsigned p = 0; p < TEX_QUAD; p++)
          cl[p] = tex_clamp_lod(u, lod[p]);
    }
-   if (cl[0] == cl[1] && cl[0] == cl[2] && cl[0] == cl[3]) {
+   if (k.nolod) {
+      /* tex_unit_lod_unused: level 0, no fraction, the one filter */
+      if (u->samp.mag_filter != TEX_FILTER_NEAREST)
+         swizzled = level2(u, k, true, 0, cs, ct, layer, q->ref, out, &st);
+      else
+         swizzled = level2(u, k, false, 0, cs, ct, layer, q->ref, out, &st);
+   } else if (cl[0] == cl[1] && cl[0] == cl[2] && cl[0] == cl[3]) {
       unsigned l0, l1;
       uint32_t frac;
       enum tex_filter f;
@@ -410,17 +419,19 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
       const bool linear = f != TEX_FILTER_NEAREST;
       /* one level, or two: one copy of each level function in the code */
       lanes_v4f o[2][4];
+      swizzled = false;
       for (unsigned i = 0; i < (frac ? 2u : 1u); i++) {
          if (linear)
-            level2(u, k, true, i ? l1 : l0, cs, ct, layer, q->ref, o[i], &st);
+            swizzled = level2(u, k, true, i ? l1 : l0, cs, ct, layer, q->ref, o[i], &st);
          else
-            level2(u, k, false, i ? l1 : l0, cs, ct, layer, q->ref, o[i], &st);
+            swizzled = level2(u, k, false, i ? l1 : l0, cs, ct, layer, q->ref, o[i], &st);
       }
       const float fr = (float)frac * (1.0f / TEX_WEIGHT_ONE);
       for (unsigned ch = 0; ch < 4; ch++)
          out[ch] = frac ? o[0][ch] + fr * (o[1][ch] - o[0][ch]) : o[0][ch];   /* lerp4 */
    } else {
       /* levels differ inside the quad: pixel by pixel, as tex_fast.c */
+      swizzled = false;
       for (unsigned p = 0; p < TEX_QUAD; p++) {
          ns_val c[3] = { { .x = 0 }, { .x = 0 }, { .x = 0 } };
          c[0].d = dfxl_fields(cs.v[p]);
@@ -437,13 +448,17 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
       }
    }
 
-   for (unsigned ch = 0; ch < 4; ch++) {
-      const unsigned s = u->view.swizzle[ch];
-      const float konst = s == TEX_SWZ_1 ? 1.0f : 0.0f;
-      const lanes_v4f v = s < 4 ? out[s] : (lanes_v4f){ konst, konst, konst, konst };
-      memcpy(rgba[ch], &v, sizeof(v));
+   if (swizzled) {
+      memcpy(rgba, out, sizeof(out));
+   } else {
+      for (unsigned ch = 0; ch < 4; ch++) {
+         const unsigned s = u->view.swizzle[ch];
+         const float konst = s == TEX_SWZ_1 ? 1.0f : 0.0f;
+         const lanes_v4f v = s < 4 ? out[s] : (lanes_v4f){ konst, konst, konst, konst };
+         memcpy(rgba[ch], &v, sizeof(v));
+      }
    }
-   if (optimistic && dfxl_any(st.trouble))
+   if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
    dfxl_stats_add(&x.d, st);
    tex_fst_flush(&x, u->stats);
