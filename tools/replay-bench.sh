@@ -7,11 +7,16 @@
 # start-up, shader compilation, 1800 frames), its ratios to llvmpipe and softpipe,
 # its error against llvmpipe (every 100th frame is snapshotted: mean absolute error
 # 0-255 over the frames, and the worst frame's PSNR), and the first-frame latency
-# (the whole process replaying the trace's first frame alone).  A benchmark, not a
+# (the whole process replaying the trace's first frame alone); then the same per
+# scene (the trace's frames in equal runs, --scenes): each configuration's time for
+# the scene's frames 2 to N (eglretrace --pframe-times: the scene's first frame,
+# with its set-up, counts in the whole replay only), and for fixpipe the share of
+# each skip taken (FIXPIPE_STATS=frames:N, docs/datapath.md).  A benchmark, not a
 # test: it never fails on a number.
 #
 #   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
 #                         [--piglit "LIST ..."] [--piglit-runs N] [--trace FILE] [--out DIR]
+#                         [--scenes "NAME ..."]
 #
 # Configurations (NAME):
 #   fixpipe          the default: compiled shaders, tiered (docs/jit.md)
@@ -24,6 +29,9 @@
 #   softpipe         our Mesa build (with LLVM: draw compiles vertex shaders)
 #   llvmpipe         Debian's system Mesa, the reference (always run, first)
 # Default: fixpipe fixpipe-scalar fixpipe-nojit softpipe llvmpipe (+ fixpipe-before with --before).
+# --scenes: the names of the trace's scenes in order, each the same number of frames
+# (default: the checked-in trace's build texture phong bump effect2d pulsar desktop
+# jellyfish ideas; "" leaves out the per-scene table).
 # --piglit "gles2 texture" also times `./fixpipe piglit LIST` through fixpipe, and with
 # --before the same list through the other checkout's launcher and build, in this run;
 # --piglit-runs N (default 1) runs each N times, the two trees alternating, and prints the
@@ -33,6 +41,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 runs=1 configs="" before="" piglit_lists="" piglit_runs=1 out=$root/out/replay-bench
+scenes="build texture phong bump effect2d pulsar desktop jellyfish ideas"
 trace=$root/traces/bench/glmark2-long.trace
 while [ $# -gt 0 ]; do
     case $1 in
@@ -43,7 +52,8 @@ while [ $# -gt 0 ]; do
     --out) out=$2; shift 2 ;;
     --piglit) piglit_lists=$2; shift 2 ;;
     --piglit-runs) piglit_runs=$2; shift 2 ;;
-    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --scenes) scenes=$2; shift 2 ;;
+    -h|--help) sed -n '2,40p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "replay-bench: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -82,6 +92,7 @@ run() {
     fixpipe-jitall) driver=fixpipe; envs=(FIXPIPE_DEBUG=jitall) ;;
     fixpipe-nojit) driver=fixpipe; envs=(FIXPIPE_DEBUG=nojit) ;;
     fixpipe-before) driver=fixpipe; work=$before/.fixpipe ;;
+    fixpipe) [ -z "$scene_frames" ] || envs=(FIXPIPE_STATS=frames:1) ;;
     esac
     local t0 t1
     t0=$(date +%s.%N)
@@ -94,6 +105,12 @@ run() {
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2); else print "n/a" }'; }
 
 frames=$(apitrace info "$trace" | sed -n 's/.*"FramesCount": \([0-9]*\).*/\1/p')
+nscenes=$(echo $scenes | wc -w) scene_frames=""
+if [ "$nscenes" -gt 0 ]; then
+    [ $((frames % nscenes)) -eq 0 ] && [ $((frames / nscenes)) -ge 2 ] ||
+        { echo "replay-bench: $frames frames do not divide into the $nscenes scenes of --scenes" >&2; exit 2; }
+    scene_frames=$((frames / nscenes))
+fi
 echo "replay benchmark: $(basename "$trace"), $frames frames, $runs run(s) a configuration, $(nproc) cores"
 printf 'config\trun\treplay_s\tfirst_frame_s\tmean_err\tworst_psnr\tframes_compared\n' > "$out/results.tsv"
 declare -A replay first err psnr
@@ -101,7 +118,8 @@ for c in $configs; do
     for r in $(seq 1 "$runs"); do
         snapdir=$out/$c.$r.snap
         rm -rf "$snapdir"; mkdir -p "$snapdir"
-        w=$(run "$c" "$trace" "$out/$c.$r.log" --snapshot-prefix="$snapdir/" --snapshot="$snaps")
+        w=$(run "$c" "$trace" "$out/$c.$r.log" --pframe-times --snapshot-prefix="$snapdir/" \
+              --snapshot="$snaps")
         n=$(find "$snapdir" -name '*.png' | wc -l)
         [ "$n" -gt 0 ] || { echo "  $c: the replay failed (log $out/$c.$r.log)"; w=n/a; }
         e=n/a p=n/a
@@ -130,6 +148,52 @@ for c in $configs; do
     fps=$(awk -v s="${replay[$c]}" -v n="$frames" 'BEGIN { if (s+0 > 0) printf "%.1f", n / s; else print "n/a" }')
     echo "| $c | ${replay[$c]} | $fps | $(ratio "${replay[$c]}" "${replay[llvmpipe]:-}") | $(ratio "${replay[softpipe]:-}" "${replay[$c]}") | ${err[$c]} | ${psnr[$c]} | ${first[$c]} |"
 done
+
+# per scene: frames 2..N of each scene from the frame-end timestamps of the first
+# run's log (ns; a trace's last frame may have no swap: that scene's time is scaled
+# from its frames timed), and fixpipe's skips from its counters after every frame
+# (cumulative per GL context: a frame number that does not grow starts a context)
+scene_times() { # LOG: one line of seconds per scene
+    awk -v n="$scene_frames" -v k="$nscenes" '$1 == "rendering_finished" { t[f++] = $2 }
+        END { for (s = 0; s < k; s++) { a = s * n; b = a + n - 1; if (b > f - 1) b = f - 1
+                  if (b > a) printf "%.2f\n", (t[b] - t[a]) / 1e9 * (n - 1) / (b - a); else print "n/a" } }' "$1"
+}
+if [ "$nscenes" -gt 0 ]; then
+    declare -A sec
+    for c in $configs; do
+        i=0
+        while read -r v; do sec[$c.$i]=$v; i=$((i + 1)); done < <(scene_times "$out/$c.1.log")
+    done
+    # fixpipe's shares: constant 1/w of the quads divided, constant components of the
+    # component-quads, texture quads without a LOD of those with a LOD from differences
+    shares=()
+    if [ -r "$out/fixpipe.1.log" ]; then
+        mapfile -t shares < <(sed -n 's/^fixpipe work at frame \([0-9]*\): /\1 /p' "$out/fixpipe.1.log" |
+            awk -v n="$scene_frames" -v k="$nscenes" '
+            BEGIN { split("divided skip_w comp_quads skip_comp lod_quads skip_lod", key, " ") }
+            { if ($1 + 0 <= frame + 0) for (x in p) p[x] = 0
+              frame = $1; sc = int(line / n); line++
+              for (i = 2; i < NF; i += 2) { d[sc, $i] += $(i + 1) - p[$i]; p[$i] = $(i + 1) } }
+            END { for (s = 0; s < k; s++) { out = ""
+                      for (j = 1; j <= 6; j += 2) { tot = d[s, key[j]]; sk = d[s, key[j + 1]]
+                          out = out (tot > 0 ? sprintf("%.0f%%", 100 * sk / tot) : "–") " " }
+                      print out } }')
+    fi
+    echo
+    printf '| scene (frames 2–%s) |' "$scene_frames"
+    for c in $configs; do printf ' %s (s) |' "$c"; done
+    printf ' fixpipe ÷ llvmpipe | softpipe ÷ fixpipe | constant 1/w | constant components | texture quads without LOD |\n|---|'
+    for c in $configs; do printf -- '---:|'; done
+    echo '---:|---:|---:|---:|---:|'
+    i=0
+    for sc in $scenes; do
+        printf '| %s |' "$sc"
+        for c in $configs; do printf ' %s |' "${sec[$c.$i]:-n/a}"; done
+        read -r sw scc sl <<< "${shares[$i]:-n/a n/a n/a}"
+        echo " $(ratio "${sec[fixpipe.$i]:-}" "${sec[llvmpipe.$i]:-}") | $(ratio "${sec[softpipe.$i]:-}" "${sec[fixpipe.$i]:-}") | $sw | $scc | $sl |"
+        i=$((i + 1))
+    done
+fi
 
 # the chart: replay time (log) against mean error, one point per configuration
 chart=$root/build/std/tools/fp-chart

@@ -22,6 +22,21 @@
 #include "fp_resource.h"
 #include "fp_screen.h"
 
+/* FIXPIPE_STATS=frames:N: the work counters so far, one line every N frames
+ * presented (tools/replay-bench.sh takes each scene's shares of skipped
+ * work from their differences). */
+void fp_context_frame_presented(struct fp_context *fp)
+{
+   fp->frames++;
+   if (!fp->stats_every || fp->frames % fp->stats_every || !fp->rast)
+      return;
+   const struct rast_stats *st = rast_get_stats(fp->rast);
+   fprintf(stderr, "fixpipe work at frame %lu: quads %" PRIu64 " divided %" PRIu64
+           " skip_w %" PRIu64 " comp_quads %" PRIu64 " skip_comp %" PRIu64 " lod_quads %" PRIu64
+           " skip_lod %" PRIu64 "\n", fp->frames, st->quads, st->persp_quads, st->skip_persp_w,
+           st->persp_comp_quads, st->skip_persp_comp, st->tex_lod_quads, st->skip_tex_lod);
+}
+
 static void fp_print_stats(const struct fp_context *fp)
 {
    static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color" };
@@ -41,6 +56,9 @@ static void fp_print_stats(const struct fp_context *fp)
            ", constant component-quads %" PRIu64 ", texture quads without a LOD %" PRIu64 "\n",
            fp_env_debug() & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
            st->skip_persp_w, st->skip_persp_comp, st->skip_tex_lod);
+   fprintf(stderr, "  datapath work: quads divided %" PRIu64 ", component-quads %" PRIu64
+           ", texture quads with a LOD from differences %" PRIu64 "\n",
+           st->persp_quads, st->persp_comp_quads, st->tex_lod_quads);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
            "; vertex shaders compiled %" PRIu64 "\n",
@@ -137,6 +155,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->sample_mask = ~0u;
    fp->fs_dirty = true;
    fp->print_stats = fp_env_stats();
+   fp->stats_every = fp_env_stats_frames();
 
    fp_init_context_resource_funcs(&fp->pipe);
    fp_init_state_functions(fp);

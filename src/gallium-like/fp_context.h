@@ -125,6 +125,7 @@ struct fp_context {
    unsigned active_occlusion_queries;
 
    bool print_stats;
+   unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
 };
 
 static inline struct fp_context *fp_context(struct pipe_context *p)
@@ -142,6 +143,9 @@ void fp_init_clear_functions(struct fp_context *fp);     /* fp_clear.c */
 void fp_init_blit_functions(struct fp_context *fp);      /* fp_blit.c */
 void fp_init_query_functions(struct fp_context *fp);     /* fp_query.c */
 void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
+
+/* fp_context.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */
+void fp_context_frame_presented(struct fp_context *fp);
 
 /* fp_state_shader.c: vertex shaders, tiered */
 void fp_vs_count(struct fp_context *fp, uint64_t vertices);

@@ -15,6 +15,7 @@
 
 static const struct rast_profile *env_profile;
 static bool env_stats;
+static unsigned long env_stats_frames;
 static const struct numsys *env_texfmt;
 static unsigned env_debug;
 
@@ -67,10 +68,17 @@ static void fp_env_parse(void)
 
    const char *s = getenv("FIXPIPE_STATS");
    if (s && *s) {
-      if (!strcmp(s, "1"))
+      char *end;
+      if (!strcmp(s, "1")) {
          env_stats = true;
-      else if (strcmp(s, "0"))
-         fprintf(stderr, "fixpipe: bad FIXPIPE_STATS '%s' (accepted: 0, 1); using 0\n", s);
+      } else if (!strncmp(s, "frames:", 7) && s[7] >= '1' && s[7] <= '9' &&
+                 (env_stats_frames = strtoul(s + 7, &end, 10), !*end)) {
+         env_stats = true;
+      } else if (strcmp(s, "0")) {
+         env_stats_frames = 0;
+         fprintf(stderr, "fixpipe: bad FIXPIPE_STATS '%s' (accepted: 0, 1, frames:N with N >= 1); "
+                 "using 0\n", s);
+      }
    }
 
    const char *d = getenv("FIXPIPE_DEBUG");
@@ -101,6 +109,12 @@ bool fp_env_stats(void)
 {
    util_call_once(&env_once, fp_env_parse);
    return env_stats;
+}
+
+unsigned long fp_env_stats_frames(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_stats_frames;
 }
 
 unsigned fp_env_debug(void)

@@ -52,6 +52,7 @@ struct fp_tgsi_sampler {
    const struct numsys *ns;
    struct ns_stats stats;
    uint64_t skip_lod;             /* quads sampled without their LOD */
+   uint64_t lod_quads;            /* quads with an implicit or biased LOD */
    struct fp_tex_slot slot[PIPE_MAX_SAMPLERS];
 };
 
@@ -276,9 +277,10 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 /* Range events go to the model's counters (FIXPIPE_STATS). */
 static inline void fp_tex_stats(struct fp_tgsi_sampler *ts)
 {
-   if (ts->stats.sat | ts->stats.flush | ts->skip_lod) {
-      tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush, ts->skip_lod);
-      ts->stats.sat = ts->stats.flush = ts->skip_lod = 0;
+   if (ts->stats.sat | ts->stats.flush | ts->lod_quads) {
+      tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush, ts->skip_lod,
+                        ts->lod_quads);
+      ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
    }
 }
 
@@ -340,7 +342,9 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
       }
    }
    const enum tex_lod_control ctl = fp_lod_control(control);
-   ts->skip_lod += u->lod_skipped && (ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS);
+   const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
+   ts->lod_quads += lod_from_diffs;
+   ts->skip_lod += u->lod_skipped && lod_from_diffs;
    tex_unit_sample(u, &q, ctl, rgba);
    fp_tex_stats(ts);
 }

@@ -302,7 +302,9 @@ static void fp_flush_frontbuffer(struct pipe_screen *screen, struct pipe_context
 {
    struct fp_screen *s = fp_screen(screen);
    struct fp_resource *r = fp_resource(resource);
-   (void)pipe; (void)level; (void)layer;
+   (void)level; (void)layer;
+   if (pipe)
+      fp_context_frame_presented(fp_context(pipe));
    if (r->dt)
       s->winsys->displaytarget_display(s->winsys, r->dt, context_private, sub_box);
 }

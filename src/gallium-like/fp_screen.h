@@ -24,6 +24,8 @@ static inline struct fp_screen *fp_screen(struct pipe_screen *s)
  * once on stderr with the accepted values. */
 const struct rast_profile *fp_env_profile(void);
 bool fp_env_stats(void);
+/* FIXPIPE_STATS=frames:N: the work counters every N frames presented, else 0 */
+unsigned long fp_env_stats_frames(void);
 struct numsys;
 const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 /* FIXPIPE_DEBUG: flags in Mesa's style (FIXPIPE_DEBUG=help lists them) */

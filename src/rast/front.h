@@ -141,6 +141,7 @@ struct fr_tex {
    uint16_t lout[1 + FR_MAX_COMP];
    unsigned n_const;                    /* constant components */
    uint64_t n_const_w, n_const_comp;    /* moved to rast_stats per quad row */
+   uint64_t n_divided;                  /* quads divided, the same */
 };
 
 struct rast_front {

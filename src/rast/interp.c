@@ -460,14 +460,17 @@ void rast_interp_perspective_reference(struct rast_context *rc, bool on)
 }
 
 /* The quad row's range events into the context's counters. */
-static inline void tex_end(struct rast_context *rc, struct fr_tex *t)
+static inline void tex_end(struct rast_context *rc, struct rast_front *fr)
 {
+   struct fr_tex *t = &fr->tex;
    rc->stats.tex_sat += t->st.sat + t->dst.sat;
    rc->stats.tex_flush += t->st.flush + t->dst.flush;
    t->st.sat = t->st.flush = t->dst.sat = t->dst.flush = 0;
    rc->stats.skip_persp_w += t->n_const_w;
    rc->stats.skip_persp_comp += t->n_const_comp;
-   t->n_const_w = t->n_const_comp = 0;
+   rc->stats.persp_quads += t->n_divided;
+   rc->stats.persp_comp_quads += t->n_divided * fr->npersp;
+   t->n_const_w = t->n_const_comp = t->n_divided = 0;
 }
 
 static inline unsigned span_bits(const struct fr_row *r, int64_t x)
@@ -646,8 +649,10 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
             o[0] = a0; o[1] = a1; o[2] = b0; o[3] = b1;
          }
       }
-      if (has_persp)
+      if (has_persp) {
          fr->tex.quad(fr, q, mask != 0);
+         fr->tex.n_divided += mask != 0;
+      }
       if (!mask)
          continue;
       q->x = (int)x;
@@ -657,7 +662,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       rc->quad(rc, q);
    }
    if (has_persp)
-      tex_end(rc, &fr->tex);
+      tex_end(rc, fr);
 }
 
 #define PAIR_VARIANT(name, c, l, p)                                        \

@@ -284,6 +284,10 @@ struct rast_stats {
    /* texture quads sampled without computing their LOD, which the sampler
     * cannot use (tex_unit_lod_unused) */
    uint64_t skip_tex_lod;
+   /* what the skips are shares of: quads through the perspective division
+    * and their PERSPECTIVE component-quads; texture quads whose LOD comes
+    * from the coordinates' differences (implicit or biased) */
+   uint64_t persp_quads, persp_comp_quads, tex_lod_quads;
 };
 
 /* ------------------------------------------------------------------ */

@@ -214,9 +214,12 @@ tex_fetch_fn tex_format_fetch(enum tex_format f);
 unsigned tex_format_bytes(enum tex_format f);
 
 /* Adds the unit's range events to the model's counters (rast_stats
- * tex_sat / tex_flush, printed by FIXPIPE_STATS). */
+ * tex_sat / tex_flush, printed by FIXPIPE_STATS), and its quads without a
+ * LOD among those with an implicit or biased one (skip_tex_lod,
+ * tex_lod_quads). */
 struct rast_context;
-void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod);
+void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
+                       uint64_t lod_quads);
 
 /* Pieces of the data path, for tests. */
 int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */

@@ -5,9 +5,11 @@
 #include "rast/rast_priv.h"
 #include "rast/tex.h"
 
-void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod)
+void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
+                       uint64_t lod_quads)
 {
    rc->stats.tex_sat += sat;
    rc->stats.tex_flush += flush;
    rc->stats.skip_tex_lod += skip_lod;
+   rc->stats.tex_lod_quads += lod_quads;
 }

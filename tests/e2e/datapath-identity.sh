@@ -42,6 +42,19 @@ check_lanes() { # NAME
     fi
 }
 
+# work_ok LOG SKIPS: the work counters' lines (FIXPIPE_STATS=frames:N, in the form
+# "quads Q divided D skip_w ... skip_lod L"): at least one, every skip count at most
+# what it is a share of, and with SKIPS=none nothing skipped
+work_ok() {
+    awk -v none="$2" '
+        { for (i = 1; i < NF; i += 2) v[$i] = $(i + 1)
+          if (v["divided"] > v["quads"] || v["skip_w"] > v["divided"] ||
+              v["skip_comp"] > v["comp_quads"] || v["skip_lod"] > v["lod_quads"]) bad++
+          if (none == "none" && v["skip_w"] + v["skip_comp"] + v["skip_lod"] > 0) bad++
+          n++ }
+        END { exit !(n > 0 && !bad) }' "$1"
+}
+
 render() { # NAME PROGRAM ARGS...
     name=$1 prog=$2
     shift 2
@@ -54,6 +67,17 @@ render() { # NAME PROGRAM ARGS...
         fi
     done
     check_lanes "$name" || return 1
+    for m in $MODES; do   # the totals at the context's end, as work lines
+        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3/p' \
+            "$out/$name.$m.log" > "$out/$name.$m.skipped"
+        sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 quads \1/p' \
+            "$out/$name.$m.log" > "$out/$name.$m.shares"
+        paste -d' ' "$out/$name.$m.skipped" "$out/$name.$m.shares" > "$out/$name.$m.work"
+        if ! work_ok "$out/$name.$m.work" "$([ $m = scalar ] && echo none || echo some)"; then
+            fail "$name: the $m run's skipped work is missing or beyond what it is a share of"
+            return 1
+        fi
+    done
     if cmp -s "$out/$name.lanes.png" "$out/$name.scalar.png"; then
         pass "$name: lanes = scalar,noskip"
     else
@@ -86,7 +110,8 @@ replay() {
             return 1
         fi
     done
-    # (eglretrace ends without destroying its context: no FIXPIPE_STATS to check)
+    # (eglretrace ends without destroying its context, and frames on the surfaceless
+    # platform are not presented: no FIXPIPE_STATS to check; see the end)
     n=$(ls "$out/$name.lanes" | wc -l)
     if [ "$n" -eq 0 ] || [ "$n" -ne "$(ls "$out/$name.scalar" | wc -l)" ]; then
         fail "$name: $n snapshots with the lanes, $(ls "$out/$name.scalar" | wc -l) scalar"
@@ -109,6 +134,22 @@ long=$root/traces/bench/glmark2-long.trace
 snaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$long" 2>/dev/null |
         awk '/eglSwapBuffers/ { if (n++ % 50 == 0) { sub(/ .*/, ""); printf "%s%s", s, $0; s = "," } }')
 replay "$long" glmark2-long "$snaps"
+
+# FIXPIPE_STATS=frames:1 where frames are presented (X11): one work line per frame
+gears=$root/traces/recorded/es2gears.trace
+swaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$gears" 2>/dev/null | grep -c eglSwapBuffers || true)
+for m in $MODES; do
+    FIXPIPE_DEBUG=$(flags $m) FIXPIPE_STATS=frames:1 "$root/fixpipe" run --xvfb --driver fixpipe -- \
+        eglretrace -b "$gears" > "$out/frames.$m.log" 2>&1 || true
+    sed -n 's/^fixpipe work at frame [0-9]*: //p' "$out/frames.$m.log" > "$out/frames.$m.work"
+    lines=$(wc -l < "$out/frames.$m.work")
+    if [ "$lines" -eq "$swaps" ] && [ "$lines" -gt 0 ] &&
+       work_ok "$out/frames.$m.work" "$([ $m = scalar ] && echo none || echo some)"; then
+        pass "FIXPIPE_STATS=frames:1 ($m): $lines work lines for $swaps frames presented"
+    else
+        fail "FIXPIPE_STATS=frames:1 ($m): $lines work lines for $swaps frames presented (log $out/frames.$m.log)"
+    fi
+done
 
 taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD"
 if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ]; then
