@@ -25,12 +25,21 @@
 /* FIXPIPE_STATS=frames:N: the work counters so far, one line every N frames
  * presented (tools/replay-bench.sh takes each scene's shares of skipped
  * work from their differences). */
+/* The counters as printed: the samplers' batches flushed into the model's. */
+static const struct rast_stats *fp_stats(const struct fp_context *fp)
+{
+   for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
+      if (fp->tgsi_sampler[sh])
+         fp_tgsi_sampler_flush_stats(fp->tgsi_sampler[sh]);
+   return rast_get_stats(fp->rast);
+}
+
 void fp_context_frame_presented(struct fp_context *fp)
 {
    fp->frames++;
    if (!fp->stats_every || fp->frames % fp->stats_every || !fp->rast)
       return;
-   const struct rast_stats *st = rast_get_stats(fp->rast);
+   const struct rast_stats *st = fp_stats(fp);
    fprintf(stderr, "fixpipe work at frame %lu: quads %" PRIu64 " divided %" PRIu64
            " skip_w %" PRIu64 " comp_quads %" PRIu64 " skip_comp %" PRIu64 " lod_quads %" PRIu64
            " skip_lod %" PRIu64 "\n", fp->frames, st->quads, st->persp_quads, st->skip_persp_w,
@@ -40,7 +49,7 @@ void fp_context_frame_presented(struct fp_context *fp)
 static void fp_print_stats(const struct fp_context *fp)
 {
    static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color" };
-   const struct rast_stats *st = rast_get_stats(fp->rast);
+   const struct rast_stats *st = fp_stats(fp);
    fprintf(stderr, "fixpipe stats (profile %s):\n", rast_get_profile(fp->rast)->name);
    for (unsigned i = 0; i < RAST_REG_COUNT; i++)
       fprintf(stderr, "  saturation %-5s high %" PRIu64 " low %" PRIu64 "\n",

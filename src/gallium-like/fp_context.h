@@ -160,6 +160,7 @@ void fp_fs_validate(struct fp_context *fp);
 struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                enum pipe_shader_type stage);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
+void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s);
 void fp_init_sampler_view(struct fp_sampler_view *view);
 
 /* fp_query.c: false when conditional rendering says skip. */

@@ -274,14 +274,19 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
    }
 }
 
-/* Range events go to the model's counters (FIXPIPE_STATS). */
+/* The sampler's counts into the model's counters (FIXPIPE_STATS). */
+void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts)
+{
+   tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads);
+   ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
+}
+
+/* Range events at once (rare); the LOD counts, one per sample, in batches:
+ * whoever prints the counters flushes the rest first. */
 static inline void fp_tex_stats(struct fp_tgsi_sampler *ts)
 {
-   if (ts->stats.sat | ts->stats.flush | ts->lod_quads) {
-      tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush, ts->skip_lod,
-                        ts->lod_quads);
-      ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
-   }
+   if (ts->stats.sat | ts->stats.flush || ts->lod_quads >= 4096)
+      fp_tgsi_sampler_flush_stats(ts);
 }
 
 static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,

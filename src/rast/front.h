@@ -129,17 +129,21 @@ struct fr_tex {
    bool w_const;                        /* 1/w constant: w = recip(v0) once */
    bool w_one;                          /* and exactly 1: A · w is A */
    double lw;                           /* that w, as the lanes hold it */
-   struct dfx_stats w_ev;               /* recip(v0)'s events, counted per pixel */
-   bool comp_const[FR_MAX_COMP];        /* A/w constant */
-   float comp_val[FR_MAX_COMP];         /* with w constant: the component itself */
-   struct dfx_stats comp_ev[FR_MAX_COMP];
+   /* with w constant: the range events of recip(v0) and of the constant
+    * components' products, which every pixel counts */
+   struct dfx_stats const_ev;
    /* the planes evaluated per pixel (1/w unless constant, then the
     * components that are not), as lv[] indices, and where each goes in
     * the quad (component's float offset in rast_quad.in) */
    unsigned ln;
    uint8_t lidx[1 + FR_MAX_COMP];
    uint16_t lout[1 + FR_MAX_COMP];
-   unsigned n_const;                    /* constant components */
+   /* the constant components (A/w constant) likewise, and with w constant
+    * their values */
+   unsigned n_const;
+   uint8_t cidx[FR_MAX_COMP];
+   uint16_t cout[FR_MAX_COMP];
+   float cval[FR_MAX_COMP];
    uint64_t n_const_w, n_const_comp;    /* moved to rast_stats per quad row */
    uint64_t n_divided;                  /* quads divided, the same */
 };

@@ -183,9 +183,9 @@ static void lanes_skips_setup(struct rast_front *fr)
    t->lrdet = dfxl_value(t->rdet.d);
    t->w_const = t->skip && plane_is_const(&t->pl[0]);
    t->w_one = false;
+   t->const_ev = (struct dfx_stats){ 0, 0 };
    if (t->w_const) {
-      t->w_ev = (struct dfx_stats){ 0, 0 };
-      w = dfx_recip_i(f, t->pl[0].v0.d, &t->w_ev);
+      w = dfx_recip_i(f, t->pl[0].v0.d, &t->const_ev);
       t->lw = dfxl_value(w);
       t->w_one = t->lw == 1.0;
    }
@@ -194,19 +194,18 @@ static void lanes_skips_setup(struct rast_front *fr)
    if (!t->w_const)
       t->lidx[t->ln++] = 0;
    for (unsigned j = 0; j < fr->npersp; j++) {
-      t->comp_const[j] = t->skip && plane_is_const(&t->pl[1 + j]);
-      if (t->comp_const[j] && t->w_const) {
-         t->comp_ev[j] = (struct dfx_stats){ 0, 0 };
-         t->comp_val[j] = (float)dfx_to_double_i(f, dfx_mul_i(f, t->pl[1 + j].v0.d, w,
-                                                              &t->comp_ev[j]));
-      }
-      if (t->comp_const[j]) {
-         t->n_const++;
-      } else {
-         t->lout[t->ln] = (uint16_t)(&fr->quad.in[fr->persp[j].var][fr->persp[j].chan][0] -
-                                     &fr->quad.in[0][0][0]);
+      const uint16_t out = (uint16_t)(&fr->quad.in[fr->persp[j].var][fr->persp[j].chan][0] -
+                                      &fr->quad.in[0][0][0]);
+      if (!(t->skip && plane_is_const(&t->pl[1 + j]))) {
+         t->lout[t->ln] = out;
          t->lidx[t->ln++] = (uint8_t)(1 + j);
+         continue;
       }
+      if (t->w_const)
+         t->cval[t->n_const] = (float)dfx_to_double_i(f, dfx_mul_i(f, t->pl[1 + j].v0.d, w,
+                                                                   &t->const_ev));
+      t->cout[t->n_const] = out;
+      t->cidx[t->n_const++] = (uint8_t)(1 + j);
    }
 }
 

@@ -76,28 +76,21 @@ persp(struct rast_front *fr, struct rast_quad *q, const dfxl_i *an, const dfxl_i
          v[i] = dfxl_mul(v[i], w, &st);
       dfxl_to_float(v[i], in + t->lout[i]);
    }
-   if (t->n_const) {
-      for (unsigned j = 0; j < fr->npersp; j++) {
-         if (!t->comp_const[j])
-            continue;
-         float *o = q->in[fr->persp[j].var][fr->persp[j].chan];
-         if (t->w_const) {
-            for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-               o[i] = t->comp_val[j];
-         } else {
-            dfxl_to_float(dfxl_mul(splat(t->lv[1 + j][0]), w, &st), o);
-         }
+   for (unsigned i = 0; i < t->n_const; i++) {
+      float *o = in + t->cout[i];
+      if (t->w_const) {
+         for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+            o[p] = t->cval[i];
+      } else {
+         dfxl_to_float(dfxl_mul(splat(t->lv[t->cidx[i]][0]), w, &st), o);
       }
    }
    if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
    /* the events of the values computed once per primitive, for every pixel */
    if (t->w_const) {
-      count(&t->dst, t->w_ev, RAST_QUAD_SIZE);
+      count(&t->dst, t->const_ev, RAST_QUAD_SIZE);
       t->n_const_w++;
-      for (unsigned j = 0; j < fr->npersp; j++)
-         if (t->comp_const[j])
-            count(&t->dst, t->comp_ev[j], RAST_QUAD_SIZE);
    }
    t->n_const_comp += t->n_const;
    dfxl_stats_add(&t->dst, st);

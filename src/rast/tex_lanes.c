@@ -399,7 +399,7 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
       for (unsigned p = 0; p < TEX_QUAD; p++)
          layer[p] = layer_of(u, q->layer[p]);
 
-   int32_t cl[TEX_QUAD] = { 0, 0, 0, 0 };
+   int32_t cl[TEX_QUAD];
    if (!k.nolod) {
       lods(ctl, tex_lod_from_diffs(ctl) ? lod2(u, cs, ct, &st) : 0, q, lod);
       for (unsigned p = 0; p < TEX_QUAD; p++)
