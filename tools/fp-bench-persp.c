@@ -92,7 +92,7 @@ static int run(const char *sys, int ntri)
    vl.num_varyings = 1;
    vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
    rast_set_vertex_layout(rc, &vl);
-   struct rast_shader fs = { 0, shade, 1, false, false, false };
+   struct rast_shader fs = { .shade = shade, .num_outputs = 1 };
    rast_set_shader(rc, &fs);
 
    srand(1);          /* the same triangles for every system */

@@ -22,13 +22,15 @@
 #   fixpipe          the default: compiled shaders, tiered (docs/jit.md)
 #   fixpipe-scalar   FIXPIPE_DEBUG=scalar,noskip: the model's scalar reference datapath,
 #                    nothing skipped (docs/datapath.md): the same bits, the time before lanes
+#   fixpipe-1thread  FIXPIPE_THREADS=1: the model on one thread (docs/threads.md)
 #   fixpipe-jitall   FIXPIPE_DEBUG=jitall: every fragment shader compiled at first use
 #   fixpipe-nojit    FIXPIPE_DEBUG=nojit: tgsi_exec for every shader, draw without LLVM
 #   fixpipe-before   the fixpipe of another build: --before WORKDIR (its .fixpipe/,
 #                    e.g. a worktree of an earlier commit after its ./fixpipe setup)
 #   softpipe         our Mesa build (with LLVM: draw compiles vertex shaders)
 #   llvmpipe         Debian's system Mesa, the reference (always run, first)
-# Default: fixpipe fixpipe-scalar fixpipe-nojit softpipe llvmpipe (+ fixpipe-before with --before).
+# Default: fixpipe fixpipe-1thread fixpipe-scalar fixpipe-nojit softpipe llvmpipe
+# (+ fixpipe-before with --before).
 # --scenes: the names of the trace's scenes in order, each the same number of frames
 # (default: the checked-in trace's build texture phong bump effect2d pulsar desktop
 # jellyfish ideas; "" leaves out the per-scene table).
@@ -59,16 +61,16 @@ while [ $# -gt 0 ]; do
 done
 [ -r "$trace" ] || { echo "replay-bench: no trace $trace" >&2; exit 2; }
 if [ -z "$configs" ]; then
-    configs="fixpipe fixpipe-scalar fixpipe-nojit softpipe llvmpipe"
+    configs="fixpipe fixpipe-1thread fixpipe-scalar fixpipe-nojit softpipe llvmpipe"
     [ -z "$before" ] || configs="fixpipe-before $configs"
 fi
 # llvmpipe first: its snapshots are the reference
 configs="llvmpipe $(echo "$configs" | tr ' ' '\n' | { grep -vx llvmpipe || true; } | tr '\n' ' ')"
 for c in $configs; do
     case $c in
-    fixpipe|fixpipe-scalar|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe) ;;
+    fixpipe|fixpipe-1thread|fixpipe-scalar|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe) ;;
     fixpipe-before) [ -n "$before" ] || { echo "replay-bench: fixpipe-before needs --before WORKDIR" >&2; exit 2; } ;;
-    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-scalar, fixpipe-jitall, fixpipe-nojit, fixpipe-before, softpipe, llvmpipe)" >&2; exit 2 ;;
+    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-1thread, fixpipe-scalar, fixpipe-jitall, fixpipe-nojit, fixpipe-before, softpipe, llvmpipe)" >&2; exit 2 ;;
     esac
 done
 mkdir -p "$out"
@@ -90,6 +92,7 @@ run() {
     case $c in
     fixpipe-scalar) driver=fixpipe; envs=(FIXPIPE_DEBUG=scalar,noskip) ;;
     fixpipe-jitall) driver=fixpipe; envs=(FIXPIPE_DEBUG=jitall) ;;
+    fixpipe-1thread) driver=fixpipe; envs=(FIXPIPE_THREADS=1) ;;
     fixpipe-nojit) driver=fixpipe; envs=(FIXPIPE_DEBUG=nojit) ;;
     fixpipe-before) driver=fixpipe; work=$before/.fixpipe ;;
     fixpipe) [ -z "$scene_frames" ] || envs=(FIXPIPE_STATS=frames:1) ;;
@@ -209,7 +212,7 @@ if [ -x "$chart" ]; then
             [ "$c" != llvmpipe ] || continue
             case $c in
             fixpipe) rgb=200,40,40 ;; fixpipe-before) rgb=120,120,120 ;; fixpipe-nojit) rgb=230,140,30 ;;
-            fixpipe-jitall) rgb=160,40,160 ;; fixpipe-scalar) rgb=150,90,40 ;; softpipe) rgb=40,90,200 ;; *) rgb=0,0,0 ;;
+            fixpipe-jitall) rgb=160,40,160 ;; fixpipe-1thread) rgb=230,120,120 ;; fixpipe-scalar) rgb=150,90,40 ;; softpipe) rgb=40,90,200 ;; *) rgb=0,0,0 ;;
             esac
             [ "${replay[$c]}" != n/a ] && [ "${err[$c]}" != n/a ] || continue
             echo "series $rgb points $c"

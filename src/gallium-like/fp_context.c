@@ -30,7 +30,9 @@ static const struct rast_stats *fp_stats(const struct fp_context *fp)
 {
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
       if (fp->tgsi_sampler[sh])
-         fp_tgsi_sampler_flush_stats(fp->tgsi_sampler[sh]);
+         fp_tgsi_sampler_flush_stats(fp->tgsi_sampler[sh], fp->rast);
+   for (unsigned t = 1; t < fp->num_threads; t++)
+      fp_tgsi_sampler_flush_stats(fp->fs_thread[t].sampler, fp->rast);
    return rast_get_stats(fp->rast);
 }
 
@@ -50,6 +52,12 @@ static void fp_print_stats(const struct fp_context *fp)
 {
    static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color" };
    const struct rast_stats *st = fp_stats(fp);
+   uint64_t quads_jit = 0, quads_interp = 0, serial, parallel;
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      quads_jit += fp->fs_thread[t].quads_jit;
+      quads_interp += fp->fs_thread[t].quads_interp;
+   }
+   rast_get_flush_counts(fp->rast, &serial, &parallel);
    fprintf(stderr, "fixpipe stats (profile %s):\n", rast_get_profile(fp->rast)->name);
    for (unsigned i = 0; i < RAST_REG_COUNT; i++)
       fprintf(stderr, "  saturation %-5s high %" PRIu64 " low %" PRIu64 "\n",
@@ -73,7 +81,9 @@ static void fp_print_stats(const struct fp_context *fp)
            "; vertex shaders compiled %" PRIu64 "\n",
            fp->llvm_context ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
-           fp->jit_stats.quads_jit, fp->jit_stats.quads_interp, fp->jit_stats.vs_compiled);
+           quads_jit, quads_interp, fp->jit_stats.vs_compiled);
+   fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64 "\n",
+           rast_get_threads(fp->rast), serial, parallel);
 }
 
 static void fp_destroy(struct pipe_context *pipe)
@@ -82,6 +92,8 @@ static void fp_destroy(struct pipe_context *pipe)
 
    if (fp->rast && fp->print_stats)
       fp_print_stats(fp);
+   if (fp->rast)
+      rast_set_threads(fp->rast, 1);   /* the workers stop before what they shade with goes */
 
    util_unreference_framebuffer_state(&fp->framebuffer);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++) {
@@ -97,8 +109,14 @@ static void fp_destroy(struct pipe_context *pipe)
       draw_destroy(fp->draw);
    if (fp->llvm_context)
       LLVMContextDispose(fp->llvm_context);
-   if (fp->fs_mach)
-      tgsi_exec_machine_destroy(fp->fs_mach);
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      struct fp_fs_thread *th = &fp->fs_thread[t];
+      if (th->mach)
+         tgsi_exec_machine_destroy(th->mach);
+      if (t > 0)
+         FREE(th->sampler);
+   }
+   FREE(fp->fs_thread);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
       FREE(fp->tgsi_sampler[sh]);
    if (fp->pipe.stream_uploader)
@@ -186,12 +204,30 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       goto fail;
    fp->pipe.const_uploader = fp->pipe.stream_uploader;
 
-   fp->fs_mach = tgsi_exec_machine_create(PIPE_SHADER_FRAGMENT);
-   if (!fp->fs_mach)
-      goto fail;
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++) {
-      fp->tgsi_sampler[sh] = fp_tgsi_sampler_create(fp, (enum pipe_shader_type)sh);
+      fp->tgsi_sampler[sh] = fp_tgsi_sampler_create(fp, (enum pipe_shader_type)sh, fp->rast);
       if (!fp->tgsi_sampler[sh])
+         goto fail;
+   }
+
+   /* The model's threads, each with what it shades with. */
+   unsigned threads = fp_env_threads();
+   if (!rast_set_threads(fp->rast, threads)) {
+      fprintf(stderr, "fixpipe: cannot start %u threads; drawing on one\n", threads);
+      threads = 1;
+   }
+   fp->fs_thread = CALLOC(threads, sizeof(*fp->fs_thread));
+   if (!fp->fs_thread)
+      goto fail;
+   for (unsigned t = 0; t < threads; t++) {
+      struct fp_fs_thread *th = &fp->fs_thread[t];
+      fp->num_threads = t + 1;
+      th->fp = fp;
+      th->rast = rast_thread_context(fp->rast, t);
+      th->sampler = t == 0 ? fp->tgsi_sampler[PIPE_SHADER_FRAGMENT]
+                           : fp_tgsi_sampler_create(fp, PIPE_SHADER_FRAGMENT, th->rast);
+      th->mach = tgsi_exec_machine_create(PIPE_SHADER_FRAGMENT);
+      if (!th->sampler || !th->mach)
          goto fail;
    }
 

@@ -61,6 +61,19 @@ struct fp_vertex_shader {
    uint64_t vertices;
 };
 
+/* What one thread of the model shades its quads with (fp_fs.c): the
+ * shader's run-time state and the texture unit's glue are written while it
+ * shades, so every thread has its own.  Thread 0 is the driver's. */
+struct fp_fs_thread {
+   struct fp_context *fp;
+   struct rast_context *rast;             /* the thread's model context */
+   struct tgsi_exec_machine *mach;
+   struct fp_tgsi_sampler *sampler;       /* the fragment stage's */
+   struct fp_jit_context jit_ctx;
+   uint64_t quads_jit, quads_interp;
+   uint64_t quads_interp_seen;            /* of quads_interp, counted to the shader */
+};
+
 struct fp_velems {
    unsigned count;
    struct pipe_vertex_element elem[PIPE_MAX_ATTRIBS];
@@ -99,16 +112,17 @@ struct fp_context {
    const struct pipe_sampler_state *samplers[PIPE_SHADER_TYPES][PIPE_MAX_SAMPLERS];
    unsigned sample_mask;
 
-   /* Fragment shading through tgsi_exec. */
-   struct tgsi_exec_machine *fs_mach;
+   /* The samplers of draw's stages; the fragment stage's is thread 0's. */
    struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];
    bool fs_dirty;                  /* shader, constants or samplers changed */
+   /* Fragment shading, one of each per thread of the model (FIXPIPE_THREADS). */
+   unsigned num_threads;
+   struct fp_fs_thread *fs_thread;
 
    /* Compiled fragment shading (fp_jit*.c); NULL context with FIXPIPE_DEBUG=nojit. */
    LLVMContextRef llvm_context;
-   struct fp_jit_context jit_ctx;
    struct {
-      uint64_t compiled, failed, quads_jit, quads_interp;
+      uint64_t compiled, failed;
       uint64_t vs_compiled, cache_hits;
       double compile_ms;
    } jit_stats;
@@ -155,12 +169,19 @@ struct vbuf_render *fp_create_vbuf_render(struct fp_context *fp);
 
 /* fp_fs.c: bind the current fragment shader to tgsi_exec and the model. */
 void fp_fs_validate(struct fp_context *fp);
+/* fp_fs.c: after the model drew a batch: the interpreted quads counted to
+ * the shader (it compiles once hot, at the same quad whatever the threads). */
+void fp_fs_batch_done(struct fp_context *fp);
 
 /* fp_sampler.c */
+/* Its range and LOD counts go to rc, the model context of the thread it
+ * samples on. */
 struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
-                                               enum pipe_shader_type stage);
+                                               enum pipe_shader_type stage,
+                                               struct rast_context *rc);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
-void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s);
+/* What it counted so far, into rc's counters (not while rc's thread draws). */
+void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s, struct rast_context *rc);
 void fp_init_sampler_view(struct fp_sampler_view *view);
 
 /* fp_query.c: false when conditional rendering says skip. */

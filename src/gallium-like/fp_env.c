@@ -9,6 +9,7 @@
 
 #include "util/u_call_once.h"
 #include "util/u_debug.h"
+#include "util/u_cpu_detect.h"
 #include "pipe/p_format.h"
 #include "fp_screen.h"
 #include "fixed/numsys.h"
@@ -18,6 +19,7 @@ static bool env_stats;
 static unsigned long env_stats_frames;
 static const struct numsys *env_texfmt;
 static unsigned env_debug;
+static unsigned env_threads;
 
 static const struct debug_named_value fp_debug_flags[] = {
    { "nojit", FP_DEBUG_NOJIT,
@@ -85,6 +87,20 @@ static void fp_env_parse(void)
    env_debug = (unsigned)debug_get_flags_option("FIXPIPE_DEBUG", fp_debug_flags, 0);
    fp_env_check_flags("FIXPIPE_DEBUG", d, fp_debug_flags);
 
+   /* FIXPIPE_THREADS, like LP_NUM_THREADS: the cores by default */
+   unsigned cores = util_get_cpu_caps()->nr_cpus;
+   env_threads = cores < 1 ? 1 : cores > RAST_MAX_THREADS ? RAST_MAX_THREADS : cores;
+   const char *n = getenv("FIXPIPE_THREADS");
+   if (n && *n) {
+      char *end;
+      unsigned long v = strtoul(n, &end, 10);
+      if (*end || n[0] < '0' || n[0] > '9' || v < 1 || v > RAST_MAX_THREADS)
+         fprintf(stderr, "fixpipe: bad FIXPIPE_THREADS '%s' (accepted: 1 to %u); using %u\n",
+                 n, RAST_MAX_THREADS, env_threads);
+      else
+         env_threads = (unsigned)v;
+   }
+
    const char *t = getenv("FIXPIPE_TEXFMT");
    env_texfmt = numsys_default();
    if (t && *t) {
@@ -121,6 +137,12 @@ unsigned fp_env_debug(void)
 {
    util_call_once(&env_once, fp_env_parse);
    return env_debug;
+}
+
+unsigned fp_env_threads(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_threads;
 }
 
 unsigned fp_env_rast_options(void)

@@ -37,15 +37,11 @@ static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
 
 static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
-   struct fp_context *fp = ctx;
-   struct fp_fragment_shader *fs = fp->fs;
-   struct tgsi_exec_machine *mach = fp->fs_mach;
+   struct fp_fs_thread *th = ctx;
+   struct fp_fragment_shader *fs = th->fp->fs;
+   struct tgsi_exec_machine *mach = th->mach;
 
-   /* hot: compile at the next validation (the next draw, or the next batch
-    * of primitives of this one) */
-   fp->jit_stats.quads_interp++;
-   if (++fs->quads_interpreted == FP_JIT_HOT_QUADS && fp->llvm_context && !fs->jit_failed)
-      fp->fs_dirty = true;
+   th->quads_interp++;   /* counted to the shader after the batch: fp_fs_batch_done */
    const struct tgsi_shader_info *info = &fs->info;
    const float c = fs->pixel_center_integer ? 0.0f : 0.5f;
 
@@ -99,12 +95,12 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
 
 static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
-   struct fp_context *fp = ctx;
+   struct fp_fs_thread *th = ctx;
    int32_t lanes[RAST_QUAD_SIZE];
    for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
       lanes[p] = (q->mask >> p & 1) ? ~0 : 0;
-   fp->fs->jit->func(&fp->jit_ctx, q, out, lanes);
-   fp->jit_stats.quads_jit++;
+   th->fp->fs->jit->func(&th->jit_ctx, q, out, lanes);
+   th->quads_jit++;
    unsigned mask = 0;
    for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
       mask |= (lanes[p] != 0) << p;
@@ -144,12 +140,32 @@ static unsigned fp_fs_shade_none(void *ctx, const struct rast_quad *q,
    return q->mask;
 }
 
+/* Hot: compiled at the next validation (the next draw, or the next batch of
+ * primitives of this one). */
+void fp_fs_batch_done(struct fp_context *fp)
+{
+   struct fp_fragment_shader *fs = fp->fs;
+   uint64_t n = 0;
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      struct fp_fs_thread *th = &fp->fs_thread[t];
+      n += th->quads_interp - th->quads_interp_seen;
+      th->quads_interp_seen = th->quads_interp;
+   }
+   if (!fs || !n)
+      return;
+   fs->quads_interpreted += n;
+   if (fs->quads_interpreted >= FP_JIT_HOT_QUADS && !fs->jit && fp->llvm_context &&
+       !fs->jit_failed)
+      fp->fs_dirty = true;
+}
+
 void fp_fs_validate(struct fp_context *fp)
 {
-   struct tgsi_exec_machine *mach = fp->fs_mach;
    struct rast_shader rs;
    memset(&rs, 0, sizeof(rs));
-   rs.ctx = fp;
+   rs.ctx = &fp->fs_thread[0];
+   for (unsigned t = 1; t < fp->num_threads; t++)
+      rs.thread_ctx[t] = &fp->fs_thread[t];
 
    if (!fp->fs) {
       rs.shade = fp_fs_shade_none;
@@ -178,24 +194,27 @@ void fp_fs_validate(struct fp_context *fp)
    rs.may_discard = fp->fs->may_discard;
 
    if (fp_fs_compiled(fp)) {
-      for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS && i < LP_MAX_TGSI_CONST_BUFFERS; i++) {
-         fp->jit_ctx.constants[i].f = bufs[i];
-         fp->jit_ctx.constants[i].num_elements = sizes[i] / 4;
+      for (unsigned t = 0; t < fp->num_threads; t++) {
+         struct fp_fs_thread *th = &fp->fs_thread[t];
+         for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS && i < LP_MAX_TGSI_CONST_BUFFERS; i++) {
+            th->jit_ctx.constants[i].f = bufs[i];
+            th->jit_ctx.constants[i].num_elements = sizes[i] / 4;
+         }
+         fp_jit_context_init_sampler(&th->jit_ctx, fp_tgsi_sampler_base(th->sampler));
       }
-      fp_jit_context_init_sampler(&fp->jit_ctx,
-                                  fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_FRAGMENT]));
       rs.shade = fp_fs_shade_jit;
       rast_set_shader(fp->rast, &rs);
       fp->fs_dirty = false;
       return;
    }
 
-   tgsi_exec_set_constant_buffers(mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
-
-   tgsi_exec_machine_bind_shader(mach, fp->fs->tokens,
-                                 fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_FRAGMENT]),
-                                 NULL, NULL);
-   fp_fs_drop_input_decls(mach);
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      struct fp_fs_thread *th = &fp->fs_thread[t];
+      tgsi_exec_set_constant_buffers(th->mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
+      tgsi_exec_machine_bind_shader(th->mach, fp->fs->tokens, fp_tgsi_sampler_base(th->sampler),
+                                    NULL, NULL);
+      fp_fs_drop_input_decls(th->mach);
+   }
 
    rs.shade = fp_fs_shade;
    rast_set_shader(fp->rast, &rs);

@@ -48,6 +48,7 @@ struct fp_tex_slot {
 struct fp_tgsi_sampler {
    struct tgsi_sampler base;
    struct fp_context *fp;
+   struct rast_context *rast;     /* the thread's: fp_tex_stats counts there */
    enum pipe_shader_type stage;
    const struct numsys *ns;
    struct ns_stats stats;
@@ -275,9 +276,9 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 }
 
 /* The sampler's counts into the model's counters (FIXPIPE_STATS). */
-void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts)
+void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts, struct rast_context *rc)
 {
-   tex_stats_to_rast(ts->fp->rast, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads);
+   tex_stats_to_rast(rc, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads);
    ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
 }
 
@@ -286,7 +287,7 @@ void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts)
 static inline void fp_tex_stats(struct fp_tgsi_sampler *ts)
 {
    if (ts->stats.sat | ts->stats.flush || ts->lod_quads >= 4096)
-      fp_tgsi_sampler_flush_stats(ts);
+      fp_tgsi_sampler_flush_stats(ts, ts->rast);
 }
 
 static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
@@ -422,12 +423,14 @@ static void fp_tgsi_get_texel(struct tgsi_sampler *tgsi_sampler, const unsigned 
 }
 
 struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
-                                               enum pipe_shader_type stage)
+                                               enum pipe_shader_type stage,
+                                               struct rast_context *rc)
 {
    struct fp_tgsi_sampler *s = CALLOC_STRUCT(fp_tgsi_sampler);
    if (!s)
       return NULL;
    s->fp = fp;
+   s->rast = rc;
    s->stage = stage;
    s->ns = fp_env_texfmt();
    s->base.get_samples = fp_tgsi_get_samples;

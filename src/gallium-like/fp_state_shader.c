@@ -82,8 +82,11 @@ static void fp_delete_fs_state(struct pipe_context *pipe, void *cso)
 {
    struct fp_context *fp = fp_context(pipe);
    struct fp_fragment_shader *fs = cso;
-   if (fp->fs_mach->Tokens == fs->tokens)
-      tgsi_exec_machine_bind_shader(fp->fs_mach, NULL, NULL, NULL, NULL);
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      struct tgsi_exec_machine *mach = fp->fs_thread[t].mach;
+      if (mach && mach->Tokens == fs->tokens)
+         tgsi_exec_machine_bind_shader(mach, NULL, NULL, NULL, NULL);
+   }
    if (fp->fs == fs)
       fp->fs = NULL;
    draw_delete_fragment_shader(fp->draw, fs->draw_fs);

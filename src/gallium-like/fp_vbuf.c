@@ -234,6 +234,14 @@ static bool fp_vbuf_discard(struct fp_vbuf_render *v)
    return v->fp->rasterizer && v->fp->rasterizer->base.rasterizer_discard;
 }
 
+/* The batch's vertices are reused by the next one: the model draws what it
+ * queued (on every thread) before draw moves on. */
+static void fp_vbuf_drawn(struct fp_vbuf_render *v)
+{
+   rast_flush(v->fp->rast);
+   fp_fs_batch_done(v->fp);
+}
+
 static void fp_vbuf_draw_elements(struct vbuf_render *r, const ushort *indices, uint nr)
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
@@ -243,6 +251,7 @@ static void fp_vbuf_draw_elements(struct vbuf_render *r, const ushort *indices, 
 #define IDX(i) indices[i]
    FP_EMIT_PRIMS();
 #undef IDX
+   fp_vbuf_drawn(v);
 }
 
 static void fp_vbuf_draw_arrays(struct vbuf_render *r, unsigned start, uint nr)
@@ -254,6 +263,7 @@ static void fp_vbuf_draw_arrays(struct vbuf_render *r, unsigned start, uint nr)
 #define IDX(i) (start + (i))
    FP_EMIT_PRIMS();
 #undef IDX
+   fp_vbuf_drawn(v);
 }
 
 static void fp_vbuf_set_so_info(struct vbuf_render *r, unsigned stream, unsigned primitives,

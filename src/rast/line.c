@@ -8,6 +8,7 @@
  * along the major axis only (llvmpipe's "preferred wide-lines formula").
  */
 #include <math.h>
+#include <stddef.h>
 #include "rast/front.h"
 
 static inline bool sign_of(float x)
@@ -38,6 +39,12 @@ static int64_t line_snap(const struct rast_profile *prof, float v, struct fx_sat
 }
 
 void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
+{
+   if (!rast_queue(rc, RAST_PRIM_LINE, v1, v2, NULL))
+      rast_draw_line(rc, v1, v2);
+}
+
+void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
    struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;

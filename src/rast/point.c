@@ -17,6 +17,7 @@
  * centre (x_c, y_c) and the snapped width, as llvmpipe's texcoord_coef;
  * its plane walks as a LINEAR input.
  */
+#include <stddef.h>
 #include "rast/front.h"
 
 #define POINT_SNAP_ONE 256              /* llvmpipe's FIXED_ONE: the 1/256 grid */
@@ -42,6 +43,12 @@ static inline int64_t grid_to_xy(struct rast_context *rc, const struct rast_fron
 }
 
 void rast_point(struct rast_context *rc, const float (*v)[4])
+{
+   if (!rast_queue(rc, RAST_PRIM_POINT, v, NULL, NULL))
+      rast_draw_point(rc, v);
+}
+
+void rast_draw_point(struct rast_context *rc, const float (*v)[4])
 {
    struct rast_front *fr = rast_front_begin(rc, true);
    const struct rast_raster_state *rs = &rc->rs;

@@ -25,6 +25,7 @@
 
 #define RAST_MAX_VARYINGS 32
 #define RAST_MAX_CBUFS    8
+#define RAST_MAX_THREADS  64
 #define RAST_QUAD_SIZE    4   /* pixel i of a quad: 0 (x,y) 1 (x+1,y) 2 (x,y+1) 3 (x+1,y+1) */
 
 /* ------------------------------------------------------------------ */
@@ -258,6 +259,10 @@ struct rast_shaded_quad {
  * pixels that survive (discard clears bits); it must not write to `quad`. */
 struct rast_shader {
    void *ctx;
+   /* With threads (rast_set_threads): thread t >= 1 shades with
+    * thread_ctx[t], its own copy of what shade() writes; NULL means ctx,
+    * for a shade() that writes nothing but `out`. */
+   void *thread_ctx[RAST_MAX_THREADS];
    unsigned (*shade)(void *ctx, const struct rast_quad *quad,
                      struct rast_shaded_quad *out);
    unsigned num_outputs;             /* colour outputs written */
@@ -334,6 +339,32 @@ void rast_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[
 #define RAST_MAX_POINT_SIZE 255.0f
 void rast_point(struct rast_context *rc, const float (*v0)[4]);
 
+/* ------------------------------------------------------------------ */
+/* Threads (threads.c).  With n > 1 the primitives are queued and        */
+/* rast_flush draws them on n threads, the caller's and n - 1 workers:    */
+/* thread t draws the quad rows of the bands of RAST_BAND_ROWS scan lines */
+/* numbered t modulo n, every thread walking each primitive's edges in    */
+/* the same order.  Per pixel, primitives land in submission order and   */
+/* every register holds what one thread would compute: the frames are    */
+/* byte-identical for every n, and so are the counters.                  */
+
+#define RAST_BAND_ROWS 8
+/* false with n out of [1, RAST_MAX_THREADS] or when a thread cannot start
+ * (the context keeps drawing on one). */
+bool rast_set_threads(struct rast_context *rc, unsigned n);
+unsigned rast_get_threads(const struct rast_context *rc);
+/* Thread t's context (t = 0: rc itself), for the shader's texture glue to
+ * count its events into (tex_stats_to_rast) while it runs on that thread. */
+struct rast_context *rast_thread_context(struct rast_context *rc, unsigned t);
+/* Draws every queued primitive and returns when they are all in the
+ * framebuffer.  Vertex memory given to rast_triangle/line/point must stay
+ * valid until then; state setters flush first. */
+void rast_flush(struct rast_context *rc);
+/* Primitives drawn on one thread and on all of them since creation (for
+ * docs and the threads test). */
+void rast_get_flush_counts(const struct rast_context *rc, uint64_t *serial, uint64_t *parallel);
+
+/* Up to date after rast_flush: every thread's counters summed. */
 const struct rast_stats *rast_get_stats(const struct rast_context *rc);
 void rast_reset_stats(struct rast_context *rc);
 

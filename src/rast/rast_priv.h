@@ -31,6 +31,17 @@ struct rast_context {
    const struct numsys *texfmt;     /* never NULL after rast_create */
 
    bool dirty;                      /* re-validate before the next primitive */
+   unsigned long state_serial;      /* bumped by every setter: workers copy state */
+
+   /* Threads (threads.c).  The main context owns the pool; every context,
+    * the main one included, draws the quad rows of its bands. */
+   struct rast_pool *pool;
+   unsigned band_index, band_count;    /* bands t mod n; count 1: every row */
+   /* Counters of the current stretch of work are kept (its band, or the
+    * primitive's set-up on the thread that owns it), else undone back to
+    * mark: each event is counted on exactly one thread. */
+   bool counting;
+   struct rast_stats mark;
 
    /* Chosen at validation. */
    struct rast_scissor clip;        /* scissor & framebuffer, max exclusive */
@@ -44,6 +55,37 @@ void rast_front_validate(struct rast_context *rc);
 void rast_backend_validate(struct rast_context *rc);
 void rast_backend_destroy(struct rast_context *rc);
 void rast_front_destroy(struct rast_context *rc);
+
+/* The primitives proper, past the queue (setup.c, line.c, point.c). */
+void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
+                        const float (*v1)[4], const float (*v2)[4]);
+void rast_draw_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[4]);
+void rast_draw_point(struct rast_context *rc, const float (*v0)[4]);
+
+/* threads.c: true when the primitive went to the queue (threads > 1). */
+enum rast_prim_kind { RAST_PRIM_TRIANGLE, RAST_PRIM_LINE, RAST_PRIM_POINT };
+bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
+                const float (*v1)[4], const float (*v2)[4]);
+
+/* Whether the quad row starting at scan line p (even, >= 0) is this
+ * context's: bands of RAST_BAND_ROWS scan lines, dealt round-robin. */
+static inline bool rast_band_mine(const struct rast_context *rc, int64_t p)
+{
+   return rc->band_count == 1 ||
+          (unsigned)((uint64_t)p / RAST_BAND_ROWS % rc->band_count) == rc->band_index;
+}
+
+/* Entering work that is (mine) or is not this context's to count. */
+static inline void rast_count_stretch(struct rast_context *rc, bool mine)
+{
+   if (mine == rc->counting)
+      return;
+   if (mine)
+      rc->stats = rc->mark;
+   else
+      rc->mark = rc->stats;
+   rc->counting = mine;
+}
 
 static inline void rast_validate(struct rast_context *rc)
 {

@@ -158,6 +158,11 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
    edge_start(rc, fr, R, jlo);
 
    for (int64_t p = jlo & ~(int64_t)1; p <= jhi; p += 2) {
+      /* Every thread walks the edges over every scan line (the registers
+       * are the walk's, not recomputed); the spans are drawn, and the
+       * walk's events counted, by the quad row's thread. */
+      const bool mine = rast_band_mine(rc, p);
+      rast_count_stretch(rc, mine);
       for (unsigned r = 0; r < 2; r++) {
          int64_t j = p + r;
          struct fr_row *row = &fr->row[r];
@@ -179,7 +184,8 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
          if (j < L->j_end) edge_step(rc, fr, L);
          if (j < R->j_end) edge_step(rc, fr, R);
       }
-      fr->pair(rc, fr, p);
+      if (mine)
+         fr->pair(rc, fr, p);
    }
 }
 

@@ -222,6 +222,13 @@ static void tri_sections(struct rast_front *fr)
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],
                    const float (*v1)[4], const float (*v2)[4])
 {
+   if (!rast_queue(rc, RAST_PRIM_TRIANGLE, v0, v1, v2))
+      rast_draw_triangle(rc, v0, v1, v2);
+}
+
+void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
+                        const float (*v1)[4], const float (*v2)[4])
+{
    struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;
    const float (*v[3])[4] = { v0, v1, v2 };

@@ -179,7 +179,9 @@ struct tex_unit {
 };
 
 /* Bind: copies the descriptors, converts constants into the number system
- * and chooses the functions.  The view's level data must stay valid. */
+ * and chooses the functions.  The view's level data must stay valid.
+ * `stats` counts the range events of sampling; the constants' conversions
+ * are register loads, not counted. */
 void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
                    const struct tex_sampler_desc *s, struct ns_stats *stats);
 /* The datapath (FIXPIPE_DEBUG=scalar,noskip): `scalar` takes the scalar

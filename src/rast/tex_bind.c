@@ -103,9 +103,14 @@ static void lanes_constants(struct tex_unit *u)
 void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,
                    const struct tex_sampler_desc *s, struct ns_stats *stats)
 {
+   /* The constants are loaded once per binding, not computed per pixel:
+    * their conversions are not range events of the datapath (and a unit is
+    * bound again per thread and whenever its state comes back, which would
+    * make such counts depend on the threads and the binding order). */
+   struct ns_stats loads = { 0, 0 };
    memset(u, 0, sizeof(*u));
    u->ns = ns;
-   u->stats = stats;
+   u->stats = &loads;
    u->view = *v;
    u->samp = *s;
    u->kind = tex_ns_kind(ns);
@@ -114,17 +119,17 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    if (u->view.num_levels > TEX_MAX_LEVELS)
       u->view.num_levels = TEX_MAX_LEVELS;
 
-   u->k_zero = ns->from_float(ns, 0.0f, stats);
-   u->k_one = ns->from_float(ns, 1.0f, stats);
-   u->k_half = ns->from_float(ns, 0.5f, stats);
+   u->k_zero = ns->from_float(ns, 0.0f, &loads);
+   u->k_one = ns->from_float(ns, 1.0f, &loads);
+   u->k_half = ns->from_float(ns, 0.5f, &loads);
    /* Linear filtering's half-texel offset, less half a weight LSB: the
     * weight, the fraction's top TEX_WEIGHT_BITS bits, is then rounded to
     * nearest rather than truncated, so a coordinate that interpolation puts
     * a hair below a texel centre still takes that texel alone (piglit
     * 1-1-linear-texture; llvmpipe rounds its 8-bit weights too). */
-   u->k_texel_offset = ns->from_float(ns, 0.5f - 1.0f / (float)(2u * TEX_WEIGHT_ONE), stats);
-   u->k_two = ns->from_float(ns, 2.0f, stats);
-   u->k_minus_one = ns->from_float(ns, -1.0f, stats);
+   u->k_texel_offset = ns->from_float(ns, 0.5f - 1.0f / (float)(2u * TEX_WEIGHT_ONE), &loads);
+   u->k_two = ns->from_float(ns, 2.0f, &loads);
+   u->k_minus_one = ns->from_float(ns, -1.0f, &loads);
 
    /* Targets without coordinates to wrap on some axis, and the rules GL
     * and llvmpipe apply: cube faces clamp to their edge; rectangles
@@ -157,7 +162,7 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
       for (unsigned a = 0; a < 3; a++) {
          struct tex_axis *ax = &u->axis[l][a];
          ax->size = size[a] > 0 ? size[a] : 1;
-         ax->scale = u->samp.normalized ? ns->from_float(ns, (float)ax->size, stats) : u->k_one;
+         ax->scale = u->samp.normalized ? ns->from_float(ns, (float)ax->size, &loads) : u->k_one;
          axis_bounds(u, u->samp.wrap[a], ax->size, ax);
       }
    }
@@ -168,6 +173,7 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    if (u->kind == TEX_NS_DFX && ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
       lanes_constants(u);
    tex_unit_set_datapath(u, false, false);
+   u->stats = stats;
 }
 
 void tex_unit_set_datapath(struct tex_unit *u, bool scalar, bool noskip)

@@ -1,0 +1,111 @@
+#!/bin/sh
+# The model on one thread against several (docs/threads.md): every
+# end-to-end program of tolerances.txt, the demo, and every checked-in trace
+# (traces/recorded, and every 50th frame of the benchmark's
+# traces/bench/glmark2-long.trace) are rendered through fixpipe with
+#   FIXPIPE_THREADS=1    today's single thread
+#   FIXPIPE_THREADS=N    N = 2 for the programs and traces, 3 for the demo
+# and every image must be the same bytes, and the programs' counters
+# (FIXPIPE_STATS=1, all but the lines of shader compile times and threads)
+# the same numbers.  Some of the runs must have drawn on all their threads.
+# One line per check, then "N passed, N failed"; exit 1 on a failure.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+build=${FP_BUILD_DIR:-$root/build/std}
+out=$build/threads-identity
+rm -rf "$out"
+mkdir -p "$out"
+passed=0 failed=0
+pass() { passed=$((passed + 1)); echo "PASS $1"; }
+fail() { failed=$((failed + 1)); echo "FAIL $1"; }
+parallel_total=0
+
+# counters LOG: the FIXPIPE_STATS lines that must not depend on the threads
+counters() {
+    awk '/^fixpipe stats/ { on = 1; print; next } on && /^  / { print; next } { on = 0 }' "$1" |
+        grep -v 'fragment shaders:\|threads [0-9]*:'
+}
+
+render() { # NAME THREADS PROGRAM ARGS...
+    name=$1 many=$2 prog=$3
+    shift 3
+    for n in 1 "$many"; do
+        if ! FIXPIPE_THREADS=$n FIXPIPE_STATS=1 \
+             "$root/fixpipe" run --no-xvfb --driver fixpipe -- "$prog" -o "$out/$name.$n.png" "$@" \
+             > "$out/$name.$n.log" 2>&1; then
+            fail "$name: the run on $n threads failed ($(tail -n 1 "$out/$name.$n.log"))"
+            return 1
+        fi
+    done
+    p=$(sed -n 's/.*threads [0-9]*: primitives drawn on one thread [0-9]*, on all \([0-9]*\).*/\1/p' \
+        "$out/$name.$many.log" | awk '{ s += $1 } END { print s + 0 }')
+    parallel_total=$((parallel_total + p))
+    counters "$out/$name.1.log" > "$out/$name.1.counters"
+    counters "$out/$name.$many.log" > "$out/$name.$many.counters"
+    if [ ! -s "$out/$name.1.counters" ]; then
+        fail "$name: no counters printed"
+    elif ! cmp -s "$out/$name.1.png" "$out/$name.$many.png"; then
+        fail "$name: 1 and $many threads differ ($("$build/tools/fp-compare" "$out/$name.1.png" "$out/$name.$many.png" | grep differing))"
+    elif ! cmp -s "$out/$name.1.counters" "$out/$name.$many.counters"; then
+        fail "$name: the counters differ on $many threads ($(diff "$out/$name.1.counters" "$out/$name.$many.counters" | grep '^>' | head -n 1))"
+    else
+        pass "$name: 1 thread = $many threads, image and counters ($p primitives drawn on all)"
+    fi
+}
+
+grep -v '^#' "$here/tolerances.txt" | grep -v '^[[:space:]]*$' > "$out/list"
+while IFS= read -r line; do
+    spec=${line%%|*}
+    # shellcheck disable=SC2086
+    set -- $spec
+    name=$1 prog=$2
+    shift 2
+    render "$name" 2 "$build/tests/e2e/$prog" "$@"
+done < "$out/list"
+render demo 3 "$build/tools/fp-demo" --scene all --frames 3
+
+# replay TRACE NAME SNAPSHOT-CALLS: the snapshots on 1 and 2 threads, byte for byte
+replay() {
+    trace=$1 name=$2 snaps=$3
+    for n in 1 2; do
+        mkdir -p "$out/$name.$n"
+        set -- --snapshot-prefix="$out/$name.$n/"
+        [ -n "$snaps" ] && set -- "$@" --snapshot="$snaps"
+        if ! FIXPIPE_THREADS=$n "$root/fixpipe" run --no-xvfb --driver fixpipe -- \
+             env WAFFLE_PLATFORM=surfaceless_egl eglretrace --headless "$@" "$trace" \
+             > "$out/$name.$n.log" 2>&1; then
+            fail "$name: the replay on $n threads failed ($(tail -n 1 "$out/$name.$n.log"))"
+            return 1
+        fi
+    done
+    k=$(ls "$out/$name.1" | wc -l)
+    if [ "$k" -eq 0 ] || [ "$k" -ne "$(ls "$out/$name.2" | wc -l)" ]; then
+        fail "$name: $k snapshots on 1 thread, $(ls "$out/$name.2" | wc -l) on 2"
+        return 1
+    fi
+    if diff -rq "$out/$name.1" "$out/$name.2" > "$out/$name.diff" 2>&1; then
+        pass "$name: $k frames, 1 thread = 2 threads"
+    else
+        fail "$name: $(wc -l < "$out/$name.diff") of $k frames differ"
+    fi
+}
+
+for t in "$root"/traces/recorded/*.trace; do
+    name=$(basename "$t" .trace)
+    snaps=$(python3 -c 'import json, sys; s = json.load(open(sys.argv[1])).get("snap_calls"); print(",".join(map(str, s)) if s else "")' \
+            "${t%.trace}.json")
+    replay "$t" "$name" "$snaps"
+done
+long=$root/traces/bench/glmark2-long.trace
+snaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$long" 2>/dev/null |
+        awk '/eglSwapBuffers/ { if (n++ % 50 == 0) { sub(/ .*/, ""); printf "%s%s", s, $0; s = "," } }')
+replay "$long" glmark2-long "$snaps"
+
+if [ "$parallel_total" -gt 0 ]; then
+    pass "the programs drew $parallel_total primitives on all their threads"
+else
+    fail "no program drew on more than one thread: the comparison proves nothing"
+fi
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]

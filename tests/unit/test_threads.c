@@ -1,0 +1,258 @@
+/*
+ * The model on many threads (threads.c) against one: random batches of
+ * triangles, lines and points, many of them small and across the bands'
+ * boundaries, with depth, stencil and order-dependent blending, drawn with
+ * random thread counts.  Colour, depth and stencil bytes and every counter
+ * must be those of one thread; each thread must shade with its own shader
+ * context.  Run under ThreadSanitizer by `./fixpipe check` (build/tsan).
+ */
+#include <math.h>
+#if defined(__x86_64__) || defined(__i386__)
+#include <xmmintrin.h>
+#endif
+#include <string.h>
+#include "tutil.h"
+
+#define W 203
+#define H 150
+#define MAX_PRIMS 600
+#define SLOTS 3                     /* position, a PERSPECTIVE and a COLOR varying */
+
+struct shade_ctx {
+   uint64_t quads;                  /* written by this thread only */
+   unsigned thread;
+};
+
+static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   struct shade_ctx *s = ctx;
+   s->quads++;
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++) {
+      out->color[0][0][p] = q->in[0][0][p];
+      out->color[0][1][p] = q->in[0][1][p];
+      out->color[0][2][p] = q->in[1][2][p];
+      out->color[0][3][p] = 0.25f + 0.5f * q->in[1][3][p];
+   }
+   return q->mask;
+}
+
+static void load_rgba8(const uint8_t *src, unsigned n, float (*rgba)[4])
+{
+   for (unsigned i = 0; i < n; i++)
+      for (unsigned c = 0; c < 4; c++)
+         rgba[i][c] = src[4 * i + c] / 255.0f;
+}
+
+static void store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4])
+{
+   for (unsigned i = 0; i < n; i++)
+      for (unsigned c = 0; c < 4; c++) {
+         float v = rgba[i][c] < 0 ? 0 : rgba[i][c] > 1 ? 1 : rgba[i][c];
+         dst[4 * i + c] = (uint8_t)(v * 255.0f + 0.5f);
+      }
+}
+
+struct scene {
+   unsigned nbatch;
+   unsigned nprim[8];
+   unsigned kind[8][MAX_PRIMS];     /* 0 triangle, 1 line, 2 point */
+   float v[8][MAX_PRIMS][3][SLOTS][4];
+   bool blend[8];
+   float line_width[8], point_size[8];
+};
+
+static uint64_t rng;
+
+static float frnd(float lo, float hi)
+{
+   return lo + (hi - lo) * (float)(t_xorshift(&rng) >> 11) * (1.0f / 9007199254740992.0f);
+}
+
+static void make_vertex(float (*v)[4], float x, float y)
+{
+   /* now and then a w or a value far from 1: the texture path's range
+    * events (saturation, flush to zero) must be counted once too */
+   bool far = t_xorshift(&rng) % 4 == 0;
+   float w = far ? ldexpf(1.0f, (int)(t_xorshift(&rng) % 40) - 20) : frnd(0.3f, 3.0f);
+   float a = far ? ldexpf(1.0f, -(int)(t_xorshift(&rng) % 150)) : 1.0f;   /* to subnormals */
+   v[0][0] = x; v[0][1] = y; v[0][2] = frnd(0.0f, 1.0f); v[0][3] = 1.0f / w;
+   /* A/w, as draw hands PERSPECTIVE inputs over */
+   v[1][0] = a * frnd(0, 1) / w; v[1][1] = frnd(0, 1) / w; v[1][2] = 0; v[1][3] = 0;
+   for (unsigned c = 0; c < 4; c++)
+      v[2][c] = frnd(0, 1);
+}
+
+static void make_scene(struct scene *s)
+{
+   s->nbatch = 1 + (unsigned)(t_xorshift(&rng) % 8);
+   for (unsigned b = 0; b < s->nbatch; b++) {
+      s->nprim[b] = 1 + (unsigned)(t_xorshift(&rng) % MAX_PRIMS);
+      s->blend[b] = t_xorshift(&rng) & 1;
+      s->line_width[b] = frnd(1.0f, 6.0f);
+      s->point_size[b] = frnd(1.0f, 40.0f);
+      for (unsigned i = 0; i < s->nprim[b]; i++) {
+         unsigned r = (unsigned)(t_xorshift(&rng) % 10);
+         s->kind[b][i] = r < 7 ? 0 : r < 9 ? 1 : 2;
+         /* mostly small, near a band boundary; some large; some off the target */
+         float cy = (float)(RAST_BAND_ROWS * (t_xorshift(&rng) % (H / RAST_BAND_ROWS + 2))) - 4;
+         float cx = frnd(-10, W + 10);
+         float size = (t_xorshift(&rng) % 8) == 0 ? frnd(20, 300) : frnd(0.5f, 12);
+         for (unsigned k = 0; k < 3; k++)
+            make_vertex(s->v[b][i][k], cx + frnd(-size, size), cy + frnd(-size, size));
+      }
+   }
+}
+
+struct result {
+   uint8_t color[W * H * 4];
+   uint32_t zs[W * H];
+   struct rast_stats stats;
+   uint64_t quads_shaded;
+   unsigned threads_shading;
+};
+
+static void draw_scene(const struct scene *s, unsigned threads, bool daz, struct result *res)
+{
+   static struct shade_ctx sctx[RAST_MAX_THREADS];
+   struct rast_context *rc = rast_create(rast_profile_by_name("seed"));
+   CHECK(rast_set_threads(rc, threads), "%u threads", threads);
+#if defined(__x86_64__) || defined(__i386__)
+   /* With daz, drawn as Mesa's draw module leaves the thread around a draw:
+    * denormals flushed to zero (FTZ) and read as zero (DAZ), set after the
+    * workers started.  They must compute in the same mode. */
+   const unsigned csr = _mm_getcsr();
+   if (daz)
+      _mm_setcsr(csr | 0x8040);
+#else
+   (void)daz;
+#endif
+   CHECK(rast_get_threads(rc) == threads, "threads %u", rast_get_threads(rc));
+   memset(sctx, 0, sizeof(sctx));
+   memset(res->color, 0x40, sizeof(res->color));
+   for (unsigned i = 0; i < W * H; i++)
+      res->zs[i] = 0x00ffffffu;        /* depth far, stencil 0 */
+
+   struct rast_framebuffer fb;
+   memset(&fb, 0, sizeof(fb));
+   fb.width = W;
+   fb.height = H;
+   fb.nr_cbufs = 1;
+   fb.cbuf[0] = (struct rast_color_target){ res->color, W * 4, 4, RAST_CL_RGBA8,
+                                            load_rgba8, store_rgba8, true };
+   fb.zs = (struct rast_zs_target){ (uint8_t *)res->zs, W * 4, RAST_ZS_Z24_S8 };
+   rast_set_framebuffer(rc, &fb);
+
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof(vl));
+   vl.vertex_size = SLOTS;
+   vl.pos_slot = 0;
+   vl.num_varyings = 2;
+   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
+   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_COLOR, 0xf };
+   rast_set_vertex_layout(rc, &vl);
+
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof(fs));
+   fs.ctx = &sctx[0];
+   fs.shade = shade;
+   fs.num_outputs = 1;
+   for (unsigned t = 1; t < threads; t++) {
+      sctx[t].thread = t;
+      fs.thread_ctx[t] = &sctx[t];
+   }
+   rast_set_shader(rc, &fs);
+
+   struct rast_depth_stencil_state dsa;
+   memset(&dsa, 0, sizeof(dsa));
+   dsa.depth_enabled = true;
+   dsa.depth_writemask = true;
+   dsa.depth_func = RAST_FUNC_LEQUAL;
+   for (unsigned f = 0; f < 2; f++)
+      dsa.stencil[f] = (struct rast_stencil_face){ true, RAST_FUNC_ALWAYS, RAST_STENCIL_KEEP,
+                                                   RAST_STENCIL_INCR_WRAP,
+                                                   RAST_STENCIL_INCR_WRAP, 0xff, 0xff };
+   rast_set_depth_stencil(rc, &dsa);
+
+   for (unsigned b = 0; b < s->nbatch; b++) {
+      struct rast_blend_state bs;
+      memset(&bs, 0, sizeof(bs));
+      bs.rt[0] = (struct rast_blend_target){ s->blend[b], RAST_BLEND_ADD, RAST_BLEND_ADD,
+                                             RAST_BF_SRC_ALPHA, RAST_BF_INV_SRC_ALPHA,
+                                             RAST_BF_ONE, RAST_BF_INV_SRC_ALPHA, 0xf };
+      rast_set_blend(rc, &bs);
+      struct rast_raster_state rs;
+      memset(&rs, 0, sizeof(rs));
+      rs.half_pixel_center = true;
+      rs.line_width = s->line_width[b];
+      rs.point_size = s->point_size[b];
+      rs.point_quad_rasterization = true;
+      rs.cull = b % 3 == 2 ? RAST_CULL_BACK : RAST_CULL_NONE;
+      rast_set_raster_state(rc, &rs);
+      for (unsigned i = 0; i < s->nprim[b]; i++) {
+         const float (*v0)[4] = T_V(s->v[b][i][0]);
+         const float (*v1)[4] = T_V(s->v[b][i][1]);
+         const float (*v2)[4] = T_V(s->v[b][i][2]);
+         switch (s->kind[b][i]) {
+         case 0: rast_triangle(rc, v0, v1, v2); break;
+         case 1: rast_line(rc, v0, v1); break;
+         default: rast_point(rc, v0); break;
+         }
+      }
+      rast_flush(rc);
+   }
+   res->stats = *rast_get_stats(rc);
+   res->quads_shaded = 0;
+   res->threads_shading = 0;
+   for (unsigned t = 0; t < threads; t++) {
+      CHECK(sctx[t].thread == t, "thread %u shaded with context %u", t, sctx[t].thread);
+      res->quads_shaded += sctx[t].quads;
+      res->threads_shading += sctx[t].quads != 0;
+   }
+#if defined(__x86_64__) || defined(__i386__)
+   _mm_setcsr(csr);
+#endif
+   rast_destroy(rc);
+}
+
+int main(void)
+{
+   static struct scene scene;
+   static struct result one, many;
+   unsigned scenes = 0, parallel_scenes = 0;
+   uint64_t range_events = 0;
+   rng = 0x7e1f00d5eed5ull;
+
+   for (unsigned n = 0; n < 60; n++) {
+      make_scene(&scene);
+      unsigned threads = 2 + (unsigned)(t_xorshift(&rng) % 7);
+      if (n % 10 == 9)
+         threads = RAST_MAX_THREADS;
+      draw_scene(&scene, 1, n & 1, &one);
+      draw_scene(&scene, threads, n & 1, &many);
+      scenes++;
+      parallel_scenes += many.threads_shading > 1;
+      range_events += one.stats.tex_sat + one.stats.tex_flush;
+      CHECK(!memcmp(one.color, many.color, sizeof(one.color)),
+            "scene %u: colour differs with %u threads", n, threads);
+      CHECK(!memcmp(one.zs, many.zs, sizeof(one.zs)),
+            "scene %u: depth/stencil differs with %u threads", n, threads);
+      CHECK(!memcmp(&one.stats, &many.stats, sizeof(one.stats)),
+            "scene %u: counters differ with %u threads (quads %llu vs %llu, triangles %llu vs "
+            "%llu, xy sat %llu vs %llu)", n, threads,
+            (unsigned long long)one.stats.quads, (unsigned long long)many.stats.quads,
+            (unsigned long long)one.stats.triangles, (unsigned long long)many.stats.triangles,
+            (unsigned long long)one.stats.sat[RAST_REG_XY].high,
+            (unsigned long long)many.stats.sat[RAST_REG_XY].high);
+      CHECK(one.quads_shaded == many.quads_shaded && one.quads_shaded > 0,
+            "scene %u: quads shaded %llu on one thread, %llu on %u", n,
+            (unsigned long long)one.quads_shaded, (unsigned long long)many.quads_shaded,
+            threads);
+   }
+   /* The comparison means something only if the threads shared the work. */
+   CHECK(parallel_scenes * 2 > scenes, "only %u of %u scenes shaded on more than one thread",
+         parallel_scenes, scenes);
+   CHECK(range_events > 0, "no range events in the texture path: nothing proven about their counts");
+   printf("%u scenes, %u shaded on several threads, %llu texture-path range events\n", scenes,
+          parallel_scenes, (unsigned long long)range_events);
+   return t_summary("threads");
+}
