@@ -34,8 +34,8 @@ const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 #define FP_DEBUG_SCALAR  (1u << 2)   /* the model's scalar reference datapath, no lanes */
 #define FP_DEBUG_NOSKIP  (1u << 3)   /* compute what the model's skips leave out */
 unsigned fp_env_debug(void);
-unsigned fp_env_rast_options(void);
-unsigned fp_env_threads(void);               /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */          /* RAST_OPT_* from FIXPIPE_DEBUG */
+unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
+unsigned fp_env_threads(void);               /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */
 
 /* Render-target formats the driver can pack from float (fp_format.c). */
 bool fp_format_renderable(enum pipe_format format);

@@ -8,6 +8,14 @@
 #include "rast/rast_priv.h"
 #include "fixed/numsys.h"
 
+/* Every setter flushes the queued primitives first (they were submitted
+ * under the old state) and ends here: validate again, and workers copy. */
+static void state_changed(struct rast_context *rc)
+{
+   rc->dirty = true;
+   rc->state_serial++;
+}
+
 struct rast_context *rast_create(const struct rast_profile *profile)
 {
    if (!profile)
@@ -47,32 +55,28 @@ void rast_set_framebuffer(struct rast_context *rc, const struct rast_framebuffer
 {
    rast_flush(rc);
    rc->fb = *fb;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_state *rs)
 {
    rast_flush(rc);
    rc->rs = *rs;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
 {
    rast_flush(rc);
    rc->scissor = *sc;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa)
 {
    rast_flush(rc);
    rc->dsa = *dsa;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back)
@@ -80,56 +84,49 @@ void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back)
    rast_flush(rc);
    rc->stencil_ref[0] = front;
    rc->stencil_ref[1] = back;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blend)
 {
    rast_flush(rc);
    rc->blend = *blend;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_blend_color(struct rast_context *rc, const float color[4])
 {
    rast_flush(rc);
    memcpy(rc->blend_color, color, sizeof(rc->blend_color));
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl)
 {
    rast_flush(rc);
    rc->vl = *vl;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs)
 {
    rast_flush(rc);
    rc->fs = *fs;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_options(struct rast_context *rc, unsigned opts)
 {
    rast_flush(rc);
    rc->opts = opts;
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns)
 {
    rast_flush(rc);
    rc->texfmt = ns ? ns : numsys_default();
-   rc->dirty = true;
-   rc->state_serial++;
+   state_changed(rc);
 }
 
 const struct rast_stats *rast_get_stats(const struct rast_context *rc)

@@ -44,6 +44,10 @@
 struct rast_prim {
    enum rast_prim_kind kind;
    const float (*v[3])[4];
+   /* the scan lines it can cover (prim_rows), found once when queued;
+    * rows_known false: every thread takes it */
+   bool rows_known;
+   int64_t lo, hi;
 };
 
 struct rast_pool {
@@ -148,15 +152,13 @@ static void draw_share(struct rast_context *rc, const struct rast_pool *pool)
 {
    for (size_t i = 0; i < pool->nprim; i++) {
       const struct rast_prim *p = &pool->prim[i];
-      int64_t lo = 0, hi = 0;
-      double area;
       bool mine_setup;
       if (rc->band_count == 1) {
          mine_setup = true;
-      } else if (prim_rows(rc, p, &lo, &hi, &area)) {
+      } else if (p->rows_known) {
          /* the set-up is counted by the thread of the top band */
-         mine_setup = band_of(rc, lo) == rc->band_index;
-         if (!mine_setup && !bands_meet(rc, lo, hi))
+         mine_setup = band_of(rc, p->lo) == rc->band_index;
+         if (!mine_setup && !bands_meet(rc, p->lo, p->hi))
             continue;
       } else {
          mine_setup = rc->band_index == 0;
@@ -308,9 +310,9 @@ bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (
    p->v[0] = v0;
    p->v[1] = v1;
    p->v[2] = v2;
-   int64_t lo, hi;
    double area;
-   pool->pixels += prim_rows(rc, p, &lo, &hi, &area) ? area : RAST_PARALLEL_MIN_PIXELS;
+   p->rows_known = prim_rows(rc, p, &p->lo, &p->hi, &area);
+   pool->pixels += p->rows_known ? area : RAST_PARALLEL_MIN_PIXELS;
    return true;
 }
 

@@ -96,44 +96,13 @@ while IFS= read -r line; do
 done < "$out/list"
 render demo "$build/tools/fp-demo" --scene all --frames 3
 
-# replay TRACE NAME SNAPSHOT-CALLS: both modes' snapshots, byte for byte
-replay() {
-    trace=$1 name=$2 snaps=$3
-    for m in $MODES; do
-        mkdir -p "$out/$name.$m"
-        set -- --snapshot-prefix="$out/$name.$m/"
-        [ -n "$snaps" ] && set -- "$@" --snapshot="$snaps"
-        if ! FIXPIPE_DEBUG=$(flags $m) FIXPIPE_STATS=1 \
-             "$root/fixpipe" run --no-xvfb --driver fixpipe -- env WAFFLE_PLATFORM=surfaceless_egl \
-             eglretrace --headless "$@" "$trace" > "$out/$name.$m.log" 2>&1; then
-            fail "$name: the $m replay failed ($(tail -n 1 "$out/$name.$m.log"))"
-            return 1
-        fi
-    done
-    # (eglretrace ends without destroying its context, and frames on the surfaceless
-    # platform are not presented: no FIXPIPE_STATS to check; see the end)
-    n=$(ls "$out/$name.lanes" | wc -l)
-    if [ "$n" -eq 0 ] || [ "$n" -ne "$(ls "$out/$name.scalar" | wc -l)" ]; then
-        fail "$name: $n snapshots with the lanes, $(ls "$out/$name.scalar" | wc -l) scalar"
-        return 1
-    fi
-    if diff -rq "$out/$name.lanes" "$out/$name.scalar" > "$out/$name.diff" 2>&1; then
-        pass "$name: $n frames, lanes = scalar,noskip"
-    else
-        fail "$name: $(wc -l < "$out/$name.diff") of $n frames differ"
-    fi
-}
-
-for t in "$root"/traces/recorded/*.trace; do
-    name=$(basename "$t" .trace)
-    snaps=$(python3 -c 'import json, sys; s = json.load(open(sys.argv[1])).get("snap_calls"); print(",".join(map(str, s)) if s else "")' \
-            "${t%.trace}.json")
-    replay "$t" "$name" "$snaps"
-done
-long=$root/traces/bench/glmark2-long.trace
-snaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$long" 2>/dev/null |
-        awk '/eglSwapBuffers/ { if (n++ % 50 == 0) { sub(/ .*/, ""); printf "%s%s", s, $0; s = "," } }')
-replay "$long" glmark2-long "$snaps"
+# every trace in both modes, snapshots byte for byte (eglretrace ends without
+# destroying its context, and frames on the surfaceless platform are not
+# presented: no FIXPIPE_STATS to check; see the end)
+mode_env() { echo "FIXPIPE_DEBUG=$(flags "$1") FIXPIPE_STATS=1"; }
+SAME="lanes = scalar,noskip"
+. "$here/identity-replays.sh"
+replay_all
 
 # FIXPIPE_STATS=frames:1 where frames are presented (X11): one work line per frame
 gears=$root/traces/recorded/es2gears.trace

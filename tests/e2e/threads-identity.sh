@@ -65,42 +65,12 @@ while IFS= read -r line; do
 done < "$out/list"
 render demo 3 "$build/tools/fp-demo" --scene all --frames 3
 
-# replay TRACE NAME SNAPSHOT-CALLS: the snapshots on 1 and 2 threads, byte for byte
-replay() {
-    trace=$1 name=$2 snaps=$3
-    for n in 1 2; do
-        mkdir -p "$out/$name.$n"
-        set -- --snapshot-prefix="$out/$name.$n/"
-        [ -n "$snaps" ] && set -- "$@" --snapshot="$snaps"
-        if ! FIXPIPE_THREADS=$n "$root/fixpipe" run --no-xvfb --driver fixpipe -- \
-             env WAFFLE_PLATFORM=surfaceless_egl eglretrace --headless "$@" "$trace" \
-             > "$out/$name.$n.log" 2>&1; then
-            fail "$name: the replay on $n threads failed ($(tail -n 1 "$out/$name.$n.log"))"
-            return 1
-        fi
-    done
-    k=$(ls "$out/$name.1" | wc -l)
-    if [ "$k" -eq 0 ] || [ "$k" -ne "$(ls "$out/$name.2" | wc -l)" ]; then
-        fail "$name: $k snapshots on 1 thread, $(ls "$out/$name.2" | wc -l) on 2"
-        return 1
-    fi
-    if diff -rq "$out/$name.1" "$out/$name.2" > "$out/$name.diff" 2>&1; then
-        pass "$name: $k frames, 1 thread = 2 threads"
-    else
-        fail "$name: $(wc -l < "$out/$name.diff") of $k frames differ"
-    fi
-}
-
-for t in "$root"/traces/recorded/*.trace; do
-    name=$(basename "$t" .trace)
-    snaps=$(python3 -c 'import json, sys; s = json.load(open(sys.argv[1])).get("snap_calls"); print(",".join(map(str, s)) if s else "")' \
-            "${t%.trace}.json")
-    replay "$t" "$name" "$snaps"
-done
-long=$root/traces/bench/glmark2-long.trace
-snaps=$(apitrace dump --grep=eglSwapBuffers --arg-names=no "$long" 2>/dev/null |
-        awk '/eglSwapBuffers/ { if (n++ % 50 == 0) { sub(/ .*/, ""); printf "%s%s", s, $0; s = "," } }')
-replay "$long" glmark2-long "$snaps"
+# every trace on 1 and 2 threads, snapshots byte for byte
+MODES="1 2"
+mode_env() { echo "FIXPIPE_THREADS=$1"; }
+SAME="1 thread = 2 threads"
+. "$here/identity-replays.sh"
+replay_all
 
 if [ "$parallel_total" -gt 0 ]; then
     pass "the programs drew $parallel_total primitives on all their threads"
