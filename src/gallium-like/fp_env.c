@@ -30,6 +30,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "the model's scalar reference datapath instead of its lanes (same bits)" },
    { "noskip", FP_DEBUG_NOSKIP,
      "compute everything the model's skips leave out (same bits)" },
+   { "nothreads", FP_DEBUG_NOTHREADS,
+     "the model on one thread whatever FIXPIPE_THREADS says (same bits)" },
    DEBUG_NAMED_VALUE_END
 };
 
@@ -142,7 +144,7 @@ unsigned fp_env_debug(void)
 unsigned fp_env_threads(void)
 {
    util_call_once(&env_once, fp_env_parse);
-   return env_threads;
+   return env_debug & FP_DEBUG_NOTHREADS ? 1 : env_threads;
 }
 
 unsigned fp_env_rast_options(void)

@@ -33,6 +33,7 @@ const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 #define FP_DEBUG_JITALL  (1u << 1)   /* compile shaders at first use, not once hot */
 #define FP_DEBUG_SCALAR  (1u << 2)   /* the model's scalar reference datapath, no lanes */
 #define FP_DEBUG_NOSKIP  (1u << 3)   /* compute what the model's skips leave out */
+#define FP_DEBUG_NOTHREADS (1u << 4) /* the model on one thread, whatever FIXPIPE_THREADS says */
 unsigned fp_env_debug(void);
 unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
 unsigned fp_env_threads(void);               /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */

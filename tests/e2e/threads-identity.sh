@@ -3,8 +3,8 @@
 # end-to-end program of tolerances.txt, the demo, and every checked-in trace
 # (traces/recorded, and every 50th frame of the benchmark's
 # traces/bench/glmark2-long.trace) are rendered through fixpipe with
-#   FIXPIPE_THREADS=1    today's single thread
-#   FIXPIPE_THREADS=N    N = 2 for the programs and traces, 3 for the demo
+#   FIXPIPE_DEBUG=nothreads   the reference: one thread (the same as FIXPIPE_THREADS=1)
+#   FIXPIPE_THREADS=N         N = 2 for the programs and traces, 3 for the demo
 # and every image must be the same bytes, and the programs' counters
 # (FIXPIPE_STATS=1, all but the lines of shader compile times and threads)
 # the same numbers.  Some of the runs must have drawn on all their threads.
@@ -17,6 +17,9 @@ out=$build/threads-identity
 rm -rf "$out"
 mkdir -p "$out"
 passed=0 failed=0
+# the environment of a thread count: 1 is the reference switch, FIXPIPE_DEBUG=nothreads
+# (FIXPIPE_THREADS set high too, which it must override)
+mode_env() { if [ "$1" = 1 ]; then echo "FIXPIPE_DEBUG=nothreads FIXPIPE_THREADS=8"; else echo "FIXPIPE_THREADS=$1"; fi; }
 pass() { passed=$((passed + 1)); echo "PASS $1"; }
 fail() { failed=$((failed + 1)); echo "FAIL $1"; }
 parallel_total=0
@@ -31,7 +34,7 @@ render() { # NAME THREADS PROGRAM ARGS...
     name=$1 many=$2 prog=$3
     shift 3
     for n in 1 "$many"; do
-        if ! FIXPIPE_THREADS=$n FIXPIPE_STATS=1 \
+        if ! env $(mode_env "$n") FIXPIPE_STATS=1 \
              "$root/fixpipe" run --no-xvfb --driver fixpipe -- "$prog" -o "$out/$name.$n.png" "$@" \
              > "$out/$name.$n.log" 2>&1; then
             fail "$name: the run on $n threads failed ($(tail -n 1 "$out/$name.$n.log"))"
@@ -41,6 +44,11 @@ render() { # NAME THREADS PROGRAM ARGS...
     p=$(sed -n 's/.*threads [0-9]*: primitives drawn on one thread [0-9]*, on all \([0-9]*\).*/\1/p' \
         "$out/$name.$many.log" | awk '{ s += $1 } END { print s + 0 }')
     parallel_total=$((parallel_total + p))
+    if ! grep -q '^  threads 1:' "$out/$name.1.log" ||
+       ! grep -q "^  threads $many:" "$out/$name.$many.log"; then
+        fail "$name: not drawn on 1 and on $many threads (FIXPIPE_STATS' threads lines)"
+        return 1
+    fi
     counters "$out/$name.1.log" > "$out/$name.1.counters"
     counters "$out/$name.$many.log" > "$out/$name.$many.counters"
     if [ ! -s "$out/$name.1.counters" ]; then
@@ -67,7 +75,6 @@ render demo 3 "$build/tools/fp-demo" --scene all --frames 3
 
 # every trace on 1 and 2 threads, snapshots byte for byte
 MODES="1 2"
-mode_env() { echo "FIXPIPE_THREADS=$1"; }
 SAME="1 thread = 2 threads"
 . "$here/identity-replays.sh"
 replay_all
