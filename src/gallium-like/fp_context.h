@@ -180,6 +180,11 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                enum pipe_shader_type stage,
                                                struct rast_context *rc);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
+/* A quad whose operands compiled code laid out as tgsi_exec's get_samples
+ * would have (fp_jit_sample.c); control is an enum tgsi_sampler_control. */
+struct tex_quad;
+void fp_tgsi_sample_quad(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
+                         uint32_t control, const struct tex_quad *q, float rgba[4][4]);
 /* What it counted so far, into rc's counters (not while rc's thread draws). */
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s, struct rast_context *rc);
 void fp_init_sampler_view(struct fp_sampler_view *view);

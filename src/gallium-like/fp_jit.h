@@ -23,6 +23,7 @@ struct gallivm_state;   /* lp_bld_jit_types.h does not declare it */
 #include "rast/rast.h"
 
 struct tgsi_sampler;
+struct tex_quad;
 struct tgsi_shader_info;
 struct tgsi_token;
 struct gallivm_state;
@@ -38,6 +39,9 @@ struct fp_jit_context {
                   float derivs[3][2][RAST_QUAD_SIZE], const int32_t offsets[3][RAST_QUAD_SIZE],
                   float rgba[4][RAST_QUAD_SIZE]);
    void (*size)(struct tgsi_sampler *s, uint32_t texture, int32_t lod, int32_t dims[4]);
+   /* plain 2-D samples, the quad laid out by the code (fp_tgsi_sample_quad) */
+   void (*sample_quad)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
+                       uint32_t control, const struct tex_quad *q, float rgba[4][RAST_QUAD_SIZE]);
 };
 
 /* mask: in, the covered pixels (lane = ~0); out, those that survive discard. */

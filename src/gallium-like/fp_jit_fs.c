@@ -350,9 +350,13 @@ static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
 {
    struct mesa_sha1 ctx;
    unsigned char sha1[20];
-   static const char version[] = "fixpipe fs quad 2";   /* 2: tgsi_exec derivatives */
+   /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad */
+   static const char version[] = "fixpipe fs quad 3";
+   /* noskip leaves the quads laid out by the code out (fp_jit_sample.c) */
+   const bool noskip = fp_env_debug() & FP_DEBUG_NOSKIP;
    _mesa_sha1_init(&ctx);
    _mesa_sha1_update(&ctx, version, sizeof(version));
+   _mesa_sha1_update(&ctx, &noskip, sizeof(noskip));
    _mesa_sha1_update(&ctx, tokens, tgsi_num_tokens(tokens) * sizeof(struct tgsi_token));
    _mesa_sha1_update(&ctx, &depth_output, sizeof(depth_output));
    _mesa_sha1_update(&ctx, &num_color_outputs, sizeof(num_color_outputs));
@@ -388,7 +392,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
 
    /* Mesa's on-disk cache: a hit skips LLVM's code generation (the IR is
     * still built, as in llvmpipe); gallivm frees the cached data. */
-   struct disk_cache *cache = fp_screen(fp->pipe.screen)->disk_cache;
+   struct disk_cache *cache = fp_screen_disk_cache(fp_screen(fp->pipe.screen));
    struct lp_cached_code cached = { 0 };
    unsigned char key[CACHE_KEY_SIZE];
    if (cache) {

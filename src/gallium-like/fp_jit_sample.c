@@ -25,7 +25,10 @@
 #include "tgsi/tgsi_util.h"
 #include "util/u_memory.h"
 
+#include "fp_context.h"
 #include "fp_jit.h"
+#include "fp_screen.h"
+#include "rast/tex.h"
 
 /* the TGSI target of a texture instruction, carried above the gallivm sample key */
 #define FP_KEY_TARGET_SHIFT 16
@@ -136,6 +139,7 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
    ctx->sampler = s;
    ctx->sample = fp_jit_sample;
    ctx->size = fp_jit_size;
+   ctx->sample_quad = fp_tgsi_sample_quad;
 }
 
 /* ---------------------------------------------------------------- code */
@@ -187,6 +191,89 @@ static void fp_store_vec(struct gallivm_state *gallivm, LLVMValueRef array, LLVM
    LLVMBuildStore(b, v, p);
 }
 
+/* A call of the C function at `fn_offset` in fp_jit_context, with the
+ * context's sampler glue as its first argument (args[0] is set here). */
+static void fp_emit_ctx_call(struct gallivm_state *gallivm, LLVMValueRef context_ptr,
+                             size_t fn_offset, LLVMTypeRef *arg_types, LLVMValueRef *args,
+                             unsigned n)
+{
+   LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(gallivm->context), arg_types,
+                                          n, 0);
+   LLVMValueRef fn = fp_ctx_load_ptr(gallivm, context_ptr, fn_offset,
+                                     LLVMPointerType(fn_type, 0));
+   args[0] = fp_ctx_load_ptr(gallivm, context_ptr, offsetof(struct fp_jit_context, sampler),
+                             arg_types[0]);
+   LLVMBuildCall2(gallivm->builder, fn_type, fn, args, n, "");
+}
+
+/* The texel vectors out of the result array. */
+static void fp_load_texel(struct gallivm_state *gallivm, LLVMTypeRef fvec, LLVMValueRef rgba,
+                          const struct lp_sampler_params *params)
+{
+   for (unsigned c = 0; c < 4; c++) {
+      LLVMValueRef idx = lp_build_const_int32(gallivm, c);
+      LLVMValueRef p = LLVMBuildGEP2(gallivm->builder, fvec, rgba, &idx, 1, "");
+      params->texel[c] = LLVMBuildLoad2(gallivm->builder, fvec, p, "");
+   }
+}
+
+/* Whether an instruction is a plain 2-D sample (no shadow, offsets,
+ * derivatives, gather): the one most shaders are made of, whose quad the
+ * code lays out itself.  tgsi_exec's operands for it are s and t, zeros for
+ * r and the reference (whatever the view's target), and the bias or LOD. */
+static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
+{
+   const unsigned op = (key & LP_SAMPLER_OP_TYPE_MASK) >> LP_SAMPLER_OP_TYPE_SHIFT;
+   const unsigned lod = (key & LP_SAMPLER_LOD_CONTROL_MASK) >> LP_SAMPLER_LOD_CONTROL_SHIFT;
+   return target == TGSI_TEXTURE_2D && op == LP_SAMPLER_OP_TEXTURE &&
+          !(key & (LP_SAMPLER_SHADOW | LP_SAMPLER_OFFSETS)) &&
+          lod != LP_SAMPLER_LOD_DERIVATIVES;
+}
+
+/* tgsi_exec's control of a plain sample's LOD operand. */
+static enum tgsi_sampler_control fp_control(unsigned key)
+{
+   switch ((key & LP_SAMPLER_LOD_CONTROL_MASK) >> LP_SAMPLER_LOD_CONTROL_SHIFT) {
+   case LP_SAMPLER_LOD_BIAS: return TGSI_SAMPLER_LOD_BIAS;
+   case LP_SAMPLER_LOD_EXPLICIT: return TGSI_SAMPLER_LOD_EXPLICIT;
+   default: return TGSI_SAMPLER_LOD_NONE;
+   }
+}
+
+/* A plain 2-D sample: the struct tex_quad fp_tgsi_get_samples would build,
+ * stored by the code, and one call into the unit's glue. */
+static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_sampler_params *params)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMContextRef lc = gallivm->context;
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, params->type);
+   LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
+   LLVMTypeRef vp = LLVMPointerType(fvec, 0);
+   LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   const enum tgsi_sampler_control control = fp_control(params->sample_key);
+#define FP_Q(member) (unsigned)(offsetof(struct tex_quad, member) / sizeof(float[RAST_QUAD_SIZE]))
+   LLVMValueRef q = fp_vec_array(gallivm, fvec, sizeof(struct tex_quad) / sizeof(float[4]),
+                                 "tex_quad");
+   fp_store_vec(gallivm, q, fvec, FP_Q(s), params->coords[0]);
+   fp_store_vec(gallivm, q, fvec, FP_Q(t), params->coords[1]);
+   fp_store_vec(gallivm, q, fvec, FP_Q(r), NULL);
+   fp_store_vec(gallivm, q, fvec, FP_Q(layer), NULL);
+   fp_store_vec(gallivm, q, fvec, FP_Q(ref), NULL);
+   fp_store_vec(gallivm, q, fvec, FP_Q(lod),
+                control == TGSI_SAMPLER_LOD_NONE ? NULL : params->lod);
+#undef FP_Q
+   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4, "texel");
+   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp };
+   LLVMValueRef args[] = {
+      NULL, fp_texture_unit(gallivm, params->texture_index, params->texture_index_offset),
+      lp_build_const_int32(gallivm, params->sampler_index),
+      lp_build_const_int32(gallivm, control), q, rgba,
+   };
+   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quad),
+                    arg_types, args, ARRAY_SIZE(args));
+   fp_load_texel(gallivm, fvec, rgba, params);
+}
+
 static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
                                struct gallivm_state *gallivm,
                                const struct lp_sampler_params *params)
@@ -203,6 +290,10 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
    const enum tgsi_texture_type target =
       unit < PIPE_MAX_SHADER_SAMPLER_VIEWS ? js->tgsi_target[unit] : TGSI_TEXTURE_2D;
    const unsigned key = params->sample_key | (unsigned)target << FP_KEY_TARGET_SHIFT;
+   if (fp_plain_2d(target, params->sample_key) && !(fp_env_debug() & FP_DEBUG_NOSKIP)) {
+      fp_emit_tex_quad(gallivm, params);
+      return;
+   }
 
    LLVMValueRef coords = fp_vec_array(gallivm, fvec, 5, "tex_coords");
    for (unsigned i = 0; i < 5; i++)
@@ -238,24 +329,13 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
    LLVMValueRef texture = fp_texture_unit(gallivm, unit, params->texture_index_offset);
 
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp, vp, LLVMPointerType(ivec, 0), vp };
-   LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), arg_types,
-                                          ARRAY_SIZE(arg_types), 0);
-   LLVMValueRef fn = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                     offsetof(struct fp_jit_context, sample),
-                                     LLVMPointerType(fn_type, 0));
-   LLVMValueRef sampler = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                          offsetof(struct fp_jit_context, sampler), voidp);
    LLVMValueRef args[] = {
-      sampler, texture, lp_build_const_int32(gallivm, params->sampler_index),
+      NULL, texture, lp_build_const_int32(gallivm, params->sampler_index),
       lp_build_const_int32(gallivm, key), coords, lod, derivs, offsets, rgba,
    };
-   LLVMBuildCall2(b, fn_type, fn, args, ARRAY_SIZE(args), "");
-
-   for (unsigned c = 0; c < 4; c++) {
-      LLVMValueRef idx = lp_build_const_int32(gallivm, c);
-      LLVMValueRef p = LLVMBuildGEP2(b, fvec, rgba, &idx, 1, "");
-      params->texel[c] = LLVMBuildLoad2(b, fvec, p, "");
-   }
+   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample),
+                    arg_types, args, ARRAY_SIZE(args));
+   fp_load_texel(gallivm, fvec, rgba, params);
 }
 
 static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
@@ -288,14 +368,9 @@ static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
    LLVMValueRef dims = lp_build_array_alloca(gallivm, i32, lp_build_const_int32(gallivm, 4),
                                              "dims");
    LLVMTypeRef arg_types[] = { voidp, i32, i32, LLVMPointerType(i32, 0) };
-   LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), arg_types, 4, 0);
-   LLVMValueRef fn = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                     offsetof(struct fp_jit_context, size),
-                                     LLVMPointerType(fn_type, 0));
-   LLVMValueRef sampler = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                          offsetof(struct fp_jit_context, sampler), voidp);
-   LLVMValueRef args[] = { sampler, texture, lod, dims };
-   LLVMBuildCall2(b, fn_type, fn, args, 4, "");
+   LLVMValueRef args[] = { NULL, texture, lod, dims };
+   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, size),
+                    arg_types, args, ARRAY_SIZE(args));
    for (unsigned c = 0; c < 4; c++) {
       LLVMValueRef idx = lp_build_const_int32(gallivm, c);
       LLVMValueRef v = LLVMBuildLoad2(b, i32, LLVMBuildGEP2(b, i32, dims, &idx, 1, ""), "");

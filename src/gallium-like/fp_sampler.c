@@ -290,6 +290,37 @@ static inline void fp_tex_stats(struct fp_tgsi_sampler *ts)
       fp_tgsi_sampler_flush_stats(ts, ts->rast);
 }
 
+/* The unit of a sample request's view and sampler (bound if need be), or
+ * NULL when there is nothing to sample: the result is then zero. */
+static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sview_index,
+                                         unsigned sampler_index,
+                                         const struct fp_sampler_view **view)
+{
+   struct fp_context *fp = ts->fp;
+   if (sview_index >= PIPE_MAX_SAMPLERS || sampler_index >= PIPE_MAX_SAMPLERS)
+      return NULL;
+   const struct fp_sampler_view *fv =
+      (const struct fp_sampler_view *)fp->sampler_views[ts->stage][sview_index];
+   const struct pipe_sampler_state *ss = fp->samplers[ts->stage][sampler_index];
+   if (!fv || !ss || !fv->base.texture || !fp_resource(fv->base.texture)->data)
+      return NULL;
+   *view = fv;
+   return fp_tex_bind(ts, sview_index, fv, ss);
+}
+
+/* The quad through the unit, and its counts. */
+static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_unit *u,
+                                  const struct tex_quad *q, enum tgsi_sampler_control control,
+                                  float rgba[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
+{
+   const enum tex_lod_control ctl = fp_lod_control(control);
+   const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
+   ts->lod_quads += lod_from_diffs;
+   ts->skip_lod += u->lod_skipped && lod_from_diffs;
+   tex_unit_sample(u, q, ctl, rgba);
+   fp_tex_stats(ts);
+}
+
 static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                                 const unsigned sampler_index, const float s[TGSI_QUAD_SIZE],
                                 const float t[TGSI_QUAD_SIZE], const float r[TGSI_QUAD_SIZE],
@@ -299,17 +330,12 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
                                 float rgba[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
 {
    struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
-   struct fp_context *fp = ts->fp;
+   const struct fp_sampler_view *fv;
 
    memset(rgba, 0, sizeof(float) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
-   if (sview_index >= PIPE_MAX_SAMPLERS || sampler_index >= PIPE_MAX_SAMPLERS)
+   const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
+   if (!u)
       return;
-   const struct fp_sampler_view *fv =
-      (const struct fp_sampler_view *)fp->sampler_views[ts->stage][sview_index];
-   const struct pipe_sampler_state *ss = fp->samplers[ts->stage][sampler_index];
-   if (!fv || !ss || !fv->base.texture || !fp_resource(fv->base.texture)->data)
-      return;
-   const struct tex_unit *u = fp_tex_bind(ts, sview_index, fv, ss);
 
    /* tgsi's operands per target: the array layer, the shadow reference. */
    struct tex_quad q;
@@ -347,12 +373,24 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
             co[a][p] += k;
       }
    }
-   const enum tex_lod_control ctl = fp_lod_control(control);
-   const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
-   ts->lod_quads += lod_from_diffs;
-   ts->skip_lod += u->lod_skipped && lod_from_diffs;
-   tex_unit_sample(u, &q, ctl, rgba);
-   fp_tex_stats(ts);
+   fp_unit_sample(ts, u, &q, control, rgba);
+}
+
+/* A quad the compiled code laid out itself (fp_jit_sample.c: a plain 2-D
+ * sample, the operands fp_tgsi_get_samples would have built), without the
+ * copies. */
+void fp_tgsi_sample_quad(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
+                         uint32_t sampler_index, uint32_t control, const struct tex_quad *q,
+                         float rgba[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
+{
+   struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
+   const struct fp_sampler_view *fv;
+   const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
+   if (!u) {
+      memset(rgba, 0, sizeof(float) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
+      return;
+   }
+   fp_unit_sample(ts, u, q, (enum tgsi_sampler_control)control, rgba);
 }
 
 static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,

@@ -269,9 +269,12 @@ static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format 
 
 /* Mesa's on-disk shader cache for compiled fragment shaders, keyed like
  * llvmpipe's: this driver binary, LLVM's, and the CPU the code is for.
- * MESA_SHADER_CACHE_DISABLE turns it off as for every Mesa driver. */
-static void fp_disk_cache_create(struct fp_screen *s)
+ * MESA_SHADER_CACHE_DISABLE turns it off as for every Mesa driver.
+ * Opened at the first compilation (fp_screen_disk_cache): most short
+ * programs never compile a shader, and opening it starts a thread. */
+static void fp_disk_cache_create(const void *data)
 {
+   struct fp_screen *s = (struct fp_screen *)data;
    struct mesa_sha1 ctx;
    unsigned char sha1[20];
    char id[20 * 2 + 1];
@@ -284,6 +287,12 @@ static void fp_disk_cache_create(struct fp_screen *s)
    _mesa_sha1_final(&ctx, sha1);
    disk_cache_format_hex_id(id, sha1, 20 * 2);
    s->disk_cache = disk_cache_create("fixpipe", id, 0);
+}
+
+struct disk_cache *fp_screen_disk_cache(struct fp_screen *s)
+{
+   util_call_once_data(&s->disk_cache_once, fp_disk_cache_create, s);
+   return s->disk_cache;
 }
 
 static void fp_destroy_screen(struct pipe_screen *screen)
@@ -337,10 +346,10 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
       return NULL;
 
    s->winsys = winsys;
+   s->disk_cache_once = (util_once_flag)UTIL_ONCE_FLAG_INIT;
    /* gallivm's CPU detection and LLVM set-up, for compiled shaders */
    if (!(fp_env_debug() & FP_DEBUG_NOJIT)) {
       lp_build_init();
-      fp_disk_cache_create(s);
    }
    s->profile = fp_env_profile();
    if (!s->profile) {

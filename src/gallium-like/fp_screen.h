@@ -2,6 +2,7 @@
 #define FP_SCREEN_H
 
 #include "pipe/p_screen.h"
+#include "util/u_call_once.h"
 #include "rast/rast.h"
 
 struct sw_winsys;
@@ -10,7 +11,10 @@ struct disk_cache;
 struct fp_screen {
    struct pipe_screen base;
    struct sw_winsys *winsys;
-   struct disk_cache *disk_cache;   /* compiled fragment shaders (fp_jit_fs.c); NULL: none */
+   /* compiled fragment shaders (fp_jit_fs.c), opened at the first
+    * compilation: fp_screen_disk_cache(); NULL: none */
+   struct disk_cache *disk_cache;
+   util_once_flag disk_cache_once;
    const struct rast_profile *profile;
    char name[64];
 };
@@ -19,6 +23,9 @@ static inline struct fp_screen *fp_screen(struct pipe_screen *s)
 {
    return (struct fp_screen *)s;
 }
+
+/* The on-disk shader cache, opened at the first call (NULL: none). */
+struct disk_cache *fp_screen_disk_cache(struct fp_screen *s);
 
 /* FIXPIPE_* environment, parsed once per process; bad values are reported
  * once on stderr with the accepted values. */

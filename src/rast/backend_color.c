@@ -161,10 +161,75 @@ static inline void store8_masked(const struct rast_cbuf_plan *p, int x, int y, u
  * targets with all channels written: each factor is k0 + k1 * As, so one
  * loop without branches covers them; the arithmetic is that of blend_quad
  * (s * (0 + 1 * a) == s * a and 1 + -1 * a == 1 - a exactly). */
+/* The same on a full quad, the four pixels on four lanes: each lane the
+ * loop's operations above in their order, so the same bits (the scalar
+ * loop is the reference: RAST_OPT_SCALAR, and test_backend holds the two
+ * to each other).  A pixel is its 32-bit word, a channel the byte at its
+ * offset. */
+typedef float v4f __attribute__((vector_size(16)));
+typedef int32_t v4i __attribute__((vector_size(16)));
+typedef uint32_t v4u __attribute__((vector_size(16)));
+
+static inline v4f splat4(float v)
+{
+   return (v4f){ v, v, v, v };
+}
+
+static inline v4f clamp01_4(v4f v)                  /* rast_clamp01 */
+{
+   v = (v4f)((v4i)v & (v > splat4(0.0f)));          /* NaN and -0 to +0 */
+   const v4i below = v < splat4(1.0f);
+   return (v4f)(((v4i)v & below) | ((v4i)splat4(1.0f) & ~below));
+}
+
+static inline v4u f2ub4(v4f f)                      /* rast_f2ub, in the low byte */
+{
+   return (v4u)(clamp01_4(f) * splat4(255.0f / 256.0f) + splat4(32768.0f)) & 0xff;
+}
+
+static inline v4f ub2f4(v4u words, unsigned byte)   /* rast_ub2f of each word's byte */
+{
+   return __builtin_convertvector((v4i)((words >> (8 * byte)) & 0xff), v4f) *
+          splat4(1.0f / 255.0f);
+}
+
+static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y,
+                                    const float (*src)[RAST_QUAD_SIZE],
+                                    unsigned r, unsigned g, unsigned b, unsigned a, bool x8)
+{
+   const float (*k)[2] = (const float (*)[2])p->affine;
+   const unsigned off[3] = { r, g, b };
+   uint8_t *row0 = cpixel(p, x, y), *row1 = cpixel(p, x, y + 1);
+   uint32_t px[RAST_QUAD_SIZE];
+   memcpy(&px[0], row0, 8);
+   memcpy(&px[2], row1, 8);
+   v4u d, out;
+   v4f s[4];
+   memcpy(&d, px, sizeof(d));
+   memcpy(s, src, sizeof(s));
+   const v4f sa = clamp01_4(s[3]);
+   const v4f fs = splat4(k[0][0]) + splat4(k[0][1]) * sa,
+             fd = splat4(k[1][0]) + splat4(k[1][1]) * sa;
+   if (x8)
+      out = (v4u){ 255, 255, 255, 255 } << (8 * a);
+   else
+      out = f2ub4(sa * (splat4(k[2][0]) + splat4(k[2][1]) * sa) +
+                  ub2f4(d, a) * (splat4(k[3][0]) + splat4(k[3][1]) * sa)) << (8 * a);
+   for (unsigned c = 0; c < 3; c++)
+      out |= f2ub4(clamp01_4(s[c]) * fs + ub2f4(d, off[c]) * fd) << (8 * off[c]);
+   memcpy(px, &out, sizeof(out));
+   memcpy(row0, &px[0], 8);
+   memcpy(row1, &px[2], 8);
+}
+
 static inline void c8_blend_affine(const struct rast_cbuf_plan *p, int x, int y, unsigned mask,
                                    const float (*src)[RAST_QUAD_SIZE],
                                    unsigned r, unsigned g, unsigned b, unsigned a, bool x8)
 {
+   if (mask == 0xf && p->quad4) {
+      c8_blend_affine4(p, x, y, src, r, g, b, a, x8);
+      return;
+   }
    const float (*k)[2] = (const float (*)[2])p->affine;
    const unsigned off[3] = { r, g, b };
    for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
@@ -348,6 +413,7 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       p->store = t->store;
       p->clamp = t->clamp;
       p->colormask = bt->colormask & 0xf;
+      p->quad4 = !(rc->opts & RAST_OPT_SCALAR);
       p->bt = *bt;
       p->src = src;
 

@@ -263,6 +263,7 @@ static void tex_begin(struct rast_front *fr, int64_t x, int64_t y)
    t->bn[0] = t->e1x * py - t->e1y * px;
    t->an[1] = t->an[0] + t->a_dy;
    t->bn[1] = t->bn[0] + t->b_dy;
+   t->pending = false;
 }
 
 /* The numerators' registers moved on to the next quad. */
@@ -337,32 +338,55 @@ tex_quad_impl(struct rast_front *fr, struct rast_quad *q, bool divide, const enu
    t->st.flush += ls.flush;
 }
 
-static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divide)
+static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divide,
+                           bool divide_next)
 {
+   (void)divide_next;
    tex_quad_impl(fr, q, divide, TEX_DFX19);
 }
 
-static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, bool divide)
+/* With the skips taken, two quads of a row that both divide are divided
+ * together (persp2_dfx19), the second one's planes kept for its turn. */
+static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, bool divide,
+                                 bool divide_next)
 {
-   if (divide)
+   struct fr_tex *t = &fr->tex;
+   if (t->pending) {
+      float *in = &q->in[0][0][0];
+      for (unsigned i = t->w_const ? 0 : 1; i < t->ln; i++)
+         memcpy(in + t->lout[i], t->next + t->lout[i], sizeof(float[RAST_QUAD_SIZE]));
+      for (unsigned i = 0; i < t->n_const; i++)
+         memcpy(in + t->cout[i], t->next + t->cout[i], sizeof(float[RAST_QUAD_SIZE]));
+      t->pending = false;
+   } else if (divide && divide_next && t->skip) {
+      rast_lanes()->persp2_dfx19(fr, &q->in[0][0][0], t->next);
+      t->pending = true;
+   } else if (divide) {
       rast_lanes()->persp_dfx19(fr, q);
-   tex_numerators_next(&fr->tex);
+   }
+   tex_numerators_next(t);
 }
 
 /* The reference for binary32: tex_quad_float must give its bits and range
  * events (test_persp_fast). */
-static void tex_quad_float_ref(struct rast_front *fr, struct rast_quad *q, bool divide)
+static void tex_quad_float_ref(struct rast_front *fr, struct rast_quad *q, bool divide,
+                               bool divide_next)
 {
+   (void)divide_next;
    tex_quad_impl(fr, q, divide, TEX_FLOAT);
 }
 
-static void tex_quad_dfx(struct rast_front *fr, struct rast_quad *q, bool divide)
+static void tex_quad_dfx(struct rast_front *fr, struct rast_quad *q, bool divide,
+                         bool divide_next)
 {
+   (void)divide_next;
    tex_quad_impl(fr, q, divide, TEX_DFX);
 }
 
-static void tex_quad_ns(struct rast_front *fr, struct rast_quad *q, bool divide)
+static void tex_quad_ns(struct rast_front *fr, struct rast_quad *q, bool divide,
+                        bool divide_next)
 {
+   (void)divide_next;
    tex_quad_impl(fr, q, divide, TEX_NS);
 }
 
@@ -383,8 +407,10 @@ static inline void tex_fplane4(const struct fr_plane *p, const float a[RAST_QUAD
       v[i] = (p->v0.f + a[i] * p->d1.f) + b[i] * p->d2.f;
 }
 
-static void tex_quad_float(struct rast_front *fr, struct rast_quad *q, bool divide)
+static void tex_quad_float(struct rast_front *fr, struct rast_quad *q, bool divide,
+                           bool divide_next)
 {
+   (void)divide_next;
    struct fr_tex *t = &fr->tex;
    int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
    tex_numerators(t, an, bn);
@@ -649,7 +675,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          }
       }
       if (has_persp) {
-         fr->tex.quad(fr, q, mask != 0);
+         const unsigned next = x + 2 <= xe ? span_bits(r0, x + 2) | (span_bits(r1, x + 2) << 2) : 0;
+         fr->tex.quad(fr, q, mask != 0, next != 0);
          fr->tex.n_divided += mask != 0;
       }
       if (!mask)

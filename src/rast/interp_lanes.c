@@ -37,98 +37,134 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
    to->flush += ev.flush * times;
 }
 
-/* The quad; `optimistic` (dfx_lanes.h): false, leaving nothing counted,
- * when a lane had a range event.  `n`: the planes evaluated per pixel
- * (t->ln), a constant in the common cases so that the planes stay in
- * registers. */
+/* `nq` quads (1, or 2 side by side on a row: their operations interleave,
+ * each quad's chain of dependent operations being long and the two
+ * independent), each lane a pixel's operations as the scalar path does
+ * them; quad k's planes go to in[k] + the component's offset.
+ * `optimistic` (dfx_lanes.h): false, leaving nothing counted, when a lane
+ * had a range event.  `n`: the planes evaluated per pixel (t->ln), a
+ * constant in the common cases so that the planes stay in registers. */
 static inline __attribute__((always_inline)) bool
-persp(struct rast_front *fr, struct rast_quad *q, const dfxl_i *an, const dfxl_i *bn,
-      const bool optimistic, const unsigned n)
+persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *bn,
+      const bool optimistic, const unsigned n, const unsigned nq)
 {
    struct fr_tex *t = &fr->tex;
    struct dfxl_stats st = DFXL_STATS(optimistic);
-   const dfxl_i nA = *an, nB = *bn;
    const struct dfxl rdet = splat(t->lrdet);
-   const struct dfxl a = dfxl_mul(dfxl_from_fixed(nA, (int)t->k, &st), rdet, &st);
-   const struct dfxl b = dfxl_mul(dfxl_from_fixed(nB, (int)t->k, &st), rdet, &st);
+   struct dfxl a[2], b[2];
+   for (unsigned k = 0; k < nq; k++)
+      a[k] = dfxl_mul(dfxl_from_fixed(an[k], (int)t->k, &st), rdet, &st);
+   for (unsigned k = 0; k < nq; k++)
+      b[k] = dfxl_mul(dfxl_from_fixed(bn[k], (int)t->k, &st), rdet, &st);
 
-   struct dfxl v[1 + FR_MAX_COMP], u[1 + FR_MAX_COMP];
+   struct dfxl v[2][1 + FR_MAX_COMP], u[2][1 + FR_MAX_COMP];
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxl_mul(a, splat(t->lv[t->lidx[i]][1]), &st);
+      for (unsigned k = 0; k < nq; k++)
+         v[k][i] = dfxl_mul(a[k], splat(t->lv[t->lidx[i]][1]), &st);
    for (unsigned i = 0; i < n; i++)
-      u[i] = dfxl_mul(b, splat(t->lv[t->lidx[i]][2]), &st);
+      for (unsigned k = 0; k < nq; k++)
+         u[k][i] = dfxl_mul(b[k], splat(t->lv[t->lidx[i]][2]), &st);
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxl_add(splat(t->lv[t->lidx[i]][0]), v[i], &st);
+      for (unsigned k = 0; k < nq; k++)
+         v[k][i] = dfxl_add(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxl_add(v[i], u[i], &st);
+      for (unsigned k = 0; k < nq; k++)
+         v[k][i] = dfxl_add(v[k][i], u[k][i], &st);
 
-   struct dfxl w;
+   struct dfxl w[2];
    unsigned first = 0;
-   if (t->w_const) {
-      w = splat(t->lw);
-   } else {
-      w = dfxl_recip(v[0], &st);
+   for (unsigned k = 0; k < nq; k++)
+      w[k] = t->w_const ? splat(t->lw) : dfxl_recip(v[k][0], &st);
+   if (!t->w_const)
       first = 1;
-   }
-   float *in = &q->in[0][0][0];
-   for (unsigned i = first; i < n; i++) {
-      if (!t->w_one)
-         v[i] = dfxl_mul(v[i], w, &st);
-      dfxl_to_float(v[i], in + t->lout[i]);
-   }
-   for (unsigned i = 0; i < t->n_const; i++) {
-      float *o = in + t->cout[i];
-      if (t->w_const) {
-         for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-            o[p] = t->cval[i];
-      } else {
-         dfxl_to_float(dfxl_mul(splat(t->lv[t->cidx[i]][0]), w, &st), o);
+   for (unsigned i = first; i < n; i++)
+      for (unsigned k = 0; k < nq; k++) {
+         if (!t->w_one)
+            v[k][i] = dfxl_mul(v[k][i], w[k], &st);
+         dfxl_to_float(v[k][i], in[k] + t->lout[i]);
       }
-   }
+   for (unsigned i = 0; i < t->n_const; i++)
+      for (unsigned k = 0; k < nq; k++) {
+         float *o = in[k] + t->cout[i];
+         if (t->w_const) {
+            for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+               o[p] = t->cval[i];
+         } else {
+            dfxl_to_float(dfxl_mul(splat(t->lv[t->cidx[i]][0]), w[k], &st), o);
+         }
+      }
    if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
    /* the events of the values computed once per primitive, for every pixel */
    if (t->w_const) {
-      count(&t->dst, t->const_ev, RAST_QUAD_SIZE);
-      t->n_const_w++;
+      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
+      t->n_const_w += nq;
    }
-   t->n_const_comp += t->n_const;
+   t->n_const_comp += t->n_const * nq;
    dfxl_stats_add(&t->dst, st);
    return true;
 }
 
-/* The optimistic quad for the common plane counts. */
+/* The optimistic quads for the common plane counts. */
 #define PERSP_N(nn)                                                                           \
-   static bool persp_##nn(struct rast_front *fr, struct rast_quad *q, const dfxl_i *an,      \
-                          const dfxl_i *bn)                                                   \
+   static bool persp_##nn(struct rast_front *fr, float *const in[2], const dfxl_i an[2],     \
+                          const dfxl_i bn[2], unsigned nq)                                    \
    {                                                                                          \
-      return persp(fr, q, an, bn, true, nn);                                                  \
+      return nq == 2 ? persp(fr, in, an, bn, true, nn, 2) : persp(fr, in, an, bn, true, nn, 1); \
    }
 PERSP_N(1)
 PERSP_N(2)
 PERSP_N(3)
 PERSP_N(4)
 
-/* The quad's numerators are built here from the registers, as vectors:
- * written as four numbers and read as one vector they would wait on the
- * processor's store forwarding. */
+static bool persp_optimistic(struct rast_front *fr, float *const in[2], const dfxl_i an[2],
+                             const dfxl_i bn[2], unsigned nq)
+{
+   switch (fr->tex.ln) {
+   case 1: return persp_1(fr, in, an, bn, nq);
+   case 2: return persp_2(fr, in, an, bn, nq);
+   case 3: return persp_3(fr, in, an, bn, nq);
+   case 4: return persp_4(fr, in, an, bn, nq);
+   default:
+      return nq == 2 ? persp(fr, in, an, bn, true, fr->tex.ln, 2)
+                     : persp(fr, in, an, bn, true, fr->tex.ln, 1);
+   }
+}
+
+/* The numerators of the quad `step` quads on from the registers' (pixels
+ * x, x+1 of both scan lines), built here as vectors: written as four
+ * numbers and read as one vector they would wait on the processor's store
+ * forwarding.  The sums are the registers' own steps (tex_numerators). */
+static inline void numerators(const struct fr_tex *t, unsigned step, dfxl_i *an, dfxl_i *bn)
+{
+   const int64_t a0 = t->an[0] + step * 2 * t->a_dx, a1 = t->an[1] + step * 2 * t->a_dx;
+   const int64_t b0 = t->bn[0] + step * 2 * t->b_dx, b1 = t->bn[1] + step * 2 * t->b_dx;
+   *an = (dfxl_i){ a0, a0 + t->a_dx, a1, a1 + t->a_dx };
+   *bn = (dfxl_i){ b0, b0 + t->b_dx, b1, b1 + t->b_dx };
+}
+
 void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q)
 {
    struct fr_tex *t = &fr->tex;
-   const dfxl_i an = { t->an[0], t->an[0] + t->a_dx, t->an[1], t->an[1] + t->a_dx };
-   const dfxl_i bn = { t->bn[0], t->bn[0] + t->b_dx, t->bn[1], t->bn[1] + t->b_dx };
-   const unsigned n = t->ln;
-   if (t->skip) {
-      bool done;
-      switch (n) {
-      case 1: done = persp_1(fr, q, &an, &bn); break;
-      case 2: done = persp_2(fr, q, &an, &bn); break;
-      case 3: done = persp_3(fr, q, &an, &bn); break;
-      case 4: done = persp_4(fr, q, &an, &bn); break;
-      default: done = persp(fr, q, &an, &bn, true, n); break;
-      }
-      if (done)
-         return;
-   }
-   persp(fr, q, &an, &bn, false, n);
+   dfxl_i an[2], bn[2];
+   float *const in[2] = { &q->in[0][0][0], NULL };
+   numerators(t, 0, &an[0], &bn[0]);
+   if (t->skip && persp_optimistic(fr, in, an, bn, 1))
+      return;
+   persp(fr, in, an, bn, false, t->ln, 1);
+}
+
+void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
+{
+   struct fr_tex *t = &fr->tex;
+   dfxl_i an[2], bn[2];
+   float *const in[2] = { in0, in1 };
+   numerators(t, 0, &an[0], &bn[0]);
+   numerators(t, 1, &an[1], &bn[1]);
+   if (persp_optimistic(fr, in, an, bn, 2))
+      return;
+   /* a range event in one of them: each the careful way */
+   float *const in_0[2] = { in0, NULL }, *const in_1[2] = { in1, NULL };
+   persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
+   persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
 }

@@ -22,6 +22,11 @@ struct rast_lanes {
     * the caller then moves on; the COLOR components of the wide profile
     * stay scalar. */
    void (*persp_dfx19)(struct rast_front *fr, struct rast_quad *q);
+   /* The same, optimistic (the skips taken), for that quad and the next
+    * one on the row together: their planes at the component offsets from
+    * in0 and in1 (rast_quad.in's layout).  The caller moves the registers
+    * on by one quad after each. */
+   void (*persp2_dfx19)(struct rast_front *fr, float *in0, float *in1);
    /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
     * rectangle), specialised for the unit's state; `nolod`: the one that
     * leaves out the LOD (tex_unit_lod_unused); `noskip`: the one that

@@ -23,7 +23,9 @@
  * main context's.  The sums are the one-thread counts.
  *
  * Small batches, where waking the workers costs more than it saves, are
- * drawn on the calling thread alone, which owns every band for them.
+ * drawn on the calling thread alone, which owns every band for them.  The
+ * workers start with the first batch that is not small: a short program
+ * (a conformance test draws a few small images) never starts them.
  */
 #include <fenv.h>
 #include <math.h>
@@ -37,8 +39,9 @@
 /* Below this many pixels of bounding boxes a batch is drawn on one
  * thread (docs/threads.md). */
 #define RAST_PARALLEL_MIN_PIXELS 4096
-/* How long an idle worker polls for the next batch before it sleeps:
- * a draw's next batch usually follows within microseconds. */
+/* How long a worker that has just drawn a batch polls for the next one
+ * before it sleeps: a draw's next batch usually follows within
+ * microseconds. */
 #define RAST_SPIN_POLLS 20000
 
 struct rast_prim {
@@ -52,9 +55,13 @@ struct rast_prim {
 
 struct rast_pool {
    unsigned n;
+   /* the workers' threads: started with the first batch drawn on all
+    * (pool_start); if one cannot be, every batch is drawn on the caller */
+   bool started, serial_only;
    struct rast_context *ctx[RAST_MAX_THREADS];   /* [0]: the main context */
    unsigned long synced[RAST_MAX_THREADS];       /* state_serial last copied */
    pthread_t thread[RAST_MAX_THREADS];
+   bool thread_live[RAST_MAX_THREADS];
 
    struct rast_prim *prim;
    size_t nprim, cap;
@@ -178,10 +185,11 @@ static void *worker_main(void *data)
    const unsigned t = arg->t;
    free(arg);
    unsigned long seen = 0;
+   unsigned polls = 0;          /* none before the first batch */
 
    for (;;) {
       unsigned long b = atomic_load_explicit(&pool->batch, memory_order_acquire);
-      for (unsigned i = 0; b == seen && i < RAST_SPIN_POLLS &&
+      for (unsigned i = 0; b == seen && i < polls &&
            !atomic_load_explicit(&pool->quit, memory_order_relaxed); i++) {
          cpu_relax();
          b = atomic_load_explicit(&pool->batch, memory_order_acquire);
@@ -196,6 +204,7 @@ static void *worker_main(void *data)
       if (atomic_load(&pool->quit))
          return NULL;
       seen = b;
+      polls = RAST_SPIN_POLLS;
 
       fesetenv(&pool->fenv);
       draw_share(pool->ctx[t], pool);
@@ -241,13 +250,49 @@ static void stats_add(struct rast_stats *to, struct rast_stats *from)
    memset(from, 0, sizeof(*from));
 }
 
+/* The workers' threads stopped and joined. */
+static void pool_stop(struct rast_pool *pool)
+{
+   pthread_mutex_lock(&pool->mtx);
+   atomic_store(&pool->quit, true);
+   pthread_cond_broadcast(&pool->go);
+   pthread_mutex_unlock(&pool->mtx);
+   for (unsigned t = 1; t < pool->n; t++)
+      if (pool->thread_live[t])
+         pthread_join(pool->thread[t], NULL);
+   memset(pool->thread_live, 0, sizeof(pool->thread_live));
+   atomic_store(&pool->quit, false);
+   pool->started = false;
+}
+
+/* Whether the workers run, started now if need be. */
+static bool pool_start(struct rast_pool *pool)
+{
+   if (pool->started || pool->serial_only)
+      return pool->started;
+   for (unsigned t = 1; t < pool->n; t++) {
+      struct rast_worker_arg *arg = malloc(sizeof(*arg));
+      if (arg)
+         *arg = (struct rast_worker_arg){ pool, t };
+      if (!arg || pthread_create(&pool->thread[t], NULL, worker_main, arg) != 0) {
+         free(arg);
+         pool_stop(pool);
+         pool->serial_only = true;
+         return false;
+      }
+      pool->thread_live[t] = true;
+   }
+   pool->started = true;
+   return true;
+}
+
 void rast_flush(struct rast_context *rc)
 {
    struct rast_pool *pool = rc->pool;
    if (!pool || !pool->nprim)
       return;
 
-   if (pool->pixels < RAST_PARALLEL_MIN_PIXELS) {
+   if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
       draw_share(rc, pool);
       pool->drawn_serial += pool->nprim;
       pool->nprim = 0;
@@ -324,14 +369,9 @@ static void pool_destroy(struct rast_context *rc)
    if (!pool)
       return;
    rast_flush(rc);
-   pthread_mutex_lock(&pool->mtx);
-   atomic_store(&pool->quit, true);
-   pthread_cond_broadcast(&pool->go);
-   pthread_mutex_unlock(&pool->mtx);
-   for (unsigned t = 1; t < pool->n; t++) {
-      pthread_join(pool->thread[t], NULL);
+   pool_stop(pool);
+   for (unsigned t = 1; t < pool->n; t++)
       rast_destroy(pool->ctx[t]);
-   }
    pthread_mutex_destroy(&pool->mtx);
    pthread_cond_destroy(&pool->go);
    pthread_cond_destroy(&pool->done);
@@ -363,24 +403,14 @@ bool rast_set_threads(struct rast_context *rc, unsigned n)
    rc->pool = pool;
    for (unsigned t = 1; t < n; t++) {
       struct rast_context *w = rast_create(rc->profile);
-      struct rast_worker_arg *arg = malloc(sizeof(*arg));
-      if (!w || !arg) {
-         rast_destroy(w);
-         free(arg);
+      if (!w) {
          pool_destroy(rc);
          return false;
       }
       w->band_index = t;
       w->band_count = n;
-      *arg = (struct rast_worker_arg){ pool, t };
       pool->ctx[t] = w;
       pool->synced[t] = rc->state_serial - 1;
-      if (pthread_create(&pool->thread[t], NULL, worker_main, arg) != 0) {
-         rast_destroy(w);
-         free(arg);
-         pool_destroy(rc);
-         return false;
-      }
       pool->n = t + 1;
    }
    rc->band_index = 0;

@@ -1036,6 +1036,81 @@ static void test_blend(void)
           failures == before ? "ok" : "FAILED");
 }
 
+/* The usual alpha blends on 8-bit targets, full quads on four lanes
+ * (backend_color.c's c8_blend_affine4) against the per-pixel loop
+ * (RAST_OPT_SCALAR): the same bytes, for every factor of the affine set
+ * on each of rgb/alpha src/dst, sources with NaN, -0, infinities and
+ * values outside [0, 1], every destination byte. */
+static float rnd_special(void)
+{
+   static const float special[] = { 0.0f, -0.0f, 1.0f, 0.5f, NAN, INFINITY, -INFINITY,
+                                    1.0f / 510.0f, 0.99999994f, 1.00000012f, -1e-30f };
+   return rnd(4) ? rndf(-0.25f, 1.25f) : special[rnd(sizeof(special) / sizeof(special[0]))];
+}
+
+static void test_affine_lanes(void)
+{
+   static struct color_ctx cc[2];
+   static const enum rast_blend_factor fac[] = { RAST_BF_ZERO, RAST_BF_ONE, RAST_BF_SRC_ALPHA,
+                                                 RAST_BF_INV_SRC_ALPHA };
+   const unsigned before = failures;
+   unsigned quads = 0;
+   for (unsigned fi = 0; fi < 3; fi++) {
+      const enum tfmt f = (enum tfmt)fi;         /* RGBA8, BGRA8, BGRX8 */
+      for (unsigned combo = 0; combo < 256; combo++) {
+         struct rast_context *rc[2];
+         struct rast_blend_state bs;
+         memset(&bs, 0, sizeof bs);
+         struct rast_blend_target *bt = &bs.rt[0];
+         bt->blend_enable = true;
+         bt->colormask = 0xf;
+         bt->rgb_eq = bt->alpha_eq = RAST_BLEND_ADD;
+         bt->rgb_src = fac[combo & 3];
+         bt->rgb_dst = fac[(combo >> 2) & 3];
+         bt->alpha_src = fac[(combo >> 4) & 3];
+         bt->alpha_dst = fac[combo >> 6];
+         for (unsigned m = 0; m < 2; m++) {
+            rc[m] = rast_create(profile_named("seed"));
+            rast_set_options(rc[m], m ? RAST_OPT_SCALAR : 0);
+            memset(&cc[m].sd, 0, sizeof cc[m].sd);
+            cc[m].sd.keep = 0xf;
+            struct rast_framebuffer fb;
+            memset(&fb, 0, sizeof fb);
+            fb.width = W; fb.height = H; fb.nr_cbufs = 1;
+            fb.cbuf[0] = cc[m].t[0] = make_cbuf(f, cc[m].mem[0]);
+            rast_set_framebuffer(rc[m], &fb);
+            rast_set_blend(rc[m], &bs);
+            struct rast_shader fs = make_shader(&cc[m].sd, 1, false, false, false);
+            rast_set_shader(rc[m], &fs);
+            rast_validate(rc[m]);
+         }
+         color_fill_random(&cc[0], 0, f);
+         memcpy(cc[1].mem[0], cc[0].mem[0], CBUF_BYTES);
+         for (unsigned rep = 0; rep < 64; rep++) {
+            struct rast_quad q;
+            memset(&q, 0, sizeof q);
+            q.x = 2 * (int)rnd(W / 2);
+            q.y = 2 * (int)rnd(H / 2);
+            q.mask = rnd(4) ? 0xf : 1 + rnd(15);
+            for (unsigned c = 0; c < 4; c++)
+               for (unsigned i = 0; i < 4; i++)
+                  cc[0].sd.color[0][c][i] = rnd_special();
+            cc[1].sd = cc[0].sd;
+            rc[0]->quad(rc[0], &q);
+            rc[1]->quad(rc[1], &q);
+            quads++;
+         }
+         CHECK(memcmp(cc[0].mem[0], cc[1].mem[0], CBUF_BYTES) == 0,
+               "%s affine blend src %u/%u dst %u/%u: lanes and scalar differ", tfmt_name[f],
+               bt->rgb_src, bt->alpha_src, bt->rgb_dst, bt->alpha_dst);
+         rast_destroy(rc[0]);
+         rast_destroy(rc[1]);
+      }
+   }
+   printf("affine blend on lanes: %u quads against the scalar loop: %s\n", quads,
+          failures == before ? "ok" : "FAILED");
+}
+
 /* Colour mask, with and without blending, on every format. */
 static void test_colormask(void)
 {
@@ -1522,6 +1597,7 @@ int main(void)
    test_early_late();
    test_ubyte();
    test_blend();
+   test_affine_lanes();
    test_colormask();
    test_color_routing();
    test_no_shader();
