@@ -63,6 +63,17 @@ static enum tgsi_texture_type fp_tgsi_target(const nir_tex_instr *tex)
 
 /* ---------------------------------------------------------------- C side */
 
+/* tgsi_exec's control of a sample's LOD operand, from gallivm's key. */
+static enum tgsi_sampler_control fp_control(unsigned key)
+{
+   switch ((key & LP_SAMPLER_LOD_CONTROL_MASK) >> LP_SAMPLER_LOD_CONTROL_SHIFT) {
+   case LP_SAMPLER_LOD_BIAS: return TGSI_SAMPLER_LOD_BIAS;
+   case LP_SAMPLER_LOD_EXPLICIT: return TGSI_SAMPLER_LOD_EXPLICIT;
+   case LP_SAMPLER_LOD_DERIVATIVES: return TGSI_SAMPLER_DERIVS_EXPLICIT;
+   default: return TGSI_SAMPLER_LOD_NONE;
+   }
+}
+
 static void fp_jit_sample(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
                           uint32_t key, const float coords[5][RAST_QUAD_SIZE],
                           const float lod[RAST_QUAD_SIZE], float derivs[3][2][RAST_QUAD_SIZE],
@@ -109,22 +120,9 @@ static void fp_jit_sample(struct tgsi_sampler *s, uint32_t texture, uint32_t sam
       return;
    }
 
-   enum tgsi_sampler_control control = TGSI_SAMPLER_LOD_NONE;
-   switch (lod_control) {
-   case LP_SAMPLER_LOD_BIAS:
-      control = TGSI_SAMPLER_LOD_BIAS;
+   const enum tgsi_sampler_control control = fp_control(key);
+   if (control == TGSI_SAMPLER_LOD_BIAS || control == TGSI_SAMPLER_LOD_EXPLICIT)
       arg[4] = lod;
-      break;
-   case LP_SAMPLER_LOD_EXPLICIT:
-      control = TGSI_SAMPLER_LOD_EXPLICIT;
-      arg[4] = lod;
-      break;
-   case LP_SAMPLER_LOD_DERIVATIVES:
-      control = TGSI_SAMPLER_DERIVS_EXPLICIT;
-      break;
-   default:
-      break;
-   }
    s->get_samples(s, texture, sampler, arg[0], arg[1], arg[2], arg[3], arg[4],
                   control == TGSI_SAMPLER_DERIVS_EXPLICIT ? derivs : NULL, offset, control, rgba);
 }
@@ -224,20 +222,9 @@ static void fp_load_texel(struct gallivm_state *gallivm, LLVMTypeRef fvec, LLVMV
 static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
 {
    const unsigned op = (key & LP_SAMPLER_OP_TYPE_MASK) >> LP_SAMPLER_OP_TYPE_SHIFT;
-   const unsigned lod = (key & LP_SAMPLER_LOD_CONTROL_MASK) >> LP_SAMPLER_LOD_CONTROL_SHIFT;
    return target == TGSI_TEXTURE_2D && op == LP_SAMPLER_OP_TEXTURE &&
           !(key & (LP_SAMPLER_SHADOW | LP_SAMPLER_OFFSETS)) &&
-          lod != LP_SAMPLER_LOD_DERIVATIVES;
-}
-
-/* tgsi_exec's control of a plain sample's LOD operand. */
-static enum tgsi_sampler_control fp_control(unsigned key)
-{
-   switch ((key & LP_SAMPLER_LOD_CONTROL_MASK) >> LP_SAMPLER_LOD_CONTROL_SHIFT) {
-   case LP_SAMPLER_LOD_BIAS: return TGSI_SAMPLER_LOD_BIAS;
-   case LP_SAMPLER_LOD_EXPLICIT: return TGSI_SAMPLER_LOD_EXPLICIT;
-   default: return TGSI_SAMPLER_LOD_NONE;
-   }
+          fp_control(key) != TGSI_SAMPLER_DERIVS_EXPLICIT;
 }
 
 /* A plain 2-D sample: the struct tex_quad fp_tgsi_get_samples would build,
