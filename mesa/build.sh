@@ -47,9 +47,12 @@ esac
 # short processes slower than without LLVM.
 # Statically linked, the driver has 110,000 relative relocations: packed (DT_RELR, glibc 2.36)
 # their table shrinks from 2.6 MB, read by every process that loads the driver, to kilobytes.
+# mesa/llvm-ctors.ld keeps LLVM's static constructors out of .init_array: gallivm runs them
+# at the first compiled shader (mesa/patches/0006), not the loader in every process.
+LINK_ARGS=-Wl,-z,pack-relative-relocs,-T,$REPO/mesa/llvm-ctors.ld
 OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true
  --native-file=$WORK/llvm.ini -Dllvm=enabled -Dshared-llvm=disabled -Dshader-cache=enabled
- -Dc_link_args=-Wl,-z,pack-relative-relocs -Dcpp_link_args=-Wl,-z,pack-relative-relocs
+ -Dc_link_args=$LINK_ARGS -Dcpp_link_args=$LINK_ARGS
  -Dplatforms=x11 -Dgallium-drivers=$DRIVERS -Dvulkan-drivers=
  -Dglx=dri -Dosmesa=true -Degl=enabled -Dgles1=disabled -Dgles2=enabled
  -Dglvnd=false -Dgbm=disabled -Dshared-glapi=enabled
@@ -58,7 +61,7 @@ OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true
  -Dbuild-tests=false -Dvalgrind=disabled -Dlibunwind=disabled -Dlmsensors=disabled"
 # shellcheck disable=SC2086,SC2116  # one line of words
 sed "s#@REPO@#$REPO#g" "$REPO/mesa/llvm.ini" > "$WORK/llvm.ini"
-stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS) $(cat "$WORK/llvm.ini" "$REPO/mesa/llvm-config")"
+stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS) $(cat "$WORK/llvm.ini" "$REPO/mesa/llvm-config" "$REPO/mesa/llvm-ctors.ld")"
 
 if [ ! -f "$BUILD/.fixpipe-stamp" ] || [ "$(cat "$BUILD/.fixpipe-stamp")" != "$stamp" ]; then
     rm -f "$BUILD/.fixpipe-stamp"

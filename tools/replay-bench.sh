@@ -35,9 +35,10 @@
 # (default: the checked-in trace's build texture phong bump effect2d pulsar desktop
 # jellyfish ideas; "" leaves out the per-scene table).
 # --piglit "gles2 texture" also times `./fixpipe piglit LIST` through fixpipe, and with
-# --before the same list through the other checkout's launcher and build, in this run;
-# --piglit-runs N (default 1) runs each N times, the two trees alternating, and prints the
-# medians (a list of short processes is noisy on a shared machine).
+# --before the same list through the other checkout's launcher and build, and through this
+# launcher (this tree's piglit runner) with the other checkout's build: the driver alone
+# compared; --piglit-runs N (default 1) runs each N times, the three alternating, and prints
+# the medians (a list of short processes is noisy on a shared machine).
 # The median of --runs runs (default 1) is printed; every run's figures are in
 # OUT/results.tsv (default out/replay-bench).
 set -euo pipefail
@@ -229,8 +230,8 @@ fi
 # piglit lists: wall time of the whole `./fixpipe piglit LIST` (its own expectations
 # decide the exit status, printed as is)
 echo
-echo "| piglit list (fixpipe) | runs | this tree, median (s) | exit statuses | before, median (s) | exit statuses |"
-echo "|---|---:|---:|---:|---:|---:|"
+echo "| piglit list (fixpipe) | runs | this tree, median (s) | exit statuses | before, median (s) | exit statuses | before's build with this runner, median (s) | exit statuses |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 # list_time DIR WORK LIST LOG: one `./fixpipe piglit LIST` of the checkout DIR with the
 # build in WORK; prints "SECONDS EXIT"
 list_time() {
@@ -247,13 +248,18 @@ for l in $piglit_lists; do
         [ -z "$before" ] ||
             echo "before $(list_time "$before" "$before/.fixpipe" "$l" "$out/piglit-$l.$r.before.log")" \
                 >> "$out/piglit-$l.times"
+        [ -z "$before" ] ||
+            echo "driver $(list_time "$root" "$before/.fixpipe" "$l" "$out/piglit-$l.$r.driver.log")" \
+                >> "$out/piglit-$l.times"
     done
     a=$(awk '$1 == "this" { print $2 }' "$out/piglit-$l.times" | median)
     ea=$(awk '$1 == "this" { print $3 }' "$out/piglit-$l.times" | paste -sd, -)
-    b=n/a eb=""
+    b=n/a eb="" d=n/a ed=""
     if [ -n "$before" ]; then
         b=$(awk '$1 == "before" { print $2 }' "$out/piglit-$l.times" | median)
         eb=$(awk '$1 == "before" { print $3 }' "$out/piglit-$l.times" | paste -sd, -)
+        d=$(awk '$1 == "driver" { print $2 }' "$out/piglit-$l.times" | median)
+        ed=$(awk '$1 == "driver" { print $3 }' "$out/piglit-$l.times" | paste -sd, -)
     fi
-    echo "| $l | $piglit_runs | $a | $ea | $b | $eb |"
+    echo "| $l | $piglit_runs | $a | $ea | $b | $eb | $d | $ed |"
 done

@@ -36,6 +36,18 @@ static const struct rast_stats *fp_stats(const struct fp_context *fp)
    return rast_get_stats(fp->rast);
 }
 
+LLVMContextRef fp_llvm_context(struct fp_context *fp)
+{
+   if (!fp->llvm_context && fp->jit && lp_build_init()) {
+      fp->llvm_context = LLVMContextCreate();
+#if LLVM_VERSION_MAJOR >= 15
+      if (fp->llvm_context)
+         LLVMContextSetOpaquePointers(fp->llvm_context, false);
+#endif
+   }
+   return fp->llvm_context;
+}
+
 void fp_context_frame_presented(struct fp_context *fp)
 {
    fp->frames++;
@@ -79,7 +91,7 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
            "; vertex shaders compiled %" PRIu64 "\n",
-           fp->llvm_context ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
+           fp->jit ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
            quads_jit, quads_interp, fp->jit_stats.vs_compiled);
    fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64 "\n",
@@ -114,11 +126,11 @@ static void fp_destroy(struct pipe_context *pipe)
       if (th->mach)
          tgsi_exec_machine_destroy(th->mach);
       if (t > 0)
-         FREE(th->sampler);
+         fp_tgsi_sampler_destroy(th->sampler);
    }
    FREE(fp->fs_thread);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
-      FREE(fp->tgsi_sampler[sh]);
+      fp_tgsi_sampler_destroy(fp->tgsi_sampler[sh]);
    if (fp->pipe.stream_uploader)
       u_upload_destroy(fp->pipe.stream_uploader);
    if (fp->rast)
@@ -231,16 +243,13 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
          goto fail;
    }
 
-   /* Compiled shaders: draw's LLVM vertex path and fixpipe's fragment
-    * shaders share one LLVM context, as in llvmpipe. */
-   if (!(fp_env_debug() & FP_DEBUG_NOJIT)) {
-      fp->llvm_context = LLVMContextCreate();
-      if (!fp->llvm_context)
-         goto fail;
-#if LLVM_VERSION_MAJOR >= 15
-      LLVMContextSetOpaquePointers(fp->llvm_context, false);
-#endif
-      fp->draw = draw_create_with_llvm_context(&fp->pipe, fp->llvm_context);
+   /* Compiled shaders: draw's LLVM vertex path and fixpipe's fragment shaders.
+    * Each makes its LLVM context with its first compiled shader (draw's own,
+    * fp_llvm_context), so a process that never compiles one, as most of a
+    * conformance run's do not, never initializes LLVM. */
+   fp->jit = !(fp_env_debug() & FP_DEBUG_NOJIT);
+   if (fp->jit) {
+      fp->draw = draw_create(&fp->pipe);
    } else {
       fp->draw = draw_create_no_llvm(&fp->pipe);
    }

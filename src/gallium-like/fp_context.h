@@ -119,7 +119,10 @@ struct fp_context {
    unsigned num_threads;
    struct fp_fs_thread *fs_thread;
 
-   /* Compiled fragment shading (fp_jit*.c); NULL context with FIXPIPE_DEBUG=nojit. */
+   /* Compiled shaders (fp_jit*.c) allowed: not FIXPIPE_DEBUG=nojit. */
+   bool jit;
+   /* Their LLVM context, made with the first (fp_llvm_context): a process that
+    * never compiles a shader never initializes LLVM. */
    LLVMContextRef llvm_context;
    struct {
       uint64_t compiled, failed;
@@ -160,6 +163,9 @@ void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
 
 /* fp_context.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */
 void fp_context_frame_presented(struct fp_context *fp);
+/* fp_context.c: the LLVM context of compiled fragment shaders, gallivm initialized with the
+ * first; NULL if it cannot be made */
+LLVMContextRef fp_llvm_context(struct fp_context *fp);
 
 /* fp_state_shader.c: vertex shaders, tiered */
 void fp_vs_count(struct fp_context *fp, uint64_t vertices);
@@ -179,6 +185,7 @@ void fp_fs_batch_done(struct fp_context *fp);
 struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                enum pipe_shader_type stage,
                                                struct rast_context *rc);
+void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
 /* A quad whose operands compiled code laid out as tgsi_exec's get_samples
  * would have (fp_jit_sample.c); control is an enum tgsi_sampler_control. */

@@ -113,7 +113,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
    struct fp_fragment_shader *fs = fp->fs;
    if (fs->jit)
       return true;
-   if (!fp->llvm_context || fs->jit_failed)
+   if (!fp->jit || fs->jit_failed)
       return false;
    if (fs->quads_interpreted < FP_JIT_HOT_QUADS && !(fp_env_debug() & FP_DEBUG_JITALL))
       return false;
@@ -154,7 +154,7 @@ void fp_fs_batch_done(struct fp_context *fp)
    if (!fs || !n)
       return;
    fs->quads_interpreted += n;
-   if (fs->quads_interpreted >= FP_JIT_HOT_QUADS && !fs->jit && fp->llvm_context &&
+   if (fs->quads_interpreted >= FP_JIT_HOT_QUADS && !fs->jit && fp->jit &&
        !fs->jit_failed)
       fp->fs_dirty = true;
 }

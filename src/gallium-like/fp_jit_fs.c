@@ -374,6 +374,10 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS ||
        !fp_jit_shader_ok(info))
       return NULL;
+   /* gallivm (and LLVM) initialized here, at the process's first compilation */
+   LLVMContextRef llvm_context = fp_llvm_context(fp);
+   if (!llvm_context)
+      return NULL;
    struct fp_jit_variant *v = CALLOC_STRUCT(fp_jit_variant);
    if (!v)
       return NULL;
@@ -404,7 +408,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    }
 
    struct lp_build_sampler_soa *sampler = fp_jit_sampler_create(info, nir);
-   v->gallivm = sampler ? gallivm_create("fixpipe_fs", fp->llvm_context, &cached) : NULL;
+   v->gallivm = sampler ? gallivm_create("fixpipe_fs", llvm_context, &cached) : NULL;
    if (!v->gallivm) {
       free(cached.data);
       FREE(sampler);

@@ -54,7 +54,9 @@ struct fp_tgsi_sampler {
    struct ns_stats stats;
    uint64_t skip_lod;             /* quads sampled without their LOD */
    uint64_t lod_quads;            /* quads with an implicit or biased LOD */
-   struct fp_tex_slot slot[PIPE_MAX_SAMPLERS];
+   /* made at the unit's first binding: 3.7 KB each, 32 a stage, and most
+    * programs sample from a few units of one or two stages */
+   struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
 };
 
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s)
@@ -239,7 +241,18 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
                                           const struct fp_sampler_view *fv,
                                           const struct pipe_sampler_state *ss)
 {
-   struct fp_tex_slot *slot = &ts->slot[index];
+   struct fp_tex_slot *slot = ts->slot[index];
+   if (unlikely(!slot)) {
+      slot = ts->slot[index] = CALLOC_STRUCT(fp_tex_slot);
+      if (!slot) {
+         static bool reported;
+         if (!reported)
+            fprintf(stderr, "fixpipe: out of memory binding texture unit %u: its samples "
+                    "read zero\n", index);
+         reported = true;
+         return NULL;
+      }
+   }
    const void *data = fp_resource(fv->base.texture)->data;
    if (slot->valid && slot->epoch == ts->fp->tex_epoch && slot->view == fv &&
        slot->sampler == ss && slot->data == data && !(fp_env_debug() & FP_DEBUG_NOSKIP))
@@ -458,6 +471,15 @@ static void fp_tgsi_get_texel(struct tgsi_sampler *tgsi_sampler, const unsigned 
       }
    }
    tex_view_texel(&vd, x, y, z, lod, rgba);
+}
+
+void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s)
+{
+   if (!s)
+      return;
+   for (unsigned i = 0; i < PIPE_MAX_SAMPLERS; i++)
+      FREE(s->slot[i]);
+   FREE(s);
 }
 
 struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,

@@ -347,10 +347,6 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
 
    s->winsys = winsys;
    s->disk_cache_once = (util_once_flag)UTIL_ONCE_FLAG_INIT;
-   /* gallivm's CPU detection and LLVM set-up, for compiled shaders */
-   if (!(fp_env_debug() & FP_DEBUG_NOJIT)) {
-      lp_build_init();
-   }
    s->profile = fp_env_profile();
    if (!s->profile) {
       FREE(s);

@@ -109,7 +109,7 @@ static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_sha
       vs->samples = info.file_count[TGSI_FILE_SAMPLER] > 0 ||
                     info.file_count[TGSI_FILE_SAMPLER_VIEW] > 0;
    }
-   if (fp->llvm_context)
+   if (fp->jit)
       vs->draw_vs = draw_create_vertex_shader_exec(fp->draw, &vs->state);
    else
       vs->draw_vs = draw_create_vertex_shader(fp->draw, &vs->state);
@@ -127,7 +127,7 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
 {
    struct fp_vertex_shader *vs = fp->vs;
    vs->vertices += vertices;
-   if (vs->draw_vs_llvm || vs->samples || vs->llvm_failed || !fp->llvm_context ||
+   if (vs->draw_vs_llvm || vs->samples || vs->llvm_failed || !fp->jit ||
        !vs->state.tokens)
       return;
    if (vs->vertices < FP_JIT_HOT_VERTICES && !(fp_env_debug() & FP_DEBUG_JITALL))

@@ -44,8 +44,8 @@ class Case:
                 f.write(text)
         self.out = os.path.join(d, "out")
 
-    def run(self, *extra, via_launcher=False):
-        env = dict(os.environ, FIXPIPE_PIGLIT=FAKE, FIXPIPE_PIGLIT_DIR=os.path.join(
+    def run(self, *extra, via_launcher=False, piglit_dir=None):
+        env = dict(os.environ, FIXPIPE_PIGLIT=FAKE, FIXPIPE_PIGLIT_DIR=piglit_dir or os.path.join(
             self.tmp.name, "no-piglit"), FIXPIPE_PIGLIT_OUT=self.out,
             FIXPIPE_PIGLIT_EXPECTATIONS=self.exp)
         env.pop("DISPLAY", None)
@@ -198,6 +198,47 @@ def test_launcher():
           c.rc == 1 and "FAIL         fake@e@fail-new" in c.output, c.output)
     c = Case(BASE, FAILS, SKIPS, FLAKES).run(via_launcher=True)
     check("./fixpipe piglit: expected results exit 0", c.rc == 0, c.output)
+
+
+PIGLIT = "/usr/lib/x86_64-linux-gnu/piglit"
+
+
+def test_profile_of_the_list():
+    """piglit gets a profile of the list's tests alone, copied from its own profiles, and its
+    own loader reads that profile back as the same tests with the same options."""
+    import gzip
+    c = Case(["fake@p@pass-in-gl", "fake@p@pass-not-in-piglit", "fake@p@pass-in-shader"])
+    d = os.path.join(c.tmp.name, "piglit")
+    os.makedirs(os.path.join(d, "tests"))
+    gl = ('<PiglitTestList count="3" name="quick_gl">'
+          '<Test type="gl" name="fake@p@pass-in-gl"><option name="command" value="[\'a\', \'-fbo\']" />'
+          '<option name="run_concurrent" value="True" /></Test>'
+          '<Test type="gl" name="fake@p@pass-other"><option name="command" value="[\'b\']" />'
+          '<option name="run_concurrent" value="True" /></Test></PiglitTestList>')
+    sh = ('<PiglitTestList count="1" name="quick_shader">'
+          '<Test type="gl" name="fake@p@pass-in-shader"><option name="command" value="[\'c\']" />'
+          '<option name="run_concurrent" value="True" /></Test></PiglitTestList>')
+    for name, text in (("quick_gl", gl), ("quick_shader", sh)):
+        with gzip.open(os.path.join(d, "tests", name + ".xml.gz"), "wt") as f:
+            f.write(text)
+    c.run(piglit_dir=d)
+    got = os.path.join(c.out, "llvmpipe-tiny", "surfaceless", "profile.txt")
+    names = open(got).read().split() if os.path.exists(got) else None
+    check("the profile holds the list's tests that piglit has, nothing else",
+          names == ["fake@p@pass-in-gl", "fake@p@pass-in-shader"], f"{names}\n{c.output}")
+    profile = os.path.join(c.out, "llvmpipe-tiny", "surfaceless.profile.xml.gz")
+    sys.path.insert(0, PIGLIT)
+    try:
+        from framework import profile as piglit_profile
+        loaded = piglit_profile.load_test_profile(profile)
+        tests = dict(loaded.itertests())
+        check("piglit's loader reads it, with each test's command",
+              sorted(tests) == ["fake@p@pass-in-gl", "fake@p@pass-in-shader"]
+              and tests["fake@p@pass-in-gl"].command[0].endswith("/bin/a")
+              and "-fbo" in tests["fake@p@pass-in-gl"].command,
+              f"{type(loaded).__name__} {sorted(tests)} {tests['fake@p@pass-in-gl'].command}")
+    finally:
+        sys.path.remove(PIGLIT)
 
 
 def main():
