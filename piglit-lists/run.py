@@ -329,16 +329,15 @@ def cmd_run(args):
     index = profile_index(to_run)
     parts = {}
     for n in to_run:
-        profile, window = index.get(n, ("quick_gl", False, None))[:2]
-        parts.setdefault("x11" if window else "surfaceless", {}).setdefault(profile, []).append(n)
-    raw, platform_of, profiles_used = {}, {}, set()
+        window = n in index and index[n][1]
+        parts.setdefault("x11" if window else "surfaceless", []).append(n)
+    profiles_used = {index[n][0] for n in to_run if n in index}
+    raw, platform_of = {}, {}
     for platform in ("surfaceless", "x11"):
-        by_profile = parts.get(platform, {})
-        if not by_profile:
+        part = parts.get(platform)
+        if not part:
             continue
         # one piglit run a platform, on a profile of the part's tests alone
-        part = [n for p in by_profile.values() for n in p]
-        profiles_used.update(by_profile)
         results = run_piglit(args, part, platform, index, os.path.join(out_dir, platform))
         # Xvfb now and then refuses a connection under load: such a test never ran, so it
         # gets one more go rather than a failure.

@@ -10,16 +10,8 @@
 # must also have taken the lanes (FIXPIPE_STATS names the instruction set),
 # and some of them skipped work.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
-set -u
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${FP_BUILD_DIR:-$root/build/std}
-out=$build/datapath-identity
-rm -rf "$out"
-mkdir -p "$out"
-passed=0 failed=0
-pass() { passed=$((passed + 1)); echo "PASS $1"; }
-fail() { failed=$((failed + 1)); echo "FAIL $1"; }
+checks=datapath-identity
+. "$(dirname "$0")/checks.sh"
 MODES="lanes scalar"
 flags() { [ "$1" = lanes ] && echo jitall || echo jitall,scalar,noskip; }
 
@@ -126,5 +118,4 @@ if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ]; then
 else
     fail "skips taken: $taken"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+checks_end

@@ -11,16 +11,9 @@
 # LLVM may contract or reorder: it may differ by 1 LSB, nothing more.  Cached
 # and compiled code must match byte for byte everywhere.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
-set -u
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${FP_BUILD_DIR:-$root/build/std}
-out=$build/jit-identity
-rm -rf "$out"
+checks=jit-identity
+. "$(dirname "$0")/checks.sh"
 mkdir -p "$out/cache"
-passed=0 failed=0
-pass() { passed=$((passed + 1)); echo "PASS $1"; }
-fail() { failed=$((failed + 1)); echo "FAIL $1"; }
 
 # render NAME PROGRAM ARGS...: the three images, or a failure line
 render() {
@@ -79,5 +72,4 @@ if render demo "$build/tools/fp-demo" --scene all --frames 3; then
     same demo jitall cached
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+checks_end

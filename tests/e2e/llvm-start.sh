@@ -7,17 +7,9 @@
 #  - the same program with every shader compiled (FIXPIPE_DEBUG=jitall) runs that
 #    constructor exactly once, and draws the same picture byte for byte.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
-set -u
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${FP_BUILD_DIR:-$root/build/std}
+checks=llvm-start
+. "$(dirname "$0")/checks.sh"
 driver=${FIXPIPE_WORK:-$root/.fixpipe}/prefix/lib/dri/swrast_dri.so
-out=$build/llvm-start
-rm -rf "$out"
-mkdir -p "$out"
-passed=0 failed=0
-pass() { passed=$((passed + 1)); echo "PASS $1"; }
-fail() { failed=$((failed + 1)); echo "FAIL $1"; }
 
 # entries (8 bytes each) of a section of the driver, 0 when it has none
 entries() {
@@ -76,5 +68,4 @@ else
     fail "small picture: interpreted and compiled pictures differ"
 fi
 
-echo "llvm-start: $passed passed, $failed failed"
-[ "$failed" = 0 ]
+checks_end

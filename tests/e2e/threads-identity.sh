@@ -9,19 +9,11 @@
 # (FIXPIPE_STATS=1, all but the lines of shader compile times and threads)
 # the same numbers.  Some of the runs must have drawn on all their threads.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
-set -u
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${FP_BUILD_DIR:-$root/build/std}
-out=$build/threads-identity
-rm -rf "$out"
-mkdir -p "$out"
-passed=0 failed=0
+checks=threads-identity
+. "$(dirname "$0")/checks.sh"
 # the environment of a thread count: 1 is the reference switch, FIXPIPE_DEBUG=nothreads
 # (FIXPIPE_THREADS set high too, which it must override)
 mode_env() { if [ "$1" = 1 ]; then echo "FIXPIPE_DEBUG=nothreads FIXPIPE_THREADS=8"; else echo "FIXPIPE_THREADS=$1"; fi; }
-pass() { passed=$((passed + 1)); echo "PASS $1"; }
-fail() { failed=$((failed + 1)); echo "FAIL $1"; }
 parallel_total=0
 
 # counters LOG: the FIXPIPE_STATS lines that must not depend on the threads
@@ -84,5 +76,4 @@ if [ "$parallel_total" -gt 0 ]; then
 else
     fail "no program drew on more than one thread: the comparison proves nothing"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+checks_end
