@@ -403,13 +403,19 @@ DFXL_INLINE void dfxl_store(struct dfxl a, struct dfx out[DFXL_N])
 /* ---- What the texture unit adds: floor, the integer input, the coordinate
  *      input, comparisons (tex_fast.h's scalar operations) ---- */
 
-/* floor(x) for |x| < 2^51: to nearest by the 2^52 trick, then down. */
+/* floor(x) for |x| < 2^51: to nearest by the 2^52 trick, then down; one
+ * rounding instruction where the processor has it.  floor(-0) is +0 either
+ * way (the trick's sum is +0; + 0.0 makes the instruction's -0 one). */
 DFXL_INLINE dfxl_d dfxl_floor(dfxl_d x)
 {
+#ifdef __AVX__
+   return (dfxl_d)_mm256_round_pd((__m256d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC) + 0.0;
+#else
    const dfxl_d M = (dfxl_d)(((dfxl_i)x & dfxl_splat(INT64_MIN)) | (dfxl_i)(dfxl_d){
       0x1p52, 0x1p52, 0x1p52, 0x1p52 });
    const dfxl_d r = (x + M) - M;
    return dfxl_seld(r > x, r - 1, r);
+#endif
 }
 
 /* dfx_from_fixed_i of an integer (k = 0) that a double holds: to nearest,

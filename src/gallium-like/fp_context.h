@@ -70,6 +70,7 @@ struct fp_fs_thread {
    struct tgsi_exec_machine *mach;
    struct fp_tgsi_sampler *sampler;       /* the fragment stage's */
    struct fp_jit_context jit_ctx;
+   struct rast_shaded_quad spare;         /* a quad alone: the eight-lane code's other half */
    uint64_t quads_jit, quads_interp;
    uint64_t quads_interp_seen;            /* of quads_interp, counted to the shader */
 };
@@ -192,6 +193,9 @@ struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
 struct tex_quad;
 void fp_tgsi_sample_quad(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
                          uint32_t control, const struct tex_quad *q, float rgba[4][4]);
+void fp_tgsi_sample_quad2(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
+                          uint32_t control, uint32_t quads, const struct tex_quad *q,
+                          float rgba[2][4][4]);
 /* What it counted so far, into rc's counters (not while rc's thread draws). */
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s, struct rast_context *rc);
 void fp_init_sampler_view(struct fp_sampler_view *view);

@@ -39,18 +39,30 @@ struct fp_jit_context {
                   float derivs[3][2][RAST_QUAD_SIZE], const int32_t offsets[3][RAST_QUAD_SIZE],
                   float rgba[4][RAST_QUAD_SIZE]);
    void (*size)(struct tgsi_sampler *s, uint32_t texture, int32_t lod, int32_t dims[4]);
-   /* plain 2-D samples, the quad laid out by the code (fp_tgsi_sample_quad) */
+   /* plain 2-D samples, the quad laid out by the code (fp_tgsi_sample_quad),
+    * and two quads' in one call (fp_tgsi_sample_quad2: `quads` of them real) */
    void (*sample_quad)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
                        uint32_t control, const struct tex_quad *q, float rgba[4][RAST_QUAD_SIZE]);
+   void (*sample_quad2)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
+                        uint32_t control, uint32_t quads, const struct tex_quad *q,
+                        float rgba[2][4][RAST_QUAD_SIZE]);
+   /* the quads a call of the eight-lane function shades: 2, or 1 when its
+    * second four lanes repeat the first (a quad alone) */
+   uint32_t quads;
 };
 
-/* mask: in, the covered pixels (lane = ~0); out, those that survive discard. */
-typedef void (*fp_jit_fs_func)(const struct fp_jit_context *ctx, const struct rast_quad *q,
-                               struct rast_shaded_quad *out, int32_t mask[RAST_QUAD_SIZE]);
+/* The compiled function on FP_JIT_QUADS quads (their lanes one after the
+ * other, quad i from q[i], its outputs to out[i]); with one quad, q1 and
+ * out1 are not read.  mask: in, the covered pixels (lane = ~0); out, those
+ * that survive discard. */
+typedef void (*fp_jit_fs_func)(const struct fp_jit_context *ctx, const struct rast_quad *q0,
+                               const struct rast_quad *q1, struct rast_shaded_quad *out0,
+                               struct rast_shaded_quad *out1, int32_t *mask);
 
 struct fp_jit_variant {
    struct gallivm_state *gallivm;
    fp_jit_fs_func func;
+   unsigned quads;                  /* 2: eight lanes, two quads a call; 1 (noskip) */
    double compile_ms;
    bool cache_hit;                  /* code from Mesa's on-disk shader cache */
 };

@@ -24,6 +24,7 @@
 #include "gallivm/lp_bld_init.h"
 #include "gallivm/lp_bld_intr.h"
 #include "gallivm/lp_bld_nir.h"
+#include "gallivm/lp_bld_pack.h"
 #include "gallivm/lp_bld_tgsi.h"
 #include "gallivm/lp_bld_type.h"
 #include "nir/tgsi_to_nir.h"
@@ -144,6 +145,24 @@ static void fp_store(struct gallivm_state *gallivm, LLVMValueRef base, size_t of
    LLVMSetAlignment(s, 4);
 }
 
+/* A vector of the quads' lanes, quad after quad, each quad's four from
+ * `offset` in it. */
+static LLVMValueRef fp_load_quads(struct gallivm_state *gallivm, const LLVMValueRef *quads,
+                                  unsigned nq, size_t offset, struct lp_type type4)
+{
+   LLVMValueRef v[2];
+   for (unsigned k = 0; k < nq; k++)
+      v[k] = fp_load_vec(gallivm, quads[k], offset, lp_build_vec_type(gallivm, type4));
+   return nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
+}
+
+/* Quad k's four lanes of v (the vector of nq quads' lanes). */
+static LLVMValueRef fp_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
+                                 unsigned nq)
+{
+   return nq == 1 ? v : lp_build_extract_range(gallivm, v, k * RAST_QUAD_SIZE, RAST_QUAD_SIZE);
+}
+
 /* gl_FragCoord.xy of the quad's four pixels: (x + (p & 1), y + (p >> 1)) + centre. */
 static LLVMValueRef fp_quad_coord(struct gallivm_state *gallivm, struct lp_type type,
                                   LLVMValueRef quad, size_t offset, const float step[4],
@@ -162,27 +181,45 @@ static LLVMValueRef fp_quad_coord(struct gallivm_state *gallivm, struct lp_type 
    return LLVMBuildFAdd(b, v, LLVMConstVector(steps, 4), "");
 }
 
+/* gl_FragCoord.xy of the quads' lanes. */
+static LLVMValueRef fp_quads_coord(struct gallivm_state *gallivm, struct lp_type type4,
+                                   const LLVMValueRef *quads, unsigned nq, size_t offset,
+                                   const float step[4], float centre)
+{
+   LLVMValueRef v[2];
+   for (unsigned k = 0; k < nq; k++)
+      v[k] = fp_quad_coord(gallivm, type4, quads[k], offset, step, centre);
+   return nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
+}
+
+/* The shader on `nq` quads: 4 lanes a quad, gallivm's quad operations
+ * (derivatives) within each quad's four. */
 static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
                                 const struct tgsi_shader_info *info,
                                 const struct lp_build_sampler_soa *sampler, int depth_output,
-                                const int *color_output, unsigned num_color_outputs)
+                                const int *color_output, unsigned num_color_outputs,
+                                unsigned nq)
 {
    LLVMContextRef lc = gallivm->context;
    LLVMBuilderRef b = gallivm->builder;
-   const struct lp_type type = lp_type_float_vec(32, 32 * RAST_QUAD_SIZE);
+   const struct lp_type type = lp_type_float_vec(32, 32 * RAST_QUAD_SIZE * nq);
+   const struct lp_type type4 = lp_type_float_vec(32, 32 * RAST_QUAD_SIZE);
    LLVMTypeRef fvec = lp_build_vec_type(gallivm, type);
    LLVMTypeRef ivec = lp_build_int_vec_type(gallivm, type);
    LLVMTypeRef i8p = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
-   LLVMTypeRef args[4] = { i8p, i8p, i8p, LLVMPointerType(ivec, 0) };
-   LLVMTypeRef func_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), args, 4, 0);
+   LLVMTypeRef args[6] = { i8p, i8p, i8p, i8p, i8p, LLVMPointerType(ivec, 0) };
+   LLVMTypeRef func_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), args, 6, 0);
    LLVMValueRef func = LLVMAddFunction(gallivm->module, "fp_fs", func_type);
    LLVMSetFunctionCallConv(func, LLVMCCallConv);
    LLVMValueRef ctx = LLVMGetParam(func, 0);
-   LLVMValueRef quad = LLVMGetParam(func, 1);
-   LLVMValueRef out = LLVMGetParam(func, 2);
-   LLVMValueRef mask_ptr = LLVMGetParam(func, 3);
-   for (unsigned i = 0; i < 4; i++)
-      lp_add_function_attr(func, i + 1, LP_FUNC_ATTR_NOALIAS);
+   const LLVMValueRef quads[2] = { LLVMGetParam(func, 1), LLVMGetParam(func, 2) };
+   const LLVMValueRef outs[2] = { LLVMGetParam(func, 3), LLVMGetParam(func, 4) };
+   LLVMValueRef mask_ptr = LLVMGetParam(func, 5);
+   /* q0 and q1 are the same quad when it is alone: read-only, they may alias */
+   lp_add_function_attr(func, 1, LP_FUNC_ATTR_NOALIAS);
+   lp_add_function_attr(func, 4, LP_FUNC_ATTR_NOALIAS);
+   lp_add_function_attr(func, 5, LP_FUNC_ATTR_NOALIAS);
+   lp_add_function_attr(func, 6, LP_FUNC_ATTR_NOALIAS);
 
    LLVMBasicBlockRef block = LLVMAppendBasicBlockInContext(lc, func, "entry");
    LLVMPositionBuilderAtEnd(b, block);
@@ -202,18 +239,20 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
    for (unsigned i = 0; i < info->num_inputs && i < RAST_MAX_VARYINGS; i++) {
       switch (info->input_semantic_name[i]) {
       case TGSI_SEMANTIC_POSITION:
-         inputs[i][0] = fp_quad_coord(gallivm, type, quad, offsetof(struct rast_quad, x), step_x,
-                                      centre);
-         inputs[i][1] = fp_quad_coord(gallivm, type, quad, offsetof(struct rast_quad, y), step_y,
-                                      centre);
-         inputs[i][2] = fp_load_vec(gallivm, quad, offsetof(struct rast_quad, frag_z), fvec);
-         inputs[i][3] = fp_load_vec(gallivm, quad, offsetof(struct rast_quad, frag_w), fvec);
+         inputs[i][0] = fp_quads_coord(gallivm, type4, quads, nq, offsetof(struct rast_quad, x),
+                                       step_x, centre);
+         inputs[i][1] = fp_quads_coord(gallivm, type4, quads, nq, offsetof(struct rast_quad, y),
+                                       step_y, centre);
+         inputs[i][2] = fp_load_quads(gallivm, quads, nq, offsetof(struct rast_quad, frag_z), type4);
+         inputs[i][3] = fp_load_quads(gallivm, quads, nq, offsetof(struct rast_quad, frag_w), type4);
          break;
       case TGSI_SEMANTIC_FACE: {
-         /* tgsi_to_nir reads FACE as a boolean input: lanes of ~0 or 0 */
+         /* tgsi_to_nir reads FACE as a boolean input: lanes of ~0 or 0.
+          * The quads of a call are of one primitive: q0's facing is theirs. */
          LLVMTypeRef i8 = LLVMInt8TypeInContext(lc);
          LLVMValueRef ff = LLVMBuildLoad2(
-            b, i8, fp_byte_ptr(gallivm, quad, offsetof(struct rast_quad, front_facing), i8), "");
+            b, i8, fp_byte_ptr(gallivm, quads[0], offsetof(struct rast_quad, front_facing), i8),
+            "");
          ff = LLVMBuildICmp(b, LLVMIntNE, ff, LLVMConstInt(i8, 0, 0), "");
          ff = LLVMBuildSExt(b, ff, LLVMInt32TypeInContext(lc), "");
          struct lp_build_context ibld;
@@ -226,10 +265,10 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
       }
       default:
          for (unsigned c = 0; c < 4; c++)
-            inputs[i][c] = fp_load_vec(gallivm, quad,
-                                       offsetof(struct rast_quad, in) +
-                                          ((size_t)i * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
-                                       fvec);
+            inputs[i][c] = fp_load_quads(gallivm, quads, nq,
+                                         offsetof(struct rast_quad, in) +
+                                            ((size_t)i * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
+                                         type4);
          break;
       }
    }
@@ -275,10 +314,11 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
          LLVMValueRef v = zero;
          if (o >= 0 && outputs[o][c])
             v = LLVMBuildLoad2(b, fvec, outputs[o][c], "");
-         fp_store(gallivm, out,
-                  offsetof(struct rast_shaded_quad, color) +
-                     ((size_t)cb * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
-                  v);
+         for (unsigned k = 0; k < nq; k++)
+            fp_store(gallivm, outs[k],
+                     offsetof(struct rast_shaded_quad, color) +
+                        ((size_t)cb * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
+                     fp_quad_part(gallivm, v, k, nq));
       }
    }
    if (depth_output >= 0) {
@@ -286,7 +326,9 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
       LLVMValueRef v = zero;
       if (outputs[depth_output][2])
          v = LLVMBuildLoad2(b, fvec, outputs[depth_output][2], "");
-      fp_store(gallivm, out, offsetof(struct rast_shaded_quad, depth), v);
+      for (unsigned k = 0; k < nq; k++)
+         fp_store(gallivm, outs[k], offsetof(struct rast_shaded_quad, depth),
+                  fp_quad_part(gallivm, v, k, nq));
    }
 
    LLVMSetAlignment(LLVMBuildStore(b, lp_build_mask_end(&mask), mask_ptr), 4);
@@ -350,9 +392,11 @@ static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
 {
    struct mesa_sha1 ctx;
    unsigned char sha1[20];
-   /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad */
-   static const char version[] = "fixpipe fs quad 3";
-   /* noskip leaves the quads laid out by the code out (fp_jit_sample.c) */
+   /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad;
+    * 4: two quads a call */
+   static const char version[] = "fixpipe fs quad 4";
+   /* noskip leaves the quads laid out by the code out (fp_jit_sample.c)
+    * and shades one quad a call */
    const bool noskip = fp_env_debug() & FP_DEBUG_NOSKIP;
    _mesa_sha1_init(&ctx);
    _mesa_sha1_update(&ctx, version, sizeof(version));
@@ -416,8 +460,10 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
       FREE(v);
       return NULL;
    }
+   /* two quads a call (docs/jit.md); noskip: one at a time */
+   v->quads = (fp_env_debug() & FP_DEBUG_NOSKIP) ? 1 : 2;
    LLVMValueRef func = fp_build_fs(v->gallivm, nir, info, sampler, depth_output, color_output,
-                                   num_color_outputs);
+                                   num_color_outputs, v->quads);
    gallivm_compile_module(v->gallivm);
    v->func = (fp_jit_fs_func)gallivm_jit_function(v->gallivm, func);
    if (cache && v->func && !v->cache_hit && cached.data_size && !cached.dont_cache)

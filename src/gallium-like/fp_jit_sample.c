@@ -18,6 +18,7 @@
 #include "gallivm/lp_bld_const.h"
 #include "gallivm/lp_bld_flow.h"
 #include "gallivm/lp_bld_init.h"
+#include "gallivm/lp_bld_pack.h"
 #include "gallivm/lp_bld_sample.h"
 #include "gallivm/lp_bld_tgsi.h"
 #include "gallivm/lp_bld_type.h"
@@ -138,6 +139,8 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
    ctx->sample = fp_jit_sample;
    ctx->size = fp_jit_size;
    ctx->sample_quad = fp_tgsi_sample_quad;
+   ctx->sample_quad2 = fp_tgsi_sample_quad2;
+   ctx->quads = 2;
 }
 
 /* ---------------------------------------------------------------- code */
@@ -204,14 +207,34 @@ static void fp_emit_ctx_call(struct gallivm_state *gallivm, LLVMValueRef context
    LLVMBuildCall2(gallivm->builder, fn_type, fn, args, n, "");
 }
 
-/* The texel vectors out of the result array. */
-static void fp_load_texel(struct gallivm_state *gallivm, LLVMTypeRef fvec, LLVMValueRef rgba,
-                          const struct lp_sampler_params *params)
+/* The quads of a call (fp_jit_fs.c): the vector type of one quad's four
+ * lanes, and quad k's part of a vector of all of them (NULL stays NULL). */
+static unsigned fp_quads(const struct lp_sampler_params *params)
 {
+   return params->type.length / RAST_QUAD_SIZE;
+}
+
+static LLVMValueRef fp_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
+                            unsigned nq)
+{
+   if (!v || nq == 1)
+      return v;
+   return lp_build_extract_range(gallivm, v, k * RAST_QUAD_SIZE, RAST_QUAD_SIZE);
+}
+
+/* The texel vectors of nq quads' result arrays, each 4 vectors. */
+static void fp_load_texels(struct gallivm_state *gallivm, struct lp_type type4,
+                           LLVMValueRef rgba, unsigned nq, const struct lp_sampler_params *params)
+{
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
    for (unsigned c = 0; c < 4; c++) {
-      LLVMValueRef idx = lp_build_const_int32(gallivm, c);
-      LLVMValueRef p = LLVMBuildGEP2(gallivm->builder, fvec, rgba, &idx, 1, "");
-      params->texel[c] = LLVMBuildLoad2(gallivm->builder, fvec, p, "");
+      LLVMValueRef v[2];
+      for (unsigned k = 0; k < nq; k++) {
+         LLVMValueRef idx = lp_build_const_int32(gallivm, k * 4 + c);
+         v[k] = LLVMBuildLoad2(gallivm->builder, fvec,
+                               LLVMBuildGEP2(gallivm->builder, fvec, rgba, &idx, 1, ""), "");
+      }
+      params->texel[c] = nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
    }
 }
 
@@ -228,66 +251,80 @@ static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
 }
 
 /* A plain 2-D sample: the struct tex_quad fp_tgsi_get_samples would build,
- * stored by the code, and one call into the unit's glue. */
+ * one a quad, stored by the code, and one call into the unit's glue. */
 static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_sampler_params *params)
 {
-   LLVMBuilderRef b = gallivm->builder;
    LLVMContextRef lc = gallivm->context;
-   LLVMTypeRef fvec = lp_build_vec_type(gallivm, params->type);
+   const unsigned nq = fp_quads(params);
+   struct lp_type type4 = params->type;
+   type4.length = RAST_QUAD_SIZE;
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
    LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
    LLVMTypeRef vp = LLVMPointerType(fvec, 0);
    LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
    const enum tgsi_sampler_control control = fp_control(params->sample_key);
 #define FP_Q(member) (unsigned)(offsetof(struct tex_quad, member) / sizeof(float[RAST_QUAD_SIZE]))
-   LLVMValueRef q = fp_vec_array(gallivm, fvec, sizeof(struct tex_quad) / sizeof(float[4]),
-                                 "tex_quad");
-   fp_store_vec(gallivm, q, fvec, FP_Q(s), params->coords[0]);
-   fp_store_vec(gallivm, q, fvec, FP_Q(t), params->coords[1]);
-   fp_store_vec(gallivm, q, fvec, FP_Q(r), NULL);
-   fp_store_vec(gallivm, q, fvec, FP_Q(layer), NULL);
-   fp_store_vec(gallivm, q, fvec, FP_Q(ref), NULL);
-   fp_store_vec(gallivm, q, fvec, FP_Q(lod),
-                control == TGSI_SAMPLER_LOD_NONE ? NULL : params->lod);
+   const unsigned per = sizeof(struct tex_quad) / sizeof(float[RAST_QUAD_SIZE]);
+   LLVMValueRef q = fp_vec_array(gallivm, fvec, per * nq, "tex_quad");
+   for (unsigned k = 0; k < nq; k++) {
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_part(gallivm, params->coords[0], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_part(gallivm, params->coords[1], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(r), NULL);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(layer), NULL);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(ref), NULL);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(lod),
+                   control == TGSI_SAMPLER_LOD_NONE ? NULL : fp_part(gallivm, params->lod, k, nq));
+   }
 #undef FP_Q
-   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4, "texel");
-   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp };
-   LLVMValueRef args[] = {
-      NULL, fp_texture_unit(gallivm, params->texture_index, params->texture_index_offset),
-      lp_build_const_int32(gallivm, params->sampler_index),
-      lp_build_const_int32(gallivm, control), q, rgba,
-   };
-   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quad),
-                    arg_types, args, ARRAY_SIZE(args));
-   fp_load_texel(gallivm, fvec, rgba, params);
+   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
+   LLVMValueRef texture = fp_texture_unit(gallivm, params->texture_index,
+                                          fp_part(gallivm, params->texture_index_offset, 0, nq));
+   LLVMValueRef sampler = lp_build_const_int32(gallivm, params->sampler_index);
+   LLVMValueRef ctl = lp_build_const_int32(gallivm, control);
+   if (nq == 1) {
+      LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp };
+      LLVMValueRef args[] = { NULL, texture, sampler, ctl, q, rgba };
+      fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quad),
+                       arg_types, args, ARRAY_SIZE(args));
+   } else {
+      /* the quads' unit from the first lane, as tgsi_exec takes it per quad:
+       * a dynamic index that differs between the two quads takes the
+       * general path's call per quad (fp_emit_tex_sample) */
+      LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                           offsetof(struct fp_jit_context, quads), i32);
+      LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, vp, vp };
+      LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, q, rgba };
+      fp_emit_ctx_call(gallivm, params->context_ptr,
+                       offsetof(struct fp_jit_context, sample_quad2), arg_types, args,
+                       ARRAY_SIZE(args));
+   }
+   fp_load_texels(gallivm, type4, rgba, nq, params);
 }
 
-static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
-                               struct gallivm_state *gallivm,
-                               const struct lp_sampler_params *params)
+/* Any other texture instruction, quad k of nq: its operands where tgsi_exec
+ * has them (fp_jit_sample()), the texels to `rgba` (4 vectors). */
+static void fp_emit_tex_general(const struct fp_jit_sampler *js, struct gallivm_state *gallivm,
+                                const struct lp_sampler_params *params, unsigned key,
+                                unsigned k, unsigned nq, LLVMValueRef rgba)
 {
-   const struct fp_jit_sampler *js = (const struct fp_jit_sampler *)base;
-   LLVMBuilderRef b = gallivm->builder;
    LLVMContextRef lc = gallivm->context;
-   LLVMTypeRef fvec = lp_build_vec_type(gallivm, params->type);
-   LLVMTypeRef ivec = lp_build_int_vec_type(gallivm, params->type);
+   struct lp_type type4 = params->type;
+   type4.length = RAST_QUAD_SIZE;
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
+   LLVMTypeRef ivec = lp_build_int_vec_type(gallivm, type4);
    LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
    LLVMTypeRef vp = LLVMPointerType(fvec, 0);
    LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
    const unsigned unit = params->texture_index;
    const enum tgsi_texture_type target =
       unit < PIPE_MAX_SHADER_SAMPLER_VIEWS ? js->tgsi_target[unit] : TGSI_TEXTURE_2D;
-   const unsigned key = params->sample_key | (unsigned)target << FP_KEY_TARGET_SHIFT;
-   if (fp_plain_2d(target, params->sample_key) && !(fp_env_debug() & FP_DEBUG_NOSKIP)) {
-      fp_emit_tex_quad(gallivm, params);
-      return;
-   }
 
    LLVMValueRef coords = fp_vec_array(gallivm, fvec, 5, "tex_coords");
    for (unsigned i = 0; i < 5; i++)
-      fp_store_vec(gallivm, coords, fvec, i, params->coords[i]);
+      fp_store_vec(gallivm, coords, fvec, i, fp_part(gallivm, params->coords[i], k, nq));
 
    LLVMValueRef lod = fp_vec_array(gallivm, fvec, 1, "tex_lod");
-   fp_store_vec(gallivm, lod, fvec, 0, params->lod);
+   fp_store_vec(gallivm, lod, fvec, 0, fp_part(gallivm, params->lod, k, nq));
 
    /* Only the derivatives the target has are set (visit_tex leaves the
     * rest of lp_derivatives uninitialised). */
@@ -302,18 +339,20 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
       nderiv = MIN2(nderiv, 3);
    }
    for (int a = 0; a < 3; a++) {
-      fp_store_vec(gallivm, derivs, fvec, a * 2, a < nderiv ? params->derivs->ddx[a] : NULL);
-      fp_store_vec(gallivm, derivs, fvec, a * 2 + 1, a < nderiv ? params->derivs->ddy[a] : NULL);
+      fp_store_vec(gallivm, derivs, fvec, a * 2,
+                   a < nderiv ? fp_part(gallivm, params->derivs->ddx[a], k, nq) : NULL);
+      fp_store_vec(gallivm, derivs, fvec, a * 2 + 1,
+                   a < nderiv ? fp_part(gallivm, params->derivs->ddy[a], k, nq) : NULL);
    }
 
    LLVMValueRef offsets = fp_vec_array(gallivm, ivec, 3, "tex_offsets");
    for (unsigned a = 0; a < 3; a++)
       fp_store_vec(gallivm, offsets, ivec, a,
-                   (params->sample_key & LP_SAMPLER_OFFSETS) ? params->offsets[a] : NULL);
+                   (params->sample_key & LP_SAMPLER_OFFSETS)
+                      ? fp_part(gallivm, params->offsets[a], k, nq) : NULL);
 
-   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4, "texel");
-
-   LLVMValueRef texture = fp_texture_unit(gallivm, unit, params->texture_index_offset);
+   LLVMValueRef texture = fp_texture_unit(gallivm, unit,
+                                          fp_part(gallivm, params->texture_index_offset, k, nq));
 
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp, vp, LLVMPointerType(ivec, 0), vp };
    LLVMValueRef args[] = {
@@ -322,7 +361,47 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
    };
    fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample),
                     arg_types, args, ARRAY_SIZE(args));
-   fp_load_texel(gallivm, fvec, rgba, params);
+}
+
+static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
+                               struct gallivm_state *gallivm,
+                               const struct lp_sampler_params *params)
+{
+   const struct fp_jit_sampler *js = (const struct fp_jit_sampler *)base;
+   const unsigned unit = params->texture_index;
+   const enum tgsi_texture_type target =
+      unit < PIPE_MAX_SHADER_SAMPLER_VIEWS ? js->tgsi_target[unit] : TGSI_TEXTURE_2D;
+   const unsigned key = params->sample_key | (unsigned)target << FP_KEY_TARGET_SHIFT;
+   const unsigned nq = fp_quads(params);
+   if (fp_plain_2d(target, params->sample_key) && !params->texture_index_offset &&
+       !(fp_env_debug() & FP_DEBUG_NOSKIP)) {
+      fp_emit_tex_quad(gallivm, params);
+      return;
+   }
+
+   /* quad by quad; the second only where it is not the first again (a quad
+    * alone: fp_jit_context.quads), its texels zero there */
+   struct lp_type type4 = params->type;
+   type4.length = RAST_QUAD_SIZE;
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
+   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
+   fp_emit_tex_general(js, gallivm, params, key, 0, nq, rgba);
+   if (nq == 2) {
+      LLVMBuilderRef b = gallivm->builder;
+      LLVMTypeRef i32 = LLVMInt32TypeInContext(gallivm->context);
+      for (unsigned c = 0; c < 4; c++)
+         fp_store_vec(gallivm, rgba, fvec, 4 + c, NULL);
+      LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                           offsetof(struct fp_jit_context, quads), i32);
+      struct lp_build_if_state ifs;
+      lp_build_if(&ifs, gallivm, LLVMBuildICmp(b, LLVMIntEQ, quads,
+                                               lp_build_const_int32(gallivm, 2), ""));
+      LLVMValueRef idx = lp_build_const_int32(gallivm, 4);
+      fp_emit_tex_general(js, gallivm, params, key, 1, nq,
+                          LLVMBuildGEP2(b, fvec, rgba, &idx, 1, ""));
+      lp_build_endif(&ifs);
+   }
+   fp_load_texels(gallivm, type4, rgba, nq, params);
 }
 
 static void fp_emit_size_query(const struct lp_build_sampler_soa *base,

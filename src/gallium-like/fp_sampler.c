@@ -406,6 +406,30 @@ void fp_tgsi_sample_quad(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index
    fp_unit_sample(ts, u, q, (enum tgsi_sampler_control)control, rgba);
 }
 
+/* Two quads laid out so, in one call of the unit (tex_unit_sample2);
+ * `quads` 1: the second is the first again (a quad shaded alone on eight
+ * lanes) and is not sampled, its texels zero. */
+void fp_tgsi_sample_quad2(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
+                          uint32_t sampler_index, uint32_t control, uint32_t quads,
+                          const struct tex_quad *q, float rgba[2][4][TGSI_QUAD_SIZE])
+{
+   struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
+   const struct fp_sampler_view *fv;
+   const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
+   if (!u || quads < 2) {
+      memset(rgba, 0, sizeof(float) * 2 * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
+      if (u)
+         fp_unit_sample(ts, u, &q[0], (enum tgsi_sampler_control)control, rgba[0]);
+      return;
+   }
+   const enum tex_lod_control ctl = fp_lod_control((enum tgsi_sampler_control)control);
+   const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
+   ts->lod_quads += 2 * lod_from_diffs;
+   ts->skip_lod += 2 * (u->lod_skipped && lod_from_diffs);
+   tex_unit_sample2(u, q, ctl, rgba);
+   fp_tex_stats(ts);
+}
+
 static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                              int level, int dims[4])
 {

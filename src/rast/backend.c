@@ -22,24 +22,46 @@ static inline struct rast_backend *backend(struct rast_context *rc)
 
 typedef const float (*chan_quad)[RAST_QUAD_SIZE];
 
-/* Runs the shader on the live pixels of q given by mask; returns the
- * pixels it keeps. */
-static inline unsigned shade(struct rast_context *rc, struct rast_backend *be,
-                             struct rast_quad *q, unsigned mask)
+/* Runs the shader on the live pixels of q given by mask, its outputs to
+ * `out`; returns the pixels it keeps. */
+static inline unsigned shade(struct rast_context *rc, struct rast_quad *q, unsigned mask,
+                             struct rast_shaded_quad *out)
 {
    const unsigned saved = q->mask;
    q->mask = mask;
    rc->stats.pixels_shaded += rast_popcount4(mask);
-   const unsigned kept = rc->fs.shade(rc->fs.ctx, q, &be->out) & mask;
+   const unsigned kept = rc->fs.shade(rc->fs.ctx, q, out) & mask;
    q->mask = saved;
    return kept;
 }
 
-static inline void color_stage(const struct rast_backend *be, int x, int y, unsigned mask)
+/* The same on two quads, in one call of the shader where both have live
+ * pixels (m0, m1), their outputs to be->out and be->out2; returns the
+ * pixels kept, q0's in bits 0-3 and q1's in bits 4-7. */
+static inline unsigned shade_pair(struct rast_context *rc, struct rast_backend *be,
+                                  struct rast_quad *q0, unsigned m0, struct rast_quad *q1,
+                                  unsigned m1)
+{
+   if (!m0 || !m1)
+      return (m0 ? shade(rc, q0, m0, &be->out) : 0) |
+             (m1 ? shade(rc, q1, m1, &be->out2) << 4 : 0);
+   const unsigned saved0 = q0->mask, saved1 = q1->mask;
+   q0->mask = m0;
+   q1->mask = m1;
+   rc->stats.pixels_shaded += rast_popcount4(m0) + rast_popcount4(m1);
+   const unsigned kept = rc->fs.shade2(rc->fs.ctx, q0, q1, &be->out, &be->out2) &
+                         (m0 | m1 << 4);
+   q0->mask = saved0;
+   q1->mask = saved1;
+   return kept;
+}
+
+static inline void color_stage(const struct rast_backend *be, const struct rast_shaded_quad *out,
+                               int x, int y, unsigned mask)
 {
    for (unsigned k = 0; k < be->ncbufs; k++) {
       const struct rast_cbuf_plan *p = &be->cbuf[k];
-      p->func(p, x, y, mask, (chan_quad)be->out.color[p->src], (chan_quad)be->out.color[1]);
+      p->func(p, x, y, mask, (chan_quad)out->color[p->src], (chan_quad)out->color[1]);
    }
 }
 
@@ -61,10 +83,22 @@ static void quad_count(struct rast_context *rc, struct rast_quad *q)
 static void quad_color(struct rast_context *rc, struct rast_quad *q)
 {
    struct rast_backend *be = backend(rc);
-   const unsigned mask = shade(rc, be, q, q->mask);
+   const unsigned mask = shade(rc, q, q->mask, &be->out);
    rc->stats.samples_passed += rast_popcount4(mask);
    if (mask)
-      color_stage(be, q->x, q->y, mask);
+      color_stage(be, &be->out, q->x, q->y, mask);
+}
+
+static void pair_color(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
+{
+   struct rast_backend *be = backend(rc);
+   const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask);
+   const unsigned k0 = kept & 15, k1 = kept >> 4;
+   rc->stats.samples_passed += rast_popcount4(k0) + rast_popcount4(k1);
+   if (k0)
+      color_stage(be, &be->out, q0->x, q0->y, k0);
+   if (k1)
+      color_stage(be, &be->out2, q1->x, q1->y, k1);
 }
 
 /* No depth/stencil, no blend, all channels, one 8-bit target. */
@@ -72,11 +106,24 @@ static void quad_color(struct rast_context *rc, struct rast_quad *q)
    static void quad_fast_##NAME(struct rast_context *rc, struct rast_quad *q) \
    { \
       struct rast_backend *be = backend(rc); \
-      const unsigned mask = shade(rc, be, q, q->mask); \
+      const unsigned mask = shade(rc, q, q->mask, &be->out); \
       rc->stats.samples_passed += rast_popcount4(mask); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
       rast_store8_quad(p->base, p->stride, q->x, q->y, mask, \
                        (chan_quad)be->out.color[p->src], R, G, B, A, X8); \
+   } \
+   static void pair_fast_##NAME(struct rast_context *rc, struct rast_quad *q0, \
+                                struct rast_quad *q1) \
+   { \
+      struct rast_backend *be = backend(rc); \
+      const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask); \
+      const unsigned k0 = kept & 15, k1 = kept >> 4; \
+      rc->stats.samples_passed += rast_popcount4(k0) + rast_popcount4(k1); \
+      const struct rast_cbuf_plan *p = &be->cbuf[0]; \
+      rast_store8_quad(p->base, p->stride, q0->x, q0->y, k0, \
+                       (chan_quad)be->out.color[p->src], R, G, B, A, X8); \
+      rast_store8_quad(p->base, p->stride, q1->x, q1->y, k1, \
+                       (chan_quad)be->out2.color[p->src], R, G, B, A, X8); \
    }
 
 QUAD_FAST8(RGBA8, 0, 1, 2, 3, false)
@@ -84,40 +131,77 @@ QUAD_FAST8(BGRA8, 2, 1, 0, 3, false)
 QUAD_FAST8(BGRX8, 2, 1, 0, 3, true)
 
 /* Depth/stencil before the shader. */
-static void quad_early(struct rast_context *rc, struct rast_quad *q)
+static inline unsigned early_zs(struct rast_context *rc, struct rast_backend *be,
+                                struct rast_quad *q)
 {
-   struct rast_backend *be = backend(rc);
    union rast_zq z;
    if (be->zconv)
       be->zconv(be, q, NULL, &z);
-   unsigned mask = be->zs(be, q->x, q->y, q->mask, &z, q->front_facing);
+   const unsigned mask = be->zs(be, q->x, q->y, q->mask, &z, q->front_facing);
    rc->stats.samples_passed += rast_popcount4(mask);
+   return mask;
+}
+
+static void quad_early(struct rast_context *rc, struct rast_quad *q)
+{
+   struct rast_backend *be = backend(rc);
+   unsigned mask = early_zs(rc, be, q);
    if (!mask || !be->shade_needed)
       return;
-   mask = shade(rc, be, q, mask);
+   mask = shade(rc, q, mask, &be->out);
    if (mask)
-      color_stage(be, q->x, q->y, mask);
+      color_stage(be, &be->out, q->x, q->y, mask);
+}
+
+static void pair_early(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
+{
+   struct rast_backend *be = backend(rc);
+   const unsigned m0 = early_zs(rc, be, q0), m1 = early_zs(rc, be, q1);
+   if (!(m0 | m1) || !be->shade_needed)
+      return;
+   const unsigned kept = shade_pair(rc, be, q0, m0, q1, m1);
+   if (kept & 15)
+      color_stage(be, &be->out, q0->x, q0->y, kept & 15);
+   if (kept >> 4)
+      color_stage(be, &be->out2, q1->x, q1->y, kept >> 4);
 }
 
 /* The shader first: it may discard or write depth. */
-static void quad_late(struct rast_context *rc, struct rast_quad *q)
+static inline void late_zs_color(struct rast_context *rc, struct rast_backend *be,
+                                 struct rast_quad *q, const struct rast_shaded_quad *out,
+                                 unsigned mask)
 {
-   struct rast_backend *be = backend(rc);
    union rast_zq z;
-   unsigned mask = shade(rc, be, q, q->mask);
-   if (!mask)
-      return;
    if (be->zconv)
-      be->zconv(be, q, &be->out, &z);
+      be->zconv(be, q, out, &z);
    mask = be->zs(be, q->x, q->y, mask, &z, q->front_facing);
    rc->stats.samples_passed += rast_popcount4(mask);
    if (mask)
-      color_stage(be, q->x, q->y, mask);
+      color_stage(be, out, q->x, q->y, mask);
+}
+
+static void quad_late(struct rast_context *rc, struct rast_quad *q)
+{
+   struct rast_backend *be = backend(rc);
+   const unsigned mask = shade(rc, q, q->mask, &be->out);
+   if (mask)
+      late_zs_color(rc, be, q, &be->out, mask);
+}
+
+static void pair_late(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
+{
+   struct rast_backend *be = backend(rc);
+   const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask);
+   if (kept & 15)
+      late_zs_color(rc, be, q0, &be->out, kept & 15);
+   if (kept >> 4)
+      late_zs_color(rc, be, q1, &be->out2, kept >> 4);
 }
 
 void rast_backend_validate(struct rast_context *rc)
 {
    struct rast_backend *be = backend(rc);
+   rc->quad2 = NULL;
    if (!be) {
       be = calloc(1, sizeof *be);
       rc->back_priv = be;
@@ -136,19 +220,29 @@ void rast_backend_validate(struct rast_context *rc)
    rast_color_plan(be, rc);
    be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard;
 
+   rast_quad2_func pair = NULL;
    if (be->zs) {
-      rc->quad = rc->fs.writes_depth || rc->fs.may_discard ? quad_late : quad_early;
+      const bool late = rc->fs.writes_depth || rc->fs.may_discard;
+      rc->quad = late ? quad_late : quad_early;
+      pair = late ? pair_late : pair_early;
    } else if (!be->shade_needed) {
       rc->quad = quad_count;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_RGBA8) {
       rc->quad = quad_fast_RGBA8;
+      pair = pair_fast_RGBA8;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_BGRA8) {
       rc->quad = quad_fast_BGRA8;
+      pair = pair_fast_BGRA8;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_BGRX8) {
       rc->quad = quad_fast_BGRX8;
+      pair = pair_fast_BGRX8;
    } else {
       rc->quad = quad_color;
+      pair = pair_color;
    }
+   /* pairs only where the shader has its eight-lane form; noskip: one by one */
+   if (rc->fs.shade2 && !(rc->opts & RAST_OPT_NOSKIP))
+      rc->quad2 = pair;
 }
 
 void rast_backend_destroy(struct rast_context *rc)
@@ -156,4 +250,5 @@ void rast_backend_destroy(struct rast_context *rc)
    free(rc->back_priv);
    rc->back_priv = NULL;
    rc->quad = NULL;
+   rc->quad2 = NULL;
 }

@@ -115,7 +115,7 @@ struct rast_backend {
    struct rast_cbuf_plan cbuf[RAST_MAX_CBUFS];
 
    /* Scratch for the shader's output: not on the stack of every quad. */
-   struct rast_shaded_quad out;
+   struct rast_shaded_quad out, out2;   /* out2: the second quad of a pair */
 };
 
 /* backend_zs.c */

@@ -16,6 +16,7 @@
 #ifndef FIXPIPE_FRONT_H
 #define FIXPIPE_FRONT_H
 
+#include <stddef.h>
 #include "rast/rast_priv.h"
 #include "fixed/fx_wide.h"
 #include "fixed/numsys.h"
@@ -187,8 +188,27 @@ struct rast_front {
    unsigned nsec;
 
    struct fr_row row[2];       /* the two scan lines of a quad row */
-   struct rast_quad quad;
+   /* The span processor fills quad[cur].  With rc->quad2 a covered quad
+    * waits in `pending` for the next one of its primitive, and the two go
+    * to the back end together (the shader on eight lanes); what the
+    * primitive sets once (constants, facing) is in both. */
+   struct rast_quad quad[2];
+   unsigned cur;
+   struct rast_quad *pending;
 };
+
+/* The quad left waiting at the end of a primitive goes alone.  It is of
+ * this thread's rows, so it counts here whoever's row came last. */
+static inline void fr_quads_flush(struct rast_context *rc, struct rast_front *fr)
+{
+   if (fr->pending) {
+      const bool counting = rc->counting;
+      rast_count_stretch(rc, true);
+      rc->quad(rc, fr->pending);
+      fr->pending = NULL;
+      rast_count_stretch(rc, counting);
+   }
+}
 
 static inline struct rast_front *rast_front(struct rast_context *rc)
 {

@@ -194,8 +194,8 @@ static void lanes_skips_setup(struct rast_front *fr)
    if (!t->w_const)
       t->lidx[t->ln++] = 0;
    for (unsigned j = 0; j < fr->npersp; j++) {
-      const uint16_t out = (uint16_t)(&fr->quad.in[fr->persp[j].var][fr->persp[j].chan][0] -
-                                      &fr->quad.in[0][0][0]);
+      const uint16_t out = (uint16_t)(&fr->quad[0].in[fr->persp[j].var][fr->persp[j].chan][0] -
+                                      &fr->quad[0].in[0][0][0]);
       if (!(t->skip && plane_is_const(&t->pl[1 + j]))) {
          t->lout[t->ln] = out;
          t->lidx[t->ln++] = (uint8_t)(1 + j);
@@ -632,7 +632,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          flt[0][k] = flt[1][k] - fr->flt_dy[k];
    }
 
-   struct rast_quad *q = &fr->quad;
+   struct rast_quad *q = &fr->quad[fr->cur];
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
    if (has_persp)
@@ -685,7 +685,17 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       q->mask = mask;
       rc->stats.quads++;
       rc->stats.pixels_covered += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
-      rc->quad(rc, q);
+      if (!rc->quad2) {
+         rc->quad(rc, q);
+      } else if (!fr->pending) {
+         fr->pending = q;
+         fr->cur ^= 1;
+         q = &fr->quad[fr->cur];
+         q->y = (int)y;
+      } else {
+         rc->quad2(rc, fr->pending, q);
+         fr->pending = NULL;
+      }
    }
    if (has_persp)
       tex_end(rc, fr);

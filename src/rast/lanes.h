@@ -33,6 +33,10 @@ struct rast_lanes {
     * computes every quad with its range events handled at each operation
     * (not optimistically, dfx_lanes.h). */
    tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool noskip, bool nolod);
+   /* Two quads of that unit in one call, their operations side by side;
+    * NULL where the unit's state has no such function (then the quad
+    * function twice). */
+   tex_quad2_fn (*tex_dfx19_2d_pair)(const struct tex_unit *u, bool noskip, bool nolod);
 };
 
 #define LANES_GLUE2(a, b) a##b

@@ -217,7 +217,7 @@ void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (
     * line) and 3 (across it, where nothing varies: Δ2 = 0). */
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 3);
-   fr->quad.front_facing = true;
+   fr->quad[0].front_facing = fr->quad[1].front_facing = true;
    rast_setup_constants(fr, rc->rs.flatshade_first ? o1 : o2);
    rast_scan_convex(rc, fr);
 }

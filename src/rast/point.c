@@ -125,7 +125,7 @@ void rast_draw_point(struct rast_context *rc, const float (*v)[4])
       }
    }
 
-   fr->quad.front_facing = true;
+   fr->quad[0].front_facing = fr->quad[1].front_facing = true;
    rast_setup_constants(fr, v);
    rast_scan_convex(rc, fr);
 }

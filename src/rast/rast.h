@@ -265,6 +265,11 @@ struct rast_shader {
    void *thread_ctx[RAST_MAX_THREADS];
    unsigned (*shade)(void *ctx, const struct rast_quad *quad,
                      struct rast_shaded_quad *out);
+   /* Two quads of one primitive in one call, where the shader has a form
+    * eight lanes wide (NULL: one quad at a time): the pixels kept, q0's in
+    * bits 0-3 and q1's in bits 4-7. */
+   unsigned (*shade2)(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
+                      struct rast_shaded_quad *out0, struct rast_shaded_quad *out1);
    unsigned num_outputs;             /* colour outputs written */
    bool writes_depth;
    bool color0_to_all;               /* gl_FragColor broadcast to every cbuf */

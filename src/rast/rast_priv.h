@@ -12,6 +12,8 @@ struct rast_context;
 /* The back end's entry, chosen by rast_backend_validate(): the quad's mask is
  * already clipped to the scissor and the framebuffer. */
 typedef void (*rast_quad_func)(struct rast_context *rc, struct rast_quad *q);
+typedef void (*rast_quad2_func)(struct rast_context *rc, struct rast_quad *q0,
+                                struct rast_quad *q1);
 
 struct rast_context {
    const struct rast_profile *profile;
@@ -46,6 +48,7 @@ struct rast_context {
    /* Chosen at validation. */
    struct rast_scissor clip;        /* scissor & framebuffer, max exclusive */
    rast_quad_func quad;             /* back end */
+   rast_quad2_func quad2;           /* the same on two quads of a primitive; NULL: one by one */
    void *front_priv;                /* setup/scan's own specialised state */
    void *back_priv;                 /* back end's own specialised state */
 };

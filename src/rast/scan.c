@@ -187,6 +187,7 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
       if (mine)
          fr->pair(rc, fr, p);
    }
+   fr_quads_flush(rc, fr);
 }
 
 void rast_scan_convex(struct rast_context *rc, struct rast_front *fr)

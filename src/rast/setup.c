@@ -149,7 +149,7 @@ void rast_setup_constants(struct rast_front *fr, const float (*pv)[4])
       const struct fr_comp *c = &fr->cnst[i];
       float val = pv[c->slot][c->chan];
       for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-         fr->quad.in[c->var][c->chan][p] = val;
+         fr->quad[0].in[c->var][c->chan][p] = fr->quad[1].in[c->var][c->chan][p] = val;
    }
 }
 
@@ -256,7 +256,7 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
       return;
    }
    rc->stats.triangles++;
-   fr->quad.front_facing = facing == 0;
+   fr->quad[0].front_facing = fr->quad[1].front_facing = facing == 0;
 
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);

@@ -141,6 +141,8 @@ typedef void (*tex_level_fn)(const struct tex_unit *u, unsigned level, const ns_
                              int layer, float ref, float out[4]);
 typedef void (*tex_quad_fn)(const struct tex_unit *u, const struct tex_quad *q,
                             enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
+typedef void (*tex_quad2_fn)(const struct tex_unit *u, const struct tex_quad q[2],
+                             enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD]);
 
 struct tex_unit {
    const struct numsys *ns;
@@ -157,6 +159,9 @@ struct tex_unit {
    /* dfx24 and binary32: the whole quad specialised (tex_fast.c), NULL for
     * the table path above. */
    tex_quad_fn quad;
+   /* two quads in one call, their operations side by side (the lanes'
+    * specialised quads); NULL: quad twice */
+   tex_quad2_fn quad2;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
    struct tex_axis axis[TEX_MAX_LEVELS][3];
    int32_t lod_bias, min_lod, max_lod;   /* units of 2^-TEX_LOD_FRAC_BITS */
@@ -198,6 +203,9 @@ bool tex_unit_lod_unused(const struct tex_unit *u);
 /* Sample a quad; rgba[channel][pixel], swizzled. */
 void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
                      enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
+/* Two quads: the same bits and range events as tex_unit_sample on each. */
+void tex_unit_sample2(const struct tex_unit *u, const struct tex_quad q[2],
+                      enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD]);
 
 /* The table path (struct numsys calls, the functions above) whatever the
  * number system: what tex_unit_sample does without u->quad, for tests

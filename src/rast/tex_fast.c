@@ -73,6 +73,15 @@ QUAD_FN(quad_float_1d, TEX_FK_FLOAT, 1)
 QUAD_FN(quad_float_2d, TEX_FK_FLOAT, 2)
 QUAD_FN(quad_float_3d, TEX_FK_FLOAT, 3)
 
+/* The pair function of the quad tex_fast_choose chose, where there is one. */
+tex_quad2_fn tex_fast_choose_pair(const struct tex_unit *u, bool scalar, bool noskip, bool nolod)
+{
+   if (scalar || u->view.target == TEX_TARGET_CUBE || u->dims != 2 || u->kind != TEX_NS_DFX ||
+       u->ns->dfx.mant_bits != DFX_MANT_BITS_SEED || !rast_lanes()->tex_dfx19_2d_pair)
+      return NULL;
+   return rast_lanes()->tex_dfx19_2d_pair(u, noskip, nolod);
+}
+
 tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod)
 {
    *nolod = false;

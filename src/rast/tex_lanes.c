@@ -11,12 +11,28 @@
 #include "rast/tex_fast_path.h"
 #include "rast/lanes_fns.h"
 #include "fixed/dfx_lanes.h"
-#ifdef __AVX2__
+#ifdef __AVX__
 #include <immintrin.h>
 #endif
 
 typedef float lanes_v4f __attribute__((vector_size(16)));
 typedef int32_t lanes_v4i __attribute__((vector_size(16)));
+typedef float lanes_v8f __attribute__((vector_size(32)));
+typedef int32_t lanes_v8i __attribute__((vector_size(32)));
+typedef uint32_t lanes_v8u __attribute__((vector_size(32)));
+
+/* Whether some lane of a comparison's mask is set. */
+static inline __attribute__((always_inline)) bool any8(lanes_v8i m)
+{
+#ifdef __AVX__
+   return _mm256_movemask_ps((__m256)m) != 0;
+#else
+   const lanes_v4i a = __builtin_shufflevector(m, m, 0, 1, 2, 3),
+                   b = __builtin_shufflevector(m, m, 4, 5, 6, 7);
+   const lanes_v4i o = a | b;
+   return (o[0] | o[1] | o[2] | o[3]) != 0;
+#endif
+}
 
 static inline __attribute__((always_inline)) struct dfxl splat(double v)
 {
@@ -25,28 +41,41 @@ static inline __attribute__((always_inline)) struct dfxl splat(double v)
 }
 
 
-/* tex_fcoord: binary32 to the register, toward -inf.  A double holds the
- * float; truncating it to its digit's grid and stepping a negative one
- * down by a grid step when something was cut is the scalar path's
- * "m24 >> sh, + 1 if negative and bits dropped".  Zero, the range beyond
- * 2^-32 .. 2^32, inf, NaN and a step past L = 15 take tex_ns_coord. */
-static inline __attribute__((always_inline)) struct dfxl
-coord(const struct tex_unit *u, const float v[TEX_QUAD], struct tex_fst *x)
+/* tex_fcoord for the quad's s and t together, on the binary32 bits of
+ * the eight coordinates: toward -inf to the grid of the value's digit,
+ * which is the scalar path's "m24 >> sh, + 1 if negative and bits
+ * dropped" on binary32's own mantissa.  A digit holds 16 + (p + 32) mod 4
+ * bits of a value with its leading one at 2^p, so with binary32's biased
+ * exponent e (p = e - 127) the bits to drop are 8 - ((e + 1) & 3).  Adding
+ * a grid step to a magnitude's bits is adding it to the magnitude: a carry
+ * out of the mantissa lands on the next power of two.  The result has at
+ * most 19 significant bits, so the doubles of the lanes hold it exactly.
+ * Zero, the range beyond 2^-32 .. 2^32, inf, NaN and a step past L = 15
+ * take tex_ns_coord. */
+static inline __attribute__((always_inline)) void
+coords(const struct tex_unit *u, const struct tex_quad *q, struct dfxl *cs, struct dfxl *ct,
+       struct tex_fst *x)
 {
-   lanes_v4f f;
-   memcpy(&f, v, sizeof(f));
-   const dfxl_d d = __builtin_convertvector(f, dfxl_d);
-   const dfxl_d ad = dfxl_abs(d);
-   const dfxl_i c = 37 - ((dfxl_exponent(d) + 1) & 3);
-   dfxl_d r = dfxl_clear_low(d, c);
-   r = dfxl_seld((r != d) & (d < 0), r - dfxl_grid(d), r);
-   const dfxl_i direct = (ad >= 0x1p-32) & (dfxl_abs(r) < 0x1p32);
-   struct dfxl o = { (dfxl_d)((dfxl_i)r & direct) };
-   if (dfxl_any(~direct & (d != 0)))
-      for (unsigned p = 0; p < TEX_QUAD; p++)
-         if (!direct[p] && v[p] != 0.0f)
-            o.v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, v[p], &x->n).d);
-   return o;
+   lanes_v8i v;
+   memcpy(&v, q->s, sizeof(v));                 /* s[4] then t[4] */
+   const lanes_v8i drop = 8 - (((v >> 23) + 1) & 3);
+   const lanes_v8i kept = (lanes_v8i)((lanes_v8u)v & (((lanes_v8u){ 0 } - 1) << (lanes_v8u)drop));
+   const lanes_v8i down = (kept != v) & (v < 0);
+   const lanes_v8i r = kept + (down & (1 << drop));
+   const int32_t lo = 0x2f800000, hi = 0x4f800000;      /* 2^-32, 2^32 */
+   const lanes_v8i direct = ((v & INT32_MAX) >= lo) & ((r & INT32_MAX) < hi);
+   const lanes_v8f f = (lanes_v8f)(r & direct);
+   cs->v = __builtin_convertvector(__builtin_shufflevector(f, f, 0, 1, 2, 3), dfxl_d);
+   ct->v = __builtin_convertvector(__builtin_shufflevector(f, f, 4, 5, 6, 7), dfxl_d);
+   const lanes_v8i other = ~direct & ((v & INT32_MAX) != 0);
+   if (__builtin_expect(!any8(other), 1))
+      return;
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      if (other[p])
+         cs->v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, q->s[p], &x->n).d);
+      if (other[TEX_QUAD + p])
+         ct->v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, q->t[p], &x->n).d);
+   }
 }
 
 /* floor(a) saturated to int32 (counted), as a double, and which lanes saturated. */
@@ -62,15 +91,19 @@ floor_int32(dfxl_d a, dfxl_i *sat, struct dfxl_stats *st)
 }
 
 /* tex_ffloor with TEX_WEIGHT_BITS fraction bits: the integer part (floor),
- * saturated to int32 (counted, fraction 0 then), and the fraction's bits. */
+ * saturated to int32 (counted, fraction 0 then), and the fraction's bits.
+ * `bounded`: a clamped coordinate, scaled, which tex_bind.c's bounds keep
+ * far inside int32, so that nothing saturates and nothing is checked. */
 static inline __attribute__((always_inline)) void
-floor_frac(struct dfxl a, lanes_v4i *ip, lanes_v4i *frac, struct dfxl_stats *st)
+floor_frac(struct dfxl a, const bool bounded, lanes_v4i *ip, lanes_v4i *frac,
+           struct dfxl_stats *st)
 {
-   dfxl_i sat;
-   const dfxl_d cl = floor_int32(a.v, &sat, st);
+   dfxl_i sat = dfxl_splat(0);
+   const dfxl_d cl = bounded ? dfxl_floor(a.v) : floor_int32(a.v, &sat, st);
    const dfxl_d fr = dfxl_floor(a.v * (double)TEX_WEIGHT_ONE) - cl * (double)TEX_WEIGHT_ONE;
    *ip = __builtin_convertvector(cl, lanes_v4i);
-   *frac = __builtin_convertvector(dfxl_seld(sat, (dfxl_d){ 0, 0, 0, 0 }, fr), lanes_v4i);
+   *frac = __builtin_convertvector(bounded ? fr : dfxl_seld(sat, (dfxl_d){ 0, 0, 0, 0 }, fr),
+                                   lanes_v4i);
 }
 
 /* frac_of: c - floor(c) (floor saturated to int32, through binary32 into
@@ -127,7 +160,7 @@ static inline __attribute__((always_inline)) void
 lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const struct tex_axis *ax,
               const double lax[3], struct dfxl c, struct lanes_addr *a, struct dfxl_stats *st)
 {
-   bool border = false;
+   bool border = false, bounded = false;
    dfxl_i odd;
    lanes_v4i i, w;
    const int32_t size = ax->size;
@@ -136,12 +169,12 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    case TEX_WRAP_REPEAT: {
       const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, st), splat(lax[0]), st);
       if (!linear) {
-         floor_frac(s, &i, &w, st);
+         floor_frac(s, false, &i, &w, st);
          a->i0 = a->i1 = clamp4i(i, 0, size - 1);
          a->w = zero;
          return;
       }
-      floor_frac(dfxl_sub(s, splat(u->lk_texel_offset), st), &i, &w, st);
+      floor_frac(dfxl_sub(s, splat(u->lk_texel_offset), st), false, &i, &w, st);
       const lanes_v4i k = clamp4i(i, -1, size - 1);
       const lanes_v4i last = { size - 1, size - 1, size - 1, size - 1 };
       const lanes_v4i sz = { size, size, size, size };
@@ -164,18 +197,19 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       if (mirror)
          c.v = dfxl_abs(c.v);
       c = clamp(c, lax);
+      bounded = true;
       break;
    }
    }
    struct dfxl s = dfxl_mul(c, splat(lax[0]), st);
    if (!linear) {
-      floor_frac(s, &i, &w, st);
+      floor_frac(s, bounded, &i, &w, st);
       a->i0 = a->i1 = border ? inside4i(i, size) : clamp4i(i, 0, size - 1);
       a->w = zero;
       return;
    }
    s = dfxl_sub(s, splat(u->lk_texel_offset), st);
-   floor_frac(s, &i, &w, st);
+   floor_frac(s, bounded, &i, &w, st);
    /* the scalar path's i + 1 in 64 bits: INT32_MAX + 1 is outside and
     * above every size, as INT32_MAX itself */
    const lanes_v4i max = { INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX };
@@ -196,9 +230,6 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
  * blend one channel of every tap, the same IEEE operations element by
  * element, for the units tex_bind.c marks `lanes_soa`.  Shadow samplers
  * and other layouts take the per-pixel taps. */
-typedef float lanes_v8f __attribute__((vector_size(32)));
-typedef int32_t lanes_v8i __attribute__((vector_size(32)));
-
 /* The taps' words at byte offsets `off` (lanes whose tap is in the
  * texture; the others read the level's first texel and are replaced by
  * the border afterwards). */
@@ -390,7 +421,8 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
    struct tex_fst x = { { 0, 0 }, { 0, 0 } };
    struct dfxl_stats st = DFXL_STATS(optimistic);
    const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
-   const struct dfxl cs = coord(u, q->s, &x), ct = coord(u, q->t, &x);
+   struct dfxl cs, ct;
+   coords(u, q, &cs, &ct, &x);
    int layer[TEX_QUAD] = { 0, 0, 0, 0 };
    int32_t lod[TEX_QUAD];
    lanes_v4f out[4];
@@ -516,4 +548,72 @@ tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, 
          if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt)
             return special[i].fn[nolod];
    return nolod ? quad2_generic_nolod : quad2_generic;
+}
+
+/* Two quads of a unit that reads one level without its LOD and filters one
+ * channel per vector (the specialised quads' state): quad2's operations
+ * for both, each step for the two before the next.  A sample's chain of
+ * dependent operations is long and the compiled shader's calls come one
+ * after the other, so one quad a call leaves the processor waiting on
+ * latencies; two side by side overlap.  False, leaving nothing counted,
+ * when a lane had a range event (the caller then takes each quad alone). */
+static inline __attribute__((always_inline)) bool
+pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX_QUAD],
+      const struct quad_kind k, const bool linear)
+{
+   struct tex_fst x = { { 0, 0 }, { 0, 0 } };
+   struct dfxl_stats st = DFXL_STATS(true);
+   struct dfxl cs[2], ct[2];
+   lanes_v4i zoff[2] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } };
+   const struct tex_level *lv = &u->view.level[0];
+   for (unsigned i = 0; i < 2; i++) {
+      coords(u, &q[i], &cs[i], &ct[i], &x);
+      if (u->view.target == TEX_TARGET_2D_ARRAY)
+         for (unsigned p = 0; p < TEX_QUAD; p++)
+            zoff[i][p] = layer_of(u, q[i].layer[p]) * (int32_t)lv->img_stride;
+   }
+   struct lanes_addr A[2], B[2];
+   for (unsigned i = 0; i < 2; i++)
+      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], cs[i], &A[i], &st);
+   for (unsigned i = 0; i < 2; i++)
+      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], ct[i], &B[i], &st);
+   const bool border = may_border(k.ws, linear) || may_border(k.wt, linear);
+   lanes_v4f out[2][4];
+   for (unsigned i = 0; i < 2; i++)
+      soa_level2(u, linear, border, 0, &A[i], &B[i], zoff[i], out[i]);
+   if (dfxl_any(dfxl_trouble(&st)))
+      return false;
+   memcpy(rgba, out, sizeof(out));
+   dfxl_stats_add(&x.d, st);
+   tex_fst_flush(&x, u->stats);
+   return true;
+}
+
+#define PAIR2_FN(name, quad_fn, ws, wt)                                                      \
+   static void name(const struct tex_unit *u, const struct tex_quad q[2],                    \
+                    enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD])                    \
+   {                                                                                         \
+      const struct quad_kind k = { ws, wt, 1, true };                                        \
+      if (ctl != TEX_LOD_DERIVS &&                                                           \
+          (u->samp.mag_filter != TEX_FILTER_NEAREST ? pair2(u, q, rgba, k, true)             \
+                                                    : pair2(u, q, rgba, k, false)))          \
+         return;                                                                             \
+      quad_fn(u, &q[0], ctl, rgba[0]);                                                       \
+      quad_fn(u, &q[1], ctl, rgba[1]);                                                       \
+   }
+
+PAIR2_FN(pair2_rr_nolod, quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT)
+PAIR2_FN(pair2_ee_nolod, quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE)
+PAIR2_FN(pair2_mm_nolod, quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT)
+
+tex_quad2_fn LANES_FN(tex_dfx19_2d_pair_lanes)(const struct tex_unit *u, bool noskip, bool nolod)
+{
+   const tex_quad_fn one = LANES_FN(tex_dfx19_2d_lanes)(u, noskip, nolod);
+   if (one == quad2_rr_nolod)
+      return pair2_rr_nolod;
+   if (one == quad2_ee_nolod)
+      return pair2_ee_nolod;
+   if (one == quad2_mm_nolod)
+      return pair2_mm_nolod;
+   return NULL;
 }

@@ -167,6 +167,17 @@ void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
       tex_unit_sample_generic(u, q, ctl, rgba);
 }
 
+void tex_unit_sample2(const struct tex_unit *u, const struct tex_quad q[2],
+                      enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD])
+{
+   if (u->quad2) {
+      u->quad2(u, q, ctl, rgba);
+      return;
+   }
+   tex_unit_sample(u, &q[0], ctl, rgba[0]);
+   tex_unit_sample(u, &q[1], ctl, rgba[1]);
+}
+
 void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
                              enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
 {

@@ -247,7 +247,7 @@ static void rand_quad(struct tex_quad *q, const struct tex_unit *u)
    }
 }
 
-static uint64_t quads, fast_quads, lanes_quads, nolod_quads;
+static uint64_t quads, fast_quads, lanes_quads, nolod_quads, pair_quads;
 
 enum mode { LANES_BEST, LANES_SSE2, SCALAR };
 
@@ -305,6 +305,23 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
                   (double)r0[0][0], (double)r1[0][0], (unsigned long long)s_gen.sat,
                   (unsigned long long)s_fast.sat, (unsigned long long)s_gen.flush,
                   (unsigned long long)s_fast.flush);
+         /* two quads in one call: the quad function's bits and range
+          * events on each (the pair function where the unit has one) */
+         struct tex_quad two[2] = { q, q };
+         rand_quad(&two[1], &u);
+         float one_by_one[2][4][TEX_QUAD], paired[2][4][TEX_QUAD];
+         struct ns_stats s_one = { 0, 0 }, s_two = { 0, 0 };
+         u.stats = &s_one;
+         tex_unit_sample(&u, &two[0], ctl, one_by_one[0]);
+         tex_unit_sample(&u, &two[1], ctl, one_by_one[1]);
+         u.stats = &s_two;
+         tex_unit_sample2(&u, two, ctl, paired);
+         const bool ok2 = !memcmp(one_by_one, paired, sizeof(paired)) &&
+                          s_one.sat == s_two.sat && s_one.flush == s_two.flush;
+         if (!ok2 && bad++ < 5)
+            CHECK(ok2, "%s unit %u quad %u: two quads in one call (%s) differ from each alone",
+                  name, i, j, u.quad2 ? "pair function" : "quad twice");
+         pair_quads += u.quad2 != NULL;
          quads++;
          fast_quads += u.quad != NULL;
          lanes_quads += u.quad && u.dims == 2 && u.kind == TEX_NS_DFX &&
@@ -336,6 +353,9 @@ int main(void)
           (unsigned long long)nolod_quads);
    CHECK(nolod_quads > 10000, "only %llu quads left the LOD out", (unsigned long long)nolod_quads);
    CHECK(lanes_quads > 300000, "only %llu quads took the lanes", (unsigned long long)lanes_quads);
+   printf("  %llu pairs of quads through a pair function\n", (unsigned long long)pair_quads);
+   CHECK(pair_quads > 5000, "only %llu pairs took a pair function",
+         (unsigned long long)pair_quads);
    CHECK(fast_quads > 1000000, "only %llu quads took the specialised path",
          (unsigned long long)fast_quads);
    return t_summary("tex_fast");
