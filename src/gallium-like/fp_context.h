@@ -188,11 +188,10 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                struct rast_context *rc);
 void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
-/* A quad whose operands compiled code laid out as tgsi_exec's get_samples
- * would have (fp_jit_sample.c); control is an enum tgsi_sampler_control. */
+/* Two quads whose operands compiled code laid out as tgsi_exec's
+ * get_samples would have (fp_jit_sample.c); control is an enum
+ * tgsi_sampler_control. */
 struct tex_quad;
-void fp_tgsi_sample_quad(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
-                         uint32_t control, const struct tex_quad *q, float rgba[4][4]);
 void fp_tgsi_sample_quad2(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
                           uint32_t control, uint32_t quads, const struct tex_quad *q,
                           float rgba[2][4][4]);

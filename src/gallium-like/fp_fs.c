@@ -93,39 +93,36 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
    return mask;
 }
 
-/* A quad alone: with the eight-lane code, its second half the same quad
- * with every lane off (fp_jit_context.quads = 1: not sampled again). */
+/* The compiled function on q0 and q1 with the pixels `live` (q0's in bits
+ * 0-3, q1's in 4-7); `quads` 1: q1 is q0 again, every lane of it off, and
+ * not sampled again (fp_jit_context.quads).  Returns the pixels kept. */
+static unsigned fp_fs_run_jit(struct fp_fs_thread *th, const struct rast_quad *q0,
+                              const struct rast_quad *q1, struct rast_shaded_quad *out0,
+                              struct rast_shaded_quad *out1, unsigned live, unsigned quads)
+{
+   int32_t lanes[2 * RAST_QUAD_SIZE];
+   for (unsigned p = 0; p < 2 * RAST_QUAD_SIZE; p++)
+      lanes[p] = (live >> p & 1) ? ~0 : 0;
+   th->jit_ctx.quads = quads;
+   th->fp->fs->jit->func(&th->jit_ctx, q0, q1, out0, out1, lanes);
+   th->quads_jit += quads;
+   unsigned mask = 0;
+   for (unsigned p = 0; p < 2 * RAST_QUAD_SIZE; p++)
+      mask |= (unsigned)(lanes[p] != 0) << p;
+   return mask & live;
+}
+
 static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    struct fp_fs_thread *th = ctx;
-   int32_t lanes[2 * RAST_QUAD_SIZE] = { 0 };
-   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-      lanes[p] = (q->mask >> p & 1) ? ~0 : 0;
-   th->jit_ctx.quads = 1;
-   th->fp->fs->jit->func(&th->jit_ctx, q, q, out, &th->spare, lanes);
-   th->quads_jit++;
-   unsigned mask = 0;
-   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-      mask |= (lanes[p] != 0) << p;
-   return mask & q->mask;
+   return fp_fs_run_jit(th, q, q, out, &th->spare, q->mask, 1);
 }
 
 /* Two quads of a primitive, one call of the eight-lane code. */
 static unsigned fp_fs_shade2_jit(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
                                  struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
 {
-   struct fp_fs_thread *th = ctx;
-   const unsigned live = q0->mask | q1->mask << 4;
-   int32_t lanes[2 * RAST_QUAD_SIZE];
-   for (unsigned p = 0; p < 2 * RAST_QUAD_SIZE; p++)
-      lanes[p] = (live >> p & 1) ? ~0 : 0;
-   th->jit_ctx.quads = 2;
-   th->fp->fs->jit->func(&th->jit_ctx, q0, q1, out0, out1, lanes);
-   th->quads_jit += 2;
-   unsigned mask = 0;
-   for (unsigned p = 0; p < 2 * RAST_QUAD_SIZE; p++)
-      mask |= (unsigned)(lanes[p] != 0) << p;
-   return mask & live;
+   return fp_fs_run_jit(ctx, q0, q1, out0, out1, q0->mask | q1->mask << 4, 2);
 }
 
 /* Compiles the bound shader when it is due; false leaves it interpreted. */

@@ -23,6 +23,7 @@ struct gallivm_state;   /* lp_bld_jit_types.h does not declare it */
 #include "rast/rast.h"
 
 struct tgsi_sampler;
+struct lp_type;
 struct tex_quad;
 struct tgsi_shader_info;
 struct tgsi_token;
@@ -39,10 +40,8 @@ struct fp_jit_context {
                   float derivs[3][2][RAST_QUAD_SIZE], const int32_t offsets[3][RAST_QUAD_SIZE],
                   float rgba[4][RAST_QUAD_SIZE]);
    void (*size)(struct tgsi_sampler *s, uint32_t texture, int32_t lod, int32_t dims[4]);
-   /* plain 2-D samples, the quad laid out by the code (fp_tgsi_sample_quad),
-    * and two quads' in one call (fp_tgsi_sample_quad2: `quads` of them real) */
-   void (*sample_quad)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
-                       uint32_t control, const struct tex_quad *q, float rgba[4][RAST_QUAD_SIZE]);
+   /* plain 2-D samples: the two quads laid out by the code, in one call
+    * (fp_tgsi_sample_quad2: `quads` of them real) */
    void (*sample_quad2)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
                         uint32_t control, uint32_t quads, const struct tex_quad *q,
                         float rgba[2][4][RAST_QUAD_SIZE]);
@@ -81,6 +80,12 @@ struct lp_build_sampler_soa;
 struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
                                                   void *nir_shader);
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);
+/* Quad k's four lanes of a vector of nq quads' lanes (NULL stays NULL),
+ * and the vector of nq quads' lanes from each quad's four. */
+LLVMValueRef fp_jit_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
+                              unsigned nq);
+LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[2],
+                               struct lp_type type4, unsigned nq);
 
 /* Quads a fragment shader, vertices a vertex shader, is interpreted for
  * before it is compiled (see docs/jit.md). */

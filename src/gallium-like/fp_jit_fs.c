@@ -24,7 +24,6 @@
 #include "gallivm/lp_bld_init.h"
 #include "gallivm/lp_bld_intr.h"
 #include "gallivm/lp_bld_nir.h"
-#include "gallivm/lp_bld_pack.h"
 #include "gallivm/lp_bld_tgsi.h"
 #include "gallivm/lp_bld_type.h"
 #include "nir/tgsi_to_nir.h"
@@ -153,14 +152,7 @@ static LLVMValueRef fp_load_quads(struct gallivm_state *gallivm, const LLVMValue
    LLVMValueRef v[2];
    for (unsigned k = 0; k < nq; k++)
       v[k] = fp_load_vec(gallivm, quads[k], offset, lp_build_vec_type(gallivm, type4));
-   return nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
-}
-
-/* Quad k's four lanes of v (the vector of nq quads' lanes). */
-static LLVMValueRef fp_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
-                                 unsigned nq)
-{
-   return nq == 1 ? v : lp_build_extract_range(gallivm, v, k * RAST_QUAD_SIZE, RAST_QUAD_SIZE);
+   return fp_jit_join_quads(gallivm, v, type4, nq);
 }
 
 /* gl_FragCoord.xy of the quad's four pixels: (x + (p & 1), y + (p >> 1)) + centre. */
@@ -189,7 +181,7 @@ static LLVMValueRef fp_quads_coord(struct gallivm_state *gallivm, struct lp_type
    LLVMValueRef v[2];
    for (unsigned k = 0; k < nq; k++)
       v[k] = fp_quad_coord(gallivm, type4, quads[k], offset, step, centre);
-   return nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
+   return fp_jit_join_quads(gallivm, v, type4, nq);
 }
 
 /* The shader on `nq` quads: 4 lanes a quad, gallivm's quad operations
@@ -318,7 +310,7 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
             fp_store(gallivm, outs[k],
                      offsetof(struct rast_shaded_quad, color) +
                         ((size_t)cb * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
-                     fp_quad_part(gallivm, v, k, nq));
+                     fp_jit_quad_part(gallivm, v, k, nq));
       }
    }
    if (depth_output >= 0) {
@@ -328,7 +320,7 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
          v = LLVMBuildLoad2(b, fvec, outputs[depth_output][2], "");
       for (unsigned k = 0; k < nq; k++)
          fp_store(gallivm, outs[k], offsetof(struct rast_shaded_quad, depth),
-                  fp_quad_part(gallivm, v, k, nq));
+                  fp_jit_quad_part(gallivm, v, k, nq));
    }
 
    LLVMSetAlignment(LLVMBuildStore(b, lp_build_mask_end(&mask), mask_ptr), 4);

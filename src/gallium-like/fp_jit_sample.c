@@ -138,7 +138,6 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
    ctx->sampler = s;
    ctx->sample = fp_jit_sample;
    ctx->size = fp_jit_size;
-   ctx->sample_quad = fp_tgsi_sample_quad;
    ctx->sample_quad2 = fp_tgsi_sample_quad2;
    ctx->quads = 2;
 }
@@ -207,19 +206,24 @@ static void fp_emit_ctx_call(struct gallivm_state *gallivm, LLVMValueRef context
    LLVMBuildCall2(gallivm->builder, fn_type, fn, args, n, "");
 }
 
-/* The quads of a call (fp_jit_fs.c): the vector type of one quad's four
- * lanes, and quad k's part of a vector of all of them (NULL stays NULL). */
+/* The quads of a call (fp_jit_fs.c). */
 static unsigned fp_quads(const struct lp_sampler_params *params)
 {
    return params->type.length / RAST_QUAD_SIZE;
 }
 
-static LLVMValueRef fp_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
-                            unsigned nq)
+LLVMValueRef fp_jit_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
+                              unsigned nq)
 {
    if (!v || nq == 1)
       return v;
    return lp_build_extract_range(gallivm, v, k * RAST_QUAD_SIZE, RAST_QUAD_SIZE);
+}
+
+LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[2],
+                               struct lp_type type4, unsigned nq)
+{
+   return nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
 }
 
 /* The texel vectors of nq quads' result arrays, each 4 vectors. */
@@ -234,7 +238,7 @@ static void fp_load_texels(struct gallivm_state *gallivm, struct lp_type type4,
          v[k] = LLVMBuildLoad2(gallivm->builder, fvec,
                                LLVMBuildGEP2(gallivm->builder, fvec, rgba, &idx, 1, ""), "");
       }
-      params->texel[c] = nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
+      params->texel[c] = fp_jit_join_quads(gallivm, v, type4, nq);
    }
 }
 
@@ -250,8 +254,9 @@ static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
           fp_control(key) != TGSI_SAMPLER_DERIVS_EXPLICIT;
 }
 
-/* A plain 2-D sample: the struct tex_quad fp_tgsi_get_samples would build,
- * one a quad, stored by the code, and one call into the unit's glue. */
+/* A plain 2-D sample on the two quads of a call: the struct tex_quad
+ * fp_tgsi_get_samples would build, one a quad, stored by the code, and one
+ * call into the unit's glue. */
 static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_sampler_params *params)
 {
    LLVMContextRef lc = gallivm->context;
@@ -267,37 +272,25 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
    const unsigned per = sizeof(struct tex_quad) / sizeof(float[RAST_QUAD_SIZE]);
    LLVMValueRef q = fp_vec_array(gallivm, fvec, per * nq, "tex_quad");
    for (unsigned k = 0; k < nq; k++) {
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_part(gallivm, params->coords[0], k, nq));
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_part(gallivm, params->coords[1], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_jit_quad_part(gallivm, params->coords[0], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_jit_quad_part(gallivm, params->coords[1], k, nq));
       fp_store_vec(gallivm, q, fvec, k * per + FP_Q(r), NULL);
       fp_store_vec(gallivm, q, fvec, k * per + FP_Q(layer), NULL);
       fp_store_vec(gallivm, q, fvec, k * per + FP_Q(ref), NULL);
       fp_store_vec(gallivm, q, fvec, k * per + FP_Q(lod),
-                   control == TGSI_SAMPLER_LOD_NONE ? NULL : fp_part(gallivm, params->lod, k, nq));
+                   control == TGSI_SAMPLER_LOD_NONE ? NULL : fp_jit_quad_part(gallivm, params->lod, k, nq));
    }
 #undef FP_Q
    LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
-   LLVMValueRef texture = fp_texture_unit(gallivm, params->texture_index,
-                                          fp_part(gallivm, params->texture_index_offset, 0, nq));
+   LLVMValueRef texture = lp_build_const_int32(gallivm, params->texture_index);
    LLVMValueRef sampler = lp_build_const_int32(gallivm, params->sampler_index);
    LLVMValueRef ctl = lp_build_const_int32(gallivm, control);
-   if (nq == 1) {
-      LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp };
-      LLVMValueRef args[] = { NULL, texture, sampler, ctl, q, rgba };
-      fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quad),
-                       arg_types, args, ARRAY_SIZE(args));
-   } else {
-      /* the quads' unit from the first lane, as tgsi_exec takes it per quad:
-       * a dynamic index that differs between the two quads takes the
-       * general path's call per quad (fp_emit_tex_sample) */
-      LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                           offsetof(struct fp_jit_context, quads), i32);
-      LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, vp, vp };
-      LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, q, rgba };
-      fp_emit_ctx_call(gallivm, params->context_ptr,
-                       offsetof(struct fp_jit_context, sample_quad2), arg_types, args,
-                       ARRAY_SIZE(args));
-   }
+   LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                        offsetof(struct fp_jit_context, quads), i32);
+   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, vp, vp };
+   LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, q, rgba };
+   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quad2),
+                    arg_types, args, ARRAY_SIZE(args));
    fp_load_texels(gallivm, type4, rgba, nq, params);
 }
 
@@ -321,10 +314,10 @@ static void fp_emit_tex_general(const struct fp_jit_sampler *js, struct gallivm_
 
    LLVMValueRef coords = fp_vec_array(gallivm, fvec, 5, "tex_coords");
    for (unsigned i = 0; i < 5; i++)
-      fp_store_vec(gallivm, coords, fvec, i, fp_part(gallivm, params->coords[i], k, nq));
+      fp_store_vec(gallivm, coords, fvec, i, fp_jit_quad_part(gallivm, params->coords[i], k, nq));
 
    LLVMValueRef lod = fp_vec_array(gallivm, fvec, 1, "tex_lod");
-   fp_store_vec(gallivm, lod, fvec, 0, fp_part(gallivm, params->lod, k, nq));
+   fp_store_vec(gallivm, lod, fvec, 0, fp_jit_quad_part(gallivm, params->lod, k, nq));
 
    /* Only the derivatives the target has are set (visit_tex leaves the
     * rest of lp_derivatives uninitialised). */
@@ -340,19 +333,19 @@ static void fp_emit_tex_general(const struct fp_jit_sampler *js, struct gallivm_
    }
    for (int a = 0; a < 3; a++) {
       fp_store_vec(gallivm, derivs, fvec, a * 2,
-                   a < nderiv ? fp_part(gallivm, params->derivs->ddx[a], k, nq) : NULL);
+                   a < nderiv ? fp_jit_quad_part(gallivm, params->derivs->ddx[a], k, nq) : NULL);
       fp_store_vec(gallivm, derivs, fvec, a * 2 + 1,
-                   a < nderiv ? fp_part(gallivm, params->derivs->ddy[a], k, nq) : NULL);
+                   a < nderiv ? fp_jit_quad_part(gallivm, params->derivs->ddy[a], k, nq) : NULL);
    }
 
    LLVMValueRef offsets = fp_vec_array(gallivm, ivec, 3, "tex_offsets");
    for (unsigned a = 0; a < 3; a++)
       fp_store_vec(gallivm, offsets, ivec, a,
                    (params->sample_key & LP_SAMPLER_OFFSETS)
-                      ? fp_part(gallivm, params->offsets[a], k, nq) : NULL);
+                      ? fp_jit_quad_part(gallivm, params->offsets[a], k, nq) : NULL);
 
    LLVMValueRef texture = fp_texture_unit(gallivm, unit,
-                                          fp_part(gallivm, params->texture_index_offset, k, nq));
+                                          fp_jit_quad_part(gallivm, params->texture_index_offset, k, nq));
 
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, vp, vp, vp, LLVMPointerType(ivec, 0), vp };
    LLVMValueRef args[] = {
@@ -373,8 +366,10 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
       unit < PIPE_MAX_SHADER_SAMPLER_VIEWS ? js->tgsi_target[unit] : TGSI_TEXTURE_2D;
    const unsigned key = params->sample_key | (unsigned)target << FP_KEY_TARGET_SHIFT;
    const unsigned nq = fp_quads(params);
-   if (fp_plain_2d(target, params->sample_key) && !params->texture_index_offset &&
-       !(fp_env_debug() & FP_DEBUG_NOSKIP)) {
+   /* noskip compiles one quad a call and sends every instruction through
+    * get_samples; a dynamic unit index, which may differ between the two
+    * quads, takes the call per quad below */
+   if (nq == 2 && fp_plain_2d(target, params->sample_key) && !params->texture_index_offset) {
       fp_emit_tex_quad(gallivm, params);
       return;
    }

@@ -321,16 +321,20 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
    return fp_tex_bind(ts, sview_index, fv, ss);
 }
 
-/* The quad through the unit, and its counts. */
+/* `n` quads through the unit (one, or two in one call), and their counts. */
 static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_unit *u,
-                                  const struct tex_quad *q, enum tgsi_sampler_control control,
-                                  float rgba[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
+                                  const struct tex_quad *q, unsigned n,
+                                  enum tgsi_sampler_control control,
+                                  float rgba[][TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
 {
    const enum tex_lod_control ctl = fp_lod_control(control);
    const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
-   ts->lod_quads += lod_from_diffs;
-   ts->skip_lod += u->lod_skipped && lod_from_diffs;
-   tex_unit_sample(u, q, ctl, rgba);
+   ts->lod_quads += n * lod_from_diffs;
+   ts->skip_lod += n * (u->lod_skipped && lod_from_diffs);
+   if (n == 2)
+      tex_unit_sample2(u, q, ctl, rgba);
+   else
+      tex_unit_sample(u, q, ctl, rgba[0]);
    fp_tex_stats(ts);
 }
 
@@ -386,29 +390,13 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
             co[a][p] += k;
       }
    }
-   fp_unit_sample(ts, u, &q, control, rgba);
+   fp_unit_sample(ts, u, &q, 1, control, (float(*)[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])rgba);
 }
 
-/* A quad the compiled code laid out itself (fp_jit_sample.c: a plain 2-D
- * sample, the operands fp_tgsi_get_samples would have built), without the
- * copies. */
-void fp_tgsi_sample_quad(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
-                         uint32_t sampler_index, uint32_t control, const struct tex_quad *q,
-                         float rgba[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
-{
-   struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
-   const struct fp_sampler_view *fv;
-   const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
-   if (!u) {
-      memset(rgba, 0, sizeof(float) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
-      return;
-   }
-   fp_unit_sample(ts, u, q, (enum tgsi_sampler_control)control, rgba);
-}
-
-/* Two quads laid out so, in one call of the unit (tex_unit_sample2);
- * `quads` 1: the second is the first again (a quad shaded alone on eight
- * lanes) and is not sampled, its texels zero. */
+/* Two quads the compiled code laid out itself (fp_jit_sample.c: a plain
+ * 2-D sample, the operands fp_tgsi_get_samples would have built), in one
+ * call of the unit.  `quads` 1: the second is the first again (a quad
+ * shaded alone on eight lanes) and is not sampled, its texels zero. */
 void fp_tgsi_sample_quad2(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
                           uint32_t sampler_index, uint32_t control, uint32_t quads,
                           const struct tex_quad *q, float rgba[2][4][TGSI_QUAD_SIZE])
@@ -416,18 +404,10 @@ void fp_tgsi_sample_quad2(struct tgsi_sampler *tgsi_sampler, uint32_t sview_inde
    struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
    const struct fp_sampler_view *fv;
    const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
-   if (!u || quads < 2) {
+   if (!u || quads < 2)
       memset(rgba, 0, sizeof(float) * 2 * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
-      if (u)
-         fp_unit_sample(ts, u, &q[0], (enum tgsi_sampler_control)control, rgba[0]);
-      return;
-   }
-   const enum tex_lod_control ctl = fp_lod_control((enum tgsi_sampler_control)control);
-   const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
-   ts->lod_quads += 2 * lod_from_diffs;
-   ts->skip_lod += 2 * (u->lod_skipped && lod_from_diffs);
-   tex_unit_sample2(u, q, ctl, rgba);
-   fp_tex_stats(ts);
+   if (u)
+      fp_unit_sample(ts, u, q, quads < 2 ? 1 : 2, (enum tgsi_sampler_control)control, rgba);
 }
 
 static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,

@@ -31,12 +31,12 @@ struct rast_lanes {
     * rectangle), specialised for the unit's state; `nolod`: the one that
     * leaves out the LOD (tex_unit_lod_unused); `noskip`: the one that
     * computes every quad with its range events handled at each operation
-    * (not optimistically, dfx_lanes.h). */
-   tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool noskip, bool nolod);
-   /* Two quads of that unit in one call, their operations side by side;
-    * NULL where the unit's state has no such function (then the quad
-    * function twice). */
-   tex_quad2_fn (*tex_dfx19_2d_pair)(const struct tex_unit *u, bool noskip, bool nolod);
+    * (not optimistically, dfx_lanes.h).
+    * `pair`: the function for two quads of that unit in one call, their
+    * operations side by side, or NULL where the state has none (then the
+    * quad function twice). */
+   tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool noskip, bool nolod,
+                               tex_quad2_fn *pair);
 };
 
 #define LANES_GLUE2(a, b) a##b

@@ -14,5 +14,4 @@ const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
    .persp_dfx19 = LANES_FN(persp_dfx19_lanes),
    .persp2_dfx19 = LANES_FN(persp2_dfx19_lanes),
    .tex_dfx19_2d = LANES_FN(tex_dfx19_2d_lanes),
-   .tex_dfx19_2d_pair = LANES_FN(tex_dfx19_2d_pair_lanes),
 };

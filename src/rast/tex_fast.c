@@ -73,18 +73,11 @@ QUAD_FN(quad_float_1d, TEX_FK_FLOAT, 1)
 QUAD_FN(quad_float_2d, TEX_FK_FLOAT, 2)
 QUAD_FN(quad_float_3d, TEX_FK_FLOAT, 3)
 
-/* The pair function of the quad tex_fast_choose chose, where there is one. */
-tex_quad2_fn tex_fast_choose_pair(const struct tex_unit *u, bool scalar, bool noskip, bool nolod)
-{
-   if (scalar || u->view.target == TEX_TARGET_CUBE || u->dims != 2 || u->kind != TEX_NS_DFX ||
-       u->ns->dfx.mant_bits != DFX_MANT_BITS_SEED || !rast_lanes()->tex_dfx19_2d_pair)
-      return NULL;
-   return rast_lanes()->tex_dfx19_2d_pair(u, noskip, nolod);
-}
-
-tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod)
+tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod,
+                            tex_quad2_fn *pair)
 {
    *nolod = false;
+   *pair = NULL;
    static const tex_quad_fn table[2][3] = {
       { quad_dfx19_1d, quad_dfx19_2d, quad_dfx19_3d },
       { quad_float_1d, quad_float_2d, quad_float_3d },
@@ -94,7 +87,7 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
    if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED) {
       if (!scalar && u->dims == 2 && rast_lanes()->tex_dfx19_2d) {
          *nolod = !noskip && tex_unit_lod_unused(u);
-         return rast_lanes()->tex_dfx19_2d(u, noskip, *nolod);
+         return rast_lanes()->tex_dfx19_2d(u, noskip, *nolod, pair);
       }
       return table[0][u->dims - 1];
    }

@@ -531,25 +531,6 @@ QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true
 QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false)
 QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true)
 
-tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod)
-{
-   if (noskip)
-      return quad2_precise;
-   static const struct {
-      enum tex_wrap ws, wt;
-      tex_quad_fn fn[2];
-   } special[] = {
-      { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, { quad2_rr, quad2_rr_nolod } },
-      { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, { quad2_ee, quad2_ee_nolod } },
-      { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, { quad2_mm, quad2_mm_nolod } },
-   };
-   if (u->lanes_soa)
-      for (unsigned i = 0; i < sizeof(special) / sizeof(special[0]); i++)
-         if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt)
-            return special[i].fn[nolod];
-   return nolod ? quad2_generic_nolod : quad2_generic;
-}
-
 /* Two quads of a unit that reads one level without its LOD and filters one
  * channel per vector (the specialised quads' state): quad2's operations
  * for both, each step for the two before the next.  A sample's chain of
@@ -606,14 +587,29 @@ PAIR2_FN(pair2_rr_nolod, quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT)
 PAIR2_FN(pair2_ee_nolod, quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE)
 PAIR2_FN(pair2_mm_nolod, quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT)
 
-tex_quad2_fn LANES_FN(tex_dfx19_2d_pair_lanes)(const struct tex_unit *u, bool noskip, bool nolod)
+tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
+                                        tex_quad2_fn *pair)
 {
-   const tex_quad_fn one = LANES_FN(tex_dfx19_2d_lanes)(u, noskip, nolod);
-   if (one == quad2_rr_nolod)
-      return pair2_rr_nolod;
-   if (one == quad2_ee_nolod)
-      return pair2_ee_nolod;
-   if (one == quad2_mm_nolod)
-      return pair2_mm_nolod;
-   return NULL;
+   *pair = NULL;
+   if (noskip)
+      return quad2_precise;
+   static const struct {
+      enum tex_wrap ws, wt;
+      tex_quad_fn fn[2];
+      tex_quad2_fn pair_nolod;
+   } special[] = {
+      { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, { quad2_rr, quad2_rr_nolod }, pair2_rr_nolod },
+      { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, { quad2_ee, quad2_ee_nolod },
+        pair2_ee_nolod },
+      { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, { quad2_mm, quad2_mm_nolod },
+        pair2_mm_nolod },
+   };
+   if (u->lanes_soa)
+      for (unsigned i = 0; i < sizeof(special) / sizeof(special[0]); i++)
+         if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt) {
+            if (nolod)
+               *pair = special[i].pair_nolod;
+            return special[i].fn[nolod];
+         }
+   return nolod ? quad2_generic_nolod : quad2_generic;
 }

@@ -324,8 +324,9 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
          pair_quads += u.quad2 != NULL;
          quads++;
          fast_quads += u.quad != NULL;
+         tex_quad2_fn pair;
          lanes_quads += u.quad && u.dims == 2 && u.kind == TEX_NS_DFX &&
-                        u.quad == rast_lanes()->tex_dfx19_2d(&u, j & 1, u.lod_skipped);
+                        u.quad == rast_lanes()->tex_dfx19_2d(&u, j & 1, u.lod_skipped, &pair);
       }
    }
    CHECK(bad == 0, "%s: %u of %u quads differ", name, bad, units * per_unit);
