@@ -22,6 +22,7 @@
  * not a property of W.
  */
 #include <math.h>
+#include <string.h>
 #include "fixed/dfx.h"
 #include "fixed/fx_wide.h"
 #include "fixed/dfx_ops.h"
@@ -42,6 +43,15 @@ struct dfx dfx_from_double(struct dfx_format f, double d, struct dfx_stats *st)
    if (isinf(d)) {
       st->sat++;
       return dfx_max_mag_i(f, s);
+   }
+   /* |d| = n * 2^x with n the 53-bit significand, from the bits (a
+    * normal double; a subnormal one through frexp) */
+   uint64_t b;
+   memcpy(&b, &d, sizeof(b));
+   const int be = (int)((b >> 52) & 0x7ff);
+   if (be) {
+      const uint64_t n = (b & ((UINT64_C(1) << 52) - 1)) | (UINT64_C(1) << 52);
+      return dfx_from_exact_i(f, s, n, be - 1075, true, st);
    }
    int e;
    double fr = frexp(fabs(d), &e);      /* |d| = fr * 2^e, fr in [1/2, 1) */

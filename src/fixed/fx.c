@@ -18,14 +18,17 @@ int64_t fx_from_double(struct fx_format f, double d, struct fx_sat *s)
       s->low++;
       return 0;
    }
-   double r = round(ldexp(d, f.frac_bits));     /* ties away from zero */
+   /* d * 2^N is exact (a power of two at most 2^63 scales a double
+    * exactly, or to inf, as ldexp would) */
+   double r = round(d * fx_pow2(f.frac_bits));  /* ties away from zero */
    /* fx_max/fx_min need at most 63 bits; the double compare is exact at
     * the boundary because 2^(M+N-1) is a power of two. */
-   if (r >= ldexp(1.0, f.int_bits + f.frac_bits - 1)) {
+   const double top = fx_pow2(f.int_bits + f.frac_bits - 1);
+   if (r >= top) {
       s->high++;
       return fx_max(f);
    }
-   if (r < -ldexp(1.0, f.int_bits + f.frac_bits - 1)) {
+   if (r < -top) {
       s->low++;
       return fx_min(f);
    }
@@ -34,7 +37,7 @@ int64_t fx_from_double(struct fx_format f, double d, struct fx_sat *s)
 
 double fx_to_double(struct fx_format f, int64_t v)
 {
-   return ldexp((double)v, -(int)f.frac_bits);
+   return (double)v * fx_pow2(-(int)f.frac_bits);
 }
 
 /* v in units of 2^-from_frac -> units of 2^-to_frac, rounded. */

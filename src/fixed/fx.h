@@ -39,6 +39,15 @@ static inline int64_t fx_one(struct fx_format f)
    return INT64_C(1) << f.frac_bits;
 }
 
+/* 2^e exactly, for e in -1022..1023: the bits of the double.  ldexp is a
+ * library call with errno handling; the set-up converts every vertex with
+ * these, so they are worth being two instructions. */
+static inline double fx_pow2(int e)
+{
+   union { uint64_t u; double d; } b = { (uint64_t)(e + 1023) << 52 };
+   return b.d;
+}
+
 /* Clamp an exact intermediate into the format, counting a clamp. */
 static inline int64_t fx_sat(struct fx_format f, int64_t v, struct fx_sat *s)
 {

@@ -194,7 +194,7 @@ static inline v4f ub2f4(v4u words, unsigned byte)   /* rast_ub2f of each word's 
 }
 
 static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y,
-                                    const float (*src)[RAST_QUAD_SIZE],
+                                    unsigned mask, const float (*src)[RAST_QUAD_SIZE],
                                     unsigned r, unsigned g, unsigned b, unsigned a, bool x8)
 {
    const float (*k)[2] = (const float (*)[2])p->affine;
@@ -217,6 +217,9 @@ static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y
                   ub2f4(d, a) * (splat4(k[3][0]) + splat4(k[3][1]) * sa)) << (8 * a);
    for (unsigned c = 0; c < 3; c++)
       out |= f2ub4(clamp01_4(s[c]) * fs + ub2f4(d, off[c]) * fd) << (8 * off[c]);
+   /* pixels outside the mask keep their word */
+   const v4u keep = (v4u)((v4i){ 1, 2, 4, 8 } & (int32_t)mask) == 0;
+   out = (out & ~keep) | (d & keep);
    memcpy(px, &out, sizeof(out));
    memcpy(row0, &px[0], 8);
    memcpy(row1, &px[2], 8);
@@ -226,8 +229,11 @@ static inline void c8_blend_affine(const struct rast_cbuf_plan *p, int x, int y,
                                    const float (*src)[RAST_QUAD_SIZE],
                                    unsigned r, unsigned g, unsigned b, unsigned a, bool x8)
 {
-   if (mask == 0xf && p->quad4) {
-      c8_blend_affine4(p, x, y, src, r, g, b, a, x8);
+   /* a partial quad too, where all four pixels are in the framebuffer:
+    * the lanes are independent, and the masked-off ones are written back
+    * as they were (a quad is one thread's) */
+   if (p->quad4 && (mask == 0xf || (x + 1 < p->fb_w && y + 1 < p->fb_h))) {
+      c8_blend_affine4(p, x, y, mask, src, r, g, b, a, x8);
       return;
    }
    const float (*k)[2] = (const float (*)[2])p->affine;
@@ -414,6 +420,8 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       p->clamp = t->clamp;
       p->colormask = bt->colormask & 0xf;
       p->quad4 = !(rc->opts & RAST_OPT_SCALAR);
+      p->fb_w = (int)rc->fb.width;
+      p->fb_h = (int)rc->fb.height;
       p->bt = *bt;
       p->src = src;
 

@@ -62,7 +62,8 @@ struct rast_cbuf_plan {
    /* ADD with factors k0 + k1 * As (ZERO, ONE, SRC_ALPHA, INV_SRC_ALPHA):
     * rgb src, rgb dst, alpha src, alpha dst, as {k0, k1}. */
    float affine[4][2];
-   bool quad4;                    /* full quads on four lanes (not RAST_OPT_SCALAR) */
+   bool quad4;                    /* quads on four lanes (not RAST_OPT_SCALAR) */
+   int fb_w, fb_h;                /* the framebuffer: a quad inside has four pixels */
    float konst[4];                /* blend colour, clamped if the target clamps */
    unsigned src;                  /* index into rast_shaded_quad.color */
    enum rast_color_layout fast8;  /* no blend, full mask, 8-bit: the quad's fast store;

@@ -231,7 +231,7 @@ void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *f
    t->b_dy = t->e1x * S;
    t->k = bitlen64(det < 0 ? -(uint64_t)det : (uint64_t)det);
    t->kfmt = (struct fx_format){ 0, (uint8_t)t->k };
-   t->fscale = ldexpf(1.0f, -(int)t->k);
+   t->fscale = (float)fx_pow2(-(int)t->k);
    if (det) {
       t->rdet = ns->recip(ns, ns->from_scaled(ns, det, t->k, &st), &st);
       t->frdet = 1.0f / ((float)det * t->fscale);

@@ -116,6 +116,10 @@ PERSP_N(1)
 PERSP_N(2)
 PERSP_N(3)
 PERSP_N(4)
+PERSP_N(5)
+PERSP_N(6)
+PERSP_N(7)
+PERSP_N(8)
 
 static bool persp_optimistic(struct rast_front *fr, float *const in[2], const dfxl_i an[2],
                              const dfxl_i bn[2], unsigned nq)
@@ -125,6 +129,10 @@ static bool persp_optimistic(struct rast_front *fr, float *const in[2], const df
    case 2: return persp_2(fr, in, an, bn, nq);
    case 3: return persp_3(fr, in, an, bn, nq);
    case 4: return persp_4(fr, in, an, bn, nq);
+   case 5: return persp_5(fr, in, an, bn, nq);
+   case 6: return persp_6(fr, in, an, bn, nq);
+   case 7: return persp_7(fr, in, an, bn, nq);
+   case 8: return persp_8(fr, in, an, bn, nq);
    default:
       return nq == 2 ? persp(fr, in, an, bn, true, fr->tex.ln, 2)
                      : persp(fr, in, an, bn, true, fr->tex.ln, 1);
