@@ -44,19 +44,14 @@ struct dfx dfx_from_double(struct dfx_format f, double d, struct dfx_stats *st)
       st->sat++;
       return dfx_max_mag_i(f, s);
    }
-   /* |d| = n * 2^x with n the 53-bit significand, from the bits (a
-    * normal double; a subnormal one through frexp) */
+   /* |d| = n * 2^e from the double's fields (a subnormal has no implicit
+    * one and the exponent of the smallest normal); dfx_from_exact_i takes
+    * n of any length */
    uint64_t b;
    memcpy(&b, &d, sizeof(b));
    const int be = (int)((b >> 52) & 0x7ff);
-   if (be) {
-      const uint64_t n = (b & ((UINT64_C(1) << 52) - 1)) | (UINT64_C(1) << 52);
-      return dfx_from_exact_i(f, s, n, be - 1075, true, st);
-   }
-   int e;
-   double fr = frexp(fabs(d), &e);      /* |d| = fr * 2^e, fr in [1/2, 1) */
-   uint64_t n = (uint64_t)ldexp(fr, 53);
-   return dfx_from_exact_i(f, s, n, e - 53, true, st);
+   const uint64_t n = (b & ((UINT64_C(1) << 52) - 1)) | (be ? UINT64_C(1) << 52 : 0);
+   return dfx_from_exact_i(f, s, n, (be ? be : 1) - 1075, true, st);
 }
 
 double dfx_to_double(struct dfx_format f, struct dfx a)

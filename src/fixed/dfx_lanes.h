@@ -142,13 +142,6 @@ DFXL_INLINE dfxl_d dfxl_pow2(dfxl_i e)        /* 2^e, e in -1022..1023 */
    return (dfxl_d)dfxl_shl(e + 1023, dfxl_splat(52));
 }
 
-DFXL_INLINE double dfxl_pow2_1(int e)      /* the same, one number */
-{
-   const uint64_t b = (uint64_t)(e + 1023) << 52;
-   double d;
-   memcpy(&d, &b, sizeof(d));
-   return d;
-}
 
 DFXL_INLINE dfxl_d dfxl_abs(dfxl_d x)
 {
@@ -281,7 +274,7 @@ DFXL_INLINE struct dfxl dfxl_from_fixed(dfxl_i v, int k, struct dfxl_stats *st)
    if (st->optimistic) {
       const dfxl_i big = dfxl_shr(n, dfxl_splat(52)) != 0;     /* -INT64_MIN too */
       st->hi = dfxl_seld(big, (dfxl_d){ 0x1p32, 0x1p32, 0x1p32, 0x1p32 }, st->hi);
-      const dfxl_d ax = dfxl_to_d(n & dfxl_splat(((int64_t)1 << 52) - 1)) * dfxl_pow2_1(-k);
+      const dfxl_d ax = dfxl_to_d(n & dfxl_splat(((int64_t)1 << 52) - 1)) * fx_pow2(-k);
       const dfxl_d up = ax + (dfxl_d)((dfxl_i)(dfxl_grid(ax) * 0.5) & (ax != 0));
       return dfxl_round((dfxl_d)((dfxl_i)up | dfxl_shl(neg & 1, dfxl_splat(63))), st);
    }

@@ -87,11 +87,9 @@ static inline struct dfx dfx_from_fixed_i(struct dfx_format f, struct fx_format 
 
 static inline double dfx_to_double_i(struct dfx_format f, struct dfx a)
 {
-   /* M * 2^e built as a product with an exact power of two (e is within
+   /* M * 2^e as a product with an exact power of two (e is within
     * -60..20, far from the double range's ends): no libm call per pixel. */
-   union { uint64_t u; double d; } p;
-   p.u = (uint64_t)(1023 + dfx_exp_i(f, a.l)) << 52;
-   double v = (double)a.m * p.d;
+   double v = (double)a.m * fx_pow2(dfx_exp_i(f, a.l));
    return a.s ? -v : v;
 }
 

@@ -40,8 +40,9 @@ static inline int64_t fx_one(struct fx_format f)
 }
 
 /* 2^e exactly, for e in -1022..1023: the bits of the double.  ldexp is a
- * library call with errno handling; the set-up converts every vertex with
- * these, so they are worth being two instructions. */
+ * library call with errno handling; the set-up converts every vertex and
+ * the data paths every value with this, so it is two instructions (the one
+ * copy for fx, dfx and the lanes). */
 static inline double fx_pow2(int e)
 {
    union { uint64_t u; double d; } b = { (uint64_t)(e + 1023) << 52 };

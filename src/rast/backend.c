@@ -89,16 +89,22 @@ static void quad_color(struct rast_context *rc, struct rast_quad *q)
       color_stage(be, &be->out, q->x, q->y, mask);
 }
 
+/* color_stage for a pair, `kept` as shade_pair returns it. */
+static inline void color_stage_pair(const struct rast_backend *be, const struct rast_quad *q0,
+                                    const struct rast_quad *q1, unsigned kept)
+{
+   if (kept & 15)
+      color_stage(be, &be->out, q0->x, q0->y, kept & 15);
+   if (kept >> 4)
+      color_stage(be, &be->out2, q1->x, q1->y, kept >> 4);
+}
+
 static void pair_color(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
 {
    struct rast_backend *be = backend(rc);
    const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask);
-   const unsigned k0 = kept & 15, k1 = kept >> 4;
-   rc->stats.samples_passed += rast_popcount4(k0) + rast_popcount4(k1);
-   if (k0)
-      color_stage(be, &be->out, q0->x, q0->y, k0);
-   if (k1)
-      color_stage(be, &be->out2, q1->x, q1->y, k1);
+   rc->stats.samples_passed += rast_popcount4(kept & 15) + rast_popcount4(kept >> 4);
+   color_stage_pair(be, q0, q1, kept);
 }
 
 /* No depth/stencil, no blend, all channels, one 8-bit target. */
@@ -159,11 +165,7 @@ static void pair_early(struct rast_context *rc, struct rast_quad *q0, struct ras
    const unsigned m0 = early_zs(rc, be, q0), m1 = early_zs(rc, be, q1);
    if (!(m0 | m1) || !be->shade_needed)
       return;
-   const unsigned kept = shade_pair(rc, be, q0, m0, q1, m1);
-   if (kept & 15)
-      color_stage(be, &be->out, q0->x, q0->y, kept & 15);
-   if (kept >> 4)
-      color_stage(be, &be->out2, q1->x, q1->y, kept >> 4);
+   color_stage_pair(be, q0, q1, shade_pair(rc, be, q0, m0, q1, m1));
 }
 
 /* The shader first: it may discard or write depth. */

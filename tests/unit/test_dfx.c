@@ -210,6 +210,8 @@ static void random_ops(unsigned n)
       test_div(a, b);
       double d = ldexp((double)(rnd() >> 11) + 1, (int)(rnd() % 140) - 150) * ((rnd() & 1) ? -1 : 1);
       test_from_double(d);
+      if (i % 64 == 0)       /* subnormal doubles: their fields have no implicit one */
+         test_from_double(ldexp((double)(rnd() >> 12), -1074) * ((rnd() & 1) ? -1 : 1));
    }
 }
 
