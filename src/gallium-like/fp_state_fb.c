@@ -52,10 +52,9 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
    util_copy_framebuffer_state(&fp->framebuffer, fb);
 
    memset(&rfb, 0, sizeof(rfb));
-   /* Beyond the profile's X_out range the model cannot address pixels;
-    * the screen never offers larger textures, but windows can be larger. */
-   rfb.width = MIN2(fb->width, prof->max_target);
-   rfb.height = MIN2(fb->height, prof->max_target);
+   /* Any size: beyond the profile's X_out range the model draws in tiles. */
+   rfb.width = fb->width;
+   rfb.height = fb->height;
    rfb.nr_cbufs = MIN2(fb->nr_cbufs, RAST_MAX_CBUFS);
    for (unsigned i = 0; i < rfb.nr_cbufs; i++) {
       struct pipe_surface *ps = fb->cbufs[i];

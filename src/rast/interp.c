@@ -637,7 +637,9 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    const float cs = fr->color_scale;
    if (has_persp)
       fr->tex.begin(fr, xq, y);
-   q->y = (int)y;
+   /* the pass's origin back: the quad's place in the target */
+   const int qy = (int)(y + rc->org_y);
+   q->y = qy;
 
    for (int64_t x = xq; x <= xe; x += 2) {
       unsigned mask = span_bits(r0, x) | (span_bits(r1, x) << 2);
@@ -681,7 +683,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       }
       if (!mask)
          continue;
-      q->x = (int)x;
+      q->x = (int)(x + rc->org_x);
       q->mask = mask;
       rc->stats.quads++;
       rc->stats.pixels_covered += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
@@ -691,7 +693,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          fr->pending = q;
          fr->cur ^= 1;
          q = &fr->quad[fr->cur];
-         q->y = (int)y;
+         q->y = qy;
       } else {
          rc->quad2(rc, fr->pending, q);
          fr->pending = NULL;

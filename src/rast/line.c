@@ -32,9 +32,10 @@ static inline float fracf_pos(float f)
  * zero). */
 #define LINE_SNAP_ONE 256
 
-static int64_t line_snap(const struct rast_profile *prof, float v, struct fx_sat *sxy)
+static int64_t line_snap(const struct rast_profile *prof, float v, int64_t org,
+                         struct fx_sat *sxy)
 {
-   const int64_t k = rast_lp_iround(v * (float)LINE_SNAP_ONE);
+   const int64_t k = rast_lp_iround(v * (float)LINE_SNAP_ONE) - org * LINE_SNAP_ONE;
    return fx_from_double(prof->xy, (double)k / LINE_SNAP_ONE, sxy);
 }
 
@@ -45,6 +46,15 @@ void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[
 }
 
 void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
+{
+   rast_validate(rc);
+   if (rc->tiled)
+      rast_tiles_draw(rc, RAST_PRIM_LINE, v1, v2, NULL);
+   else
+      rast_line_pass(rc, v1, v2);
+}
+
+void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
    struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;
@@ -170,10 +180,13 @@ void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (
     * the pixel-centre offset back: scan.c evaluates at centres (i + h, j + h). */
    struct fx_sat *sxy = &rc->stats.sat[RAST_REG_XY];
    float po = rc->rs.half_pixel_center ? 0.5f : 0.0f;
-   int64_t sx1 = fx_add(prof->xy, line_snap(prof, v1[ps][0] + x_offset - po, sxy), fr->H, sxy);
-   int64_t sy1 = fx_add(prof->xy, line_snap(prof, v1[ps][1] + y_offset - po, sxy), fr->H, sxy);
-   int64_t sx2 = fx_add(prof->xy, line_snap(prof, v2[ps][0] + x_offset_end - po, sxy), fr->H, sxy);
-   int64_t sy2 = fx_add(prof->xy, line_snap(prof, v2[ps][1] + y_offset_end - po, sxy), fr->H, sxy);
+   const int64_t gx = rc->org_x, gy = rc->org_y;
+   int64_t sx1 = fx_add(prof->xy, line_snap(prof, v1[ps][0] + x_offset - po, gx, sxy), fr->H, sxy);
+   int64_t sy1 = fx_add(prof->xy, line_snap(prof, v1[ps][1] + y_offset - po, gy, sxy), fr->H, sxy);
+   int64_t sx2 = fx_add(prof->xy, line_snap(prof, v2[ps][0] + x_offset_end - po, gx, sxy), fr->H,
+                        sxy);
+   int64_t sy2 = fx_add(prof->xy, line_snap(prof, v2[ps][1] + y_offset_end - po, gy, sxy), fr->H,
+                        sxy);
    int64_t ox = xmajor ? 0 : half, oy = xmajor ? half : 0;
    fr->nverts = 4;
    fr->X[0] = sx1 - ox; fr->Y[0] = sy1 - oy;
@@ -189,7 +202,8 @@ void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (
     * major axis only; the corners take the plane's values. */
    rast_setup_attribs(rc, fr, 0, o1);
    rast_setup_attribs(rc, fr, 1, o2);
-   double ax = o1[ps][0], ay = o1[ps][1];
+   /* the corners' offsets from the first end point, in pixels (exact) */
+   double ax = (double)o1[ps][0] - (double)gx, ay = (double)o1[ps][1] - (double)gy;
    double major = xmajor ? (double)o1[ps][0] - o2[ps][0] : (double)o1[ps][1] - o2[ps][1];
    double cx[4], cy[4];
    for (unsigned k = 0; k < 4; k++) {

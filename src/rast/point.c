@@ -35,10 +35,12 @@ static inline int64_t grid_snap(float v)
 
 /* A grid value (units of 1/256 px, pixel centres at multiples of 256) into
  * the XY register, where pixel centres are at i + h. */
-static inline int64_t grid_to_xy(struct rast_context *rc, const struct rast_front *fr, int64_t g)
+static inline int64_t grid_to_xy(struct rast_context *rc, const struct rast_front *fr, int64_t g,
+                                 int64_t org)
 {
    struct fx_sat *sxy = &rc->stats.sat[RAST_REG_XY];
-   int64_t r = fx_from_double(rc->profile->xy, (double)g / POINT_SNAP_ONE, sxy);
+   int64_t r = fx_from_double(rc->profile->xy, (double)(g - org * POINT_SNAP_ONE) / POINT_SNAP_ONE,
+                              sxy);
    return fx_add(rc->profile->xy, r, fr->H, sxy);
 }
 
@@ -49,6 +51,15 @@ void rast_point(struct rast_context *rc, const float (*v)[4])
 }
 
 void rast_draw_point(struct rast_context *rc, const float (*v)[4])
+{
+   rast_validate(rc);
+   if (rc->tiled)
+      rast_tiles_draw(rc, RAST_PRIM_POINT, v, NULL, NULL);
+   else
+      rast_point_pass(rc, v);
+}
+
+void rast_point_pass(struct rast_context *rc, const float (*v)[4])
 {
    struct rast_front *fr = rast_front_begin(rc, true);
    const struct rast_raster_state *rs = &rc->rs;
@@ -96,10 +107,10 @@ void rast_draw_point(struct rast_context *rc, const float (*v)[4])
    }
 
    fr->nverts = 4;
-   fr->X[0] = fr->X[3] = grid_to_xy(rc, fr, x0);
-   fr->X[1] = fr->X[2] = grid_to_xy(rc, fr, x1);
-   fr->Y[0] = fr->Y[1] = grid_to_xy(rc, fr, y0);
-   fr->Y[2] = fr->Y[3] = grid_to_xy(rc, fr, y1);
+   fr->X[0] = fr->X[3] = grid_to_xy(rc, fr, x0, rc->org_x);
+   fr->X[1] = fr->X[2] = grid_to_xy(rc, fr, x1, rc->org_x);
+   fr->Y[0] = fr->Y[1] = grid_to_xy(rc, fr, y0, rc->org_y);
+   fr->Y[2] = fr->Y[3] = grid_to_xy(rc, fr, y1, rc->org_y);
 
    /* Z and 1/w constant; the sprite coordinate's plane. */
    rast_setup_attribs(rc, fr, 0, v);
@@ -115,8 +126,8 @@ void rast_draw_point(struct rast_context *rc, const float (*v)[4])
    for (unsigned c = 0; c < 4; c++) {
       fr->vfix[c][0] = fr->vfix[0][0];
       fr->vflt[c][0] = fr->vflt[0][0];
-      const double cx = fx_to_double(prof->xy, fr->X[c]) - pos[0];
-      const double cy = fx_to_double(prof->xy, fr->Y[c]) - pos[1];
+      const double cx = fx_to_double(prof->xy, fr->X[c]) + (double)rc->org_x - pos[0];
+      const double cy = fx_to_double(prof->xy, fr->Y[c]) + (double)rc->org_y - pos[1];
       for (unsigned i = 0; i < fr->nlin; i++) {
          const unsigned chan = fr->lin[i].chan;
          fr->vflt[c][1 + i] = chan == 0 ? (float)(0.5 + cx * ds) :

@@ -11,13 +11,14 @@
 static const struct rast_profile profile_seed = {
    .name = "seed",
    .summary = "seed 000 Table 1: X/Y 12.12, dx/dy 12.12, Z 20.12 (19-bit depth), "
-              "colour 9.12, targets up to 2048, linear colour",
+              "colour 9.12, X_out 11 bits (tiles of 2048), linear colour",
    .xy = { 12, 12 },
    .dxdy = { 12, 12 },
    .z = { 20, 12 },
    .color = { 9, 12 },
    .z_bits = 19,
-   .max_target = 2048,
+   .tile_size = 2048,
+   .max_target = 4096,
    .color_perspective = false,
 };
 
@@ -30,6 +31,7 @@ static const struct rast_profile profile_wide = {
    .z = { 28, 12 },
    .color = { 9, 12 },
    .z_bits = 24,
+   .tile_size = 8192,
    .max_target = 8192,
    .color_perspective = true,
 };

@@ -48,7 +48,10 @@ struct rast_profile {
    struct fx_format z;             /* seed: 20.12 */
    struct fx_format color;         /* seed: 9.12, in units of 1/255 */
    unsigned z_bits;                /* Z full scale is (2^z_bits - 1): seed 19, wide 24 */
-   unsigned max_target;            /* largest render target side: seed 2048 (X_out 11 bits) */
+   /* X_out/Y_out, the scan converter's pixel address: seed 11 bits.  A
+    * larger target is drawn in tiles of this side (tile.c). */
+   unsigned tile_size;
+   unsigned max_target;            /* largest target and texture side (the GL limits) */
    bool color_perspective;         /* seed: false, colour is the seed's linear Gouraud walk */
 };
 

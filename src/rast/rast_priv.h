@@ -46,7 +46,13 @@ struct rast_context {
    struct rast_stats mark;
 
    /* Chosen at validation. */
-   struct rast_scissor clip;        /* scissor & framebuffer, max exclusive */
+   struct rast_scissor clip_all;    /* scissor & framebuffer, max exclusive */
+   bool tiled;                      /* the target is larger than a tile (tile.c) */
+   /* The pass being drawn: the scan converter's clip and the origin the
+    * vertices are taken from, in pixels (even, so quads and bands stay
+    * where they are).  Untiled: clip_all and 0. */
+   struct rast_scissor clip;
+   int64_t org_x, org_y;
    rast_quad_func quad;             /* back end */
    rast_quad2_func quad2;           /* the same on two quads of a primitive; NULL: one by one */
    void *front_priv;                /* setup/scan's own specialised state */
@@ -65,17 +71,34 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
 void rast_draw_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[4]);
 void rast_draw_point(struct rast_context *rc, const float (*v0)[4]);
 
+/* One pass of each through the scan converter, at rc->org_x/org_y and
+ * inside rc->clip (setup.c, line.c, point.c). */
+void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
+                        const float (*v1)[4], const float (*v2)[4]);
+void rast_line_pass(struct rast_context *rc, const float (*v0)[4], const float (*v1)[4]);
+void rast_point_pass(struct rast_context *rc, const float (*v0)[4]);
+
 /* threads.c: true when the primitive went to the queue (threads > 1). */
 enum rast_prim_kind { RAST_PRIM_TRIANGLE, RAST_PRIM_LINE, RAST_PRIM_POINT };
 bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
                 const float (*v1)[4], const float (*v2)[4]);
+
+/* tile.c: the pixels a primitive can reach, conservatively, from its float
+ * vertices: box = x0, y0, x1, y1.  false: no finite extent. */
+bool rast_prim_extent(const struct rast_context *rc, enum rast_prim_kind kind,
+                      const float (*v0)[4], const float (*v1)[4], const float (*v2)[4],
+                      float box[4]);
+/* tile.c: the primitive in a pass per tile it reaches (rc->tiled). */
+void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
+                     const float (*v1)[4], const float (*v2)[4]);
 
 /* Whether the quad row starting at scan line p (even, >= 0) is this
  * context's: bands of RAST_BAND_ROWS scan lines, dealt round-robin. */
 static inline bool rast_band_mine(const struct rast_context *rc, int64_t p)
 {
    return rc->band_count == 1 ||
-          (unsigned)((uint64_t)p / RAST_BAND_ROWS % rc->band_count) == rc->band_index;
+          (unsigned)((uint64_t)(p + rc->org_y) / RAST_BAND_ROWS % rc->band_count) ==
+          rc->band_index;
 }
 
 /* Entering work that is (mine) or is not this context's to count. */

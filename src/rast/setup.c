@@ -4,6 +4,7 @@
  * into halves A and B.  Validation of the front end lives here too: it picks
  * which attribute registers exist and the span processor that walks them.
  */
+#include <math.h>
 #include <stdlib.h>
 #include "rast/front.h"
 
@@ -28,10 +29,6 @@ static void set_fix_class(struct rast_context *rc, struct rast_front *fr, unsign
 static void compute_clip(struct rast_context *rc)
 {
    struct rast_scissor c = { 0, 0, (int)rc->fb.width, (int)rc->fb.height };
-   /* X_out/Y_out are the profile's output width: nothing beyond is drawn. */
-   int lim = (int)rc->profile->max_target;
-   if (c.maxx > lim) c.maxx = lim;
-   if (c.maxy > lim) c.maxy = lim;
    if (rc->rs.scissor) {
       if (rc->scissor.minx > c.minx) c.minx = rc->scissor.minx;
       if (rc->scissor.miny > c.miny) c.miny = rc->scissor.miny;
@@ -40,7 +37,11 @@ static void compute_clip(struct rast_context *rc)
    }
    if (c.maxx < c.minx) c.maxx = c.minx;
    if (c.maxy < c.miny) c.maxy = c.miny;
+   rc->clip_all = c;
    rc->clip = c;
+   rc->org_x = rc->org_y = 0;
+   /* X_out/Y_out address one tile: a larger target is drawn tile by tile. */
+   rc->tiled = rc->fb.width > rc->profile->tile_size || rc->fb.height > rc->profile->tile_size;
 }
 
 void rast_front_validate(struct rast_context *rc)
@@ -229,6 +230,28 @@ void rast_triangle(struct rast_context *rc, const float (*v0)[4],
 void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
                         const float (*v1)[4], const float (*v2)[4])
 {
+   rast_validate(rc);
+   if (rc->tiled)
+      rast_tiles_draw(rc, RAST_PRIM_TRIANGLE, v0, v1, v2);
+   else
+      rast_triangle_pass(rc, v0, v1, v2);
+}
+
+/* A vertex coordinate into the XY register of the pass at origin `org`.
+ * The snap to the register's grid rounds the position in the target (ties
+ * away from zero, as fx_from_double) before the origin is taken off, so a
+ * vertex lands on the same grid point whatever the pass. */
+static int64_t vertex_xy(struct fx_format xy, double v, int64_t org, struct fx_sat *s)
+{
+   if (org == 0 || !(fabs(v) < 0x1p30))
+      return fx_from_double(xy, v - (double)org, s);
+   const int64_t r = (int64_t)round(v * (double)fx_one(xy));   /* exact */
+   return fx_sat(xy, r - org * fx_one(xy), s);
+}
+
+void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
+                        const float (*v1)[4], const float (*v2)[4])
+{
    struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;
    const float (*v[3])[4] = { v0, v1, v2 };
@@ -237,10 +260,9 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
 
    fr->nverts = 3;
    for (unsigned k = 0; k < 3; k++) {
-      fr->X[k] = fx_from_double(prof->xy, v[k][ps][0], sxy);
-      fr->Y[k] = fx_from_double(prof->xy, v[k][ps][1], sxy);
+      fr->X[k] = vertex_xy(prof->xy, v[k][ps][0], rc->org_x, sxy);
+      fr->Y[k] = vertex_xy(prof->xy, v[k][ps][1], rc->org_y, sxy);
    }
-
    /* softpipe's det = (v0 - v2) x (v1 - v2) in gallium's window coordinates,
     * exact on the fixed-point vertices; zero is a triangle seen edge-on. */
    int64_t det = (fr->X[0] - fr->X[2]) * (fr->Y[1] - fr->Y[2]) -

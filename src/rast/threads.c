@@ -94,35 +94,20 @@ static inline void cpu_relax(void)
 
 /* ---- which primitives a thread must look at ---- */
 
-/* The scan lines a primitive can cover, conservatively, from its float
- * vertices (the fixed-point snap moves a vertex by less than a pixel;
- * lines and points grow by their size).  false: no finite extent, so every
- * thread takes it and the set-up decides. */
+/* The scan lines a primitive can cover (rast_prim_extent).  false: no
+ * finite extent, so every thread takes it and the set-up decides. */
 static bool prim_rows(const struct rast_context *rc, const struct rast_prim *p,
                       int64_t *lo, int64_t *hi, double *area)
 {
-   const unsigned ps = rc->vl.pos_slot;
-   unsigned nv = p->kind == RAST_PRIM_TRIANGLE ? 3 : p->kind == RAST_PRIM_LINE ? 2 : 1;
-   float x0 = p->v[0][ps][0], x1 = x0, y0 = p->v[0][ps][1], y1 = y0;
-   for (unsigned k = 1; k < nv; k++) {
-      float x = p->v[k][ps][0], y = p->v[k][ps][1];
-      x0 = fminf(x0, x); x1 = fmaxf(x1, x);
-      y0 = fminf(y0, y); y1 = fmaxf(y1, y);
-   }
-   float m = 2.0f;
-   if (p->kind == RAST_PRIM_LINE)
-      m += rc->rs.line_width * 0.5f;
-   else if (p->kind == RAST_PRIM_POINT)
-      m += RAST_MAX_POINT_SIZE * 0.5f;
-   x0 -= m; x1 += m; y0 -= m; y1 += m;
-   if (!(y0 > -1e9f && y1 < 1e9f && x0 > -1e9f && x1 < 1e9f))
+   float b[4];
+   if (!rast_prim_extent(rc, p->kind, p->v[0], p->v[1], p->v[2], b))
       return false;
-   *lo = (int64_t)floorf(y0);
-   *hi = (int64_t)ceilf(y1);
+   *lo = (int64_t)floorf(b[1]);
+   *hi = (int64_t)ceilf(b[3]);
    if (*lo < 0)
       *lo = 0;
-   double w = fmin(x1, (double)rc->fb.width) - fmax(x0, 0.0);
-   double h = fmin(y1, (double)rc->fb.height) - fmax(y0, 0.0);
+   double w = fmin(b[2], (double)rc->fb.width) - fmax(b[0], 0.0);
+   double h = fmin(b[3], (double)rc->fb.height) - fmax(b[1], 0.0);
    *area = w > 0 && h > 0 ? w * h : 0.0;
    return true;
 }

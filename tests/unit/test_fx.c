@@ -83,14 +83,17 @@ int main(void)
       CHECK(((INT64_C(1) << pr->z_bits) - 1) * fx_one(pr->z) <= fx_max(pr->z), "%s z fits", pr->name);
       CHECK(255 * fx_one(pr->color) <= fx_max(pr->color), "%s colour fits", pr->name);
       CHECK(pr->xy.frac_bits == pr->dxdy.frac_bits, "%s slopes step X in its own units", pr->name);
+      /* X_out addresses no more than the XY register's positive range */
+      CHECK(((int64_t)pr->tile_size << pr->xy.frac_bits) <= fx_max(pr->xy) + 1 &&
+            pr->max_target >= pr->tile_size, "%s tiles", pr->name);
    }
    const struct rast_profile *seed = rast_profile_by_name("seed");
    CHECK(seed && seed->xy.int_bits == 12 && seed->xy.frac_bits == 12 && seed->z.int_bits == 20 &&
-         seed->color.int_bits == 9 && seed->z_bits == 19 && seed->max_target == 2048 &&
+         seed->color.int_bits == 9 && seed->z_bits == 19 && seed->tile_size == 2048 &&
          !seed->color_perspective, "seed profile is Table 1");
    const struct rast_profile *wide = rast_profile_by_name("wide");
    CHECK(wide && wide->xy.int_bits == 16 && wide->z.int_bits == 28 && wide->z_bits == 24 &&
-         wide->max_target == 8192 && wide->color_perspective, "wide profile");
+         wide->tile_size == 8192 && wide->color_perspective, "wide profile");
    CHECK(rast_profile_by_name("see") == NULL && rast_profile_by_name("seedx") == NULL &&
          rast_profile_by_name(NULL) == NULL, "unknown names");
 

@@ -36,22 +36,6 @@ static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_q
    return q->mask;
 }
 
-static void load_rgba8(const uint8_t *src, unsigned n, float (*rgba)[4])
-{
-   for (unsigned i = 0; i < n; i++)
-      for (unsigned c = 0; c < 4; c++)
-         rgba[i][c] = src[4 * i + c] / 255.0f;
-}
-
-static void store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4])
-{
-   for (unsigned i = 0; i < n; i++)
-      for (unsigned c = 0; c < 4; c++) {
-         float v = rgba[i][c] < 0 ? 0 : rgba[i][c] > 1 ? 1 : rgba[i][c];
-         dst[4 * i + c] = (uint8_t)(v * 255.0f + 0.5f);
-      }
-}
-
 struct scene {
    unsigned nbatch;
    unsigned nprim[8];
@@ -138,7 +122,7 @@ static void draw_scene(const struct scene *s, unsigned threads, bool daz, struct
    fb.height = H;
    fb.nr_cbufs = 1;
    fb.cbuf[0] = (struct rast_color_target){ res->color, W * 4, 4, RAST_CL_RGBA8,
-                                            load_rgba8, store_rgba8, true };
+                                            t_load_rgba8, t_store_rgba8, true };
    fb.zs = (struct rast_zs_target){ (uint8_t *)res->zs, W * 4, RAST_ZS_Z24_S8 };
    rast_set_framebuffer(rc, &fb);
 
@@ -162,16 +146,7 @@ static void draw_scene(const struct scene *s, unsigned threads, bool daz, struct
    }
    rast_set_shader(rc, &fs);
 
-   struct rast_depth_stencil_state dsa;
-   memset(&dsa, 0, sizeof(dsa));
-   dsa.depth_enabled = true;
-   dsa.depth_writemask = true;
-   dsa.depth_func = RAST_FUNC_LEQUAL;
-   for (unsigned f = 0; f < 2; f++)
-      dsa.stencil[f] = (struct rast_stencil_face){ true, RAST_FUNC_ALWAYS, RAST_STENCIL_KEEP,
-                                                   RAST_STENCIL_INCR_WRAP,
-                                                   RAST_STENCIL_INCR_WRAP, 0xff, 0xff };
-   rast_set_depth_stencil(rc, &dsa);
+   t_depth_count_hits(rc, RAST_FUNC_LEQUAL);
 
    for (unsigned b = 0; b < s->nbatch; b++) {
       struct rast_blend_state bs;

@@ -195,3 +195,33 @@ uint64_t t_ref_triangle(const int64_t Xin[3], const int64_t Yin[3], int64_t S, i
    }
    return n;
 }
+
+void t_load_rgba8(const uint8_t *src, unsigned n, float (*rgba)[4])
+{
+   for (unsigned i = 0; i < n; i++)
+      for (unsigned c = 0; c < 4; c++)
+         rgba[i][c] = src[4 * i + c] / 255.0f;
+}
+
+void t_store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4])
+{
+   for (unsigned i = 0; i < n; i++)
+      for (unsigned c = 0; c < 4; c++) {
+         float v = rgba[i][c] < 0 ? 0 : rgba[i][c] > 1 ? 1 : rgba[i][c];
+         dst[4 * i + c] = (uint8_t)(v * 255.0f + 0.5f);
+      }
+}
+
+void t_depth_count_hits(struct rast_context *rc, enum rast_func func)
+{
+   struct rast_depth_stencil_state dsa;
+   memset(&dsa, 0, sizeof(dsa));
+   dsa.depth_enabled = true;
+   dsa.depth_writemask = true;
+   dsa.depth_func = func;
+   for (unsigned f = 0; f < 2; f++)
+      dsa.stencil[f] = (struct rast_stencil_face){ true, RAST_FUNC_ALWAYS, RAST_STENCIL_KEEP,
+                                                   RAST_STENCIL_INCR_WRAP,
+                                                   RAST_STENCIL_INCR_WRAP, 0xff, 0xff };
+   rast_set_depth_stencil(rc, &dsa);
+}

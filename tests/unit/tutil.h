@@ -47,6 +47,14 @@ struct tctx {
    void *user;
 };
 
+/* A bytes-RGBA8 target's generic load and store (the driver's role). */
+void t_load_rgba8(const uint8_t *src, unsigned n, float (*rgba)[4]);
+void t_store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4]);
+
+/* Depth tested by `func` and written; the stencil (both faces) counts
+ * every hit of a pixel, passed or not (INCR_WRAP). */
+void t_depth_count_hits(struct rast_context *rc, enum rast_func func);
+
 void t_init(struct tctx *t, const char *profile, int w, int h);
 void t_fini(struct tctx *t);
 void t_raster(struct tctx *t, bool half_pixel, bool bottom_rule);
