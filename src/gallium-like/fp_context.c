@@ -88,6 +88,8 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  datapath work: quads divided %" PRIu64 ", component-quads %" PRIu64
            ", texture quads with a LOD from differences %" PRIu64 "\n",
            st->persp_quads, st->persp_comp_quads, st->tex_lod_quads);
+   fprintf(stderr, "  tiles of %u: passes %" PRIu64 ", primitives clipped to the guard band %"
+           PRIu64 "\n", rast_get_profile(fp->rast)->tile_size, st->tile_passes, st->tile_guard);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
            "; vertex shaders compiled %" PRIu64 "\n",

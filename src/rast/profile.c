@@ -18,7 +18,7 @@ static const struct rast_profile profile_seed = {
    .color = { 9, 12 },
    .z_bits = 19,
    .tile_size = 2048,
-   .max_target = 4096,
+   .max_target = 8192,
    .color_perspective = false,
 };
 

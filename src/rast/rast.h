@@ -301,6 +301,10 @@ struct rast_stats {
     * and their PERSPECTIVE component-quads; texture quads whose LOD comes
     * from the coordinates' differences (implicit or biased) */
    uint64_t persp_quads, persp_comp_quads, tex_lod_quads;
+   /* Tiles (tile.c): passes of primitives through the scan converter on a
+    * target larger than X_out, and primitives clipped to the guard band
+    * because no origin holds them in the XY registers. */
+   uint64_t tile_passes, tile_guard;
 };
 
 /* ------------------------------------------------------------------ */

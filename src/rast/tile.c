@@ -15,7 +15,8 @@
  * bands land where they land without tiles: coverage is that of one big
  * register.  What does differ is where the edge walk starts: a pass starts
  * its edges and their attributes at the tile's first scan line, with the
- * same exact jump as a scissored primitive.
+ * same exact jump as a scissored primitive.  A primitive wider than any
+ * origin holds is clipped to a guard band around each tile first (below).
  *
  * Counters: a primitive is counted once, by its first pass; the later
  * passes' set-up (the same determinant, the same cull) is not counted, their
@@ -69,11 +70,216 @@ static inline int64_t floor_div_i(int64_t a, int64_t b)
    return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
+/* ---- the guard band: primitives wider than the registers reach ----
+ *
+ * A primitive more than 2 * 2048 pixels across (seed) cannot be held from
+ * any origin.  Such a primitive is drawn from each tile's centre, clipped
+ * first, in float as the clip stage of seed 004 works, to the guard band:
+ * halfway between the tile's edge and the registers' reach (512 pixels
+ * outside the tile in seed, 4 times the widest line's half width), so the
+ * new edges never cross the tile, a wide line's corners stay in reach, and
+ * the original edges move only by the rounding of their new end points. */
+#define TILE_MAX_SLOTS    80           /* draw's vertex: up to PIPE_MAX_SHADER_OUTPUTS */
+#define TILE_MAX_POLY     7            /* a triangle clipped by four planes */
+
+enum slot_mode { SLOT_LINEAR, SLOT_PERSPECTIVE, SLOT_CONSTANT };
+
+struct guard {
+   unsigned nslots, ps;
+   uint8_t mode[TILE_MAX_SLOTS];
+   const float (*provoking)[4];
+   double lo[2], hi[2];                /* the band, in target pixels */
+};
+
+typedef float tile_vertex[TILE_MAX_SLOTS][4];
+
+static void guard_modes(const struct rast_context *rc, struct guard *g,
+                        const float (*provoking)[4])
+{
+   g->nslots = rc->vl.vertex_size;
+   g->ps = rc->vl.pos_slot;
+   g->provoking = provoking;
+   for (unsigned s = 0; s < g->nslots; s++)
+      g->mode[s] = SLOT_LINEAR;
+   for (unsigned i = 0; i < rc->vl.num_varyings && i < RAST_MAX_VARYINGS; i++) {
+      const struct rast_varying *vr = &rc->vl.varying[i];
+      if (vr->slot >= g->nslots)
+         continue;
+      switch (vr->interp) {
+      case RAST_INTERP_PERSPECTIVE:
+         g->mode[vr->slot] = SLOT_PERSPECTIVE;
+         break;
+      case RAST_INTERP_COLOR:
+         g->mode[vr->slot] = rc->rs.flatshade ? SLOT_CONSTANT :
+                             rc->profile->color_perspective ? SLOT_PERSPECTIVE : SLOT_LINEAR;
+         break;
+      case RAST_INTERP_CONSTANT:
+         g->mode[vr->slot] = SLOT_CONSTANT;
+         break;
+      default:
+         break;
+      }
+   }
+   g->mode[g->ps] = SLOT_LINEAR;       /* window x, y, z and 1/w: linear on the screen */
+}
+
+/* The point at t from a to b on the screen, each input as the pipeline
+ * interpolates it. */
+static void guard_lerp(const struct guard *g, const float (*a)[4], const float (*b)[4],
+                       double t, float (*o)[4])
+{
+   const double qa = a[g->ps][3], qb = b[g->ps][3];
+   const double q = qa + (qb - qa) * t;
+   for (unsigned s = 0; s < g->nslots; s++) {
+      for (unsigned c = 0; c < 4; c++) {
+         const double va = a[s][c], vb = b[s][c];
+         switch (g->mode[s]) {
+         case SLOT_CONSTANT:
+            o[s][c] = g->provoking[s][c];
+            break;
+         case SLOT_PERSPECTIVE:
+            o[s][c] = q != 0.0 ? (float)((va * qa + (vb * qb - va * qa) * t) / q)
+                               : (float)(va + (vb - va) * t);
+            break;
+         default:
+            o[s][c] = (float)(va + (vb - va) * t);
+            break;
+         }
+      }
+   }
+}
+
+static void guard_copy(const struct guard *g, const float (*a)[4], float (*o)[4])
+{
+   for (unsigned s = 0; s < g->nslots; s++)
+      for (unsigned c = 0; c < 4; c++)
+         o[s][c] = g->mode[s] == SLOT_CONSTANT ? g->provoking[s][c] : a[s][c];
+}
+
+/* The crossing of the segment a-b with the line (axis) = edge, computed from
+ * the end points in one order whichever way the edge is walked, so the two
+ * polygons sharing it get the same point. */
+static void guard_cross(const struct guard *g, const float (*a)[4], const float (*b)[4],
+                        unsigned axis, double edge, float (*o)[4])
+{
+   const float (*p)[4] = a, (*r)[4] = b;
+   if (a[g->ps][axis] > b[g->ps][axis] ||
+       (a[g->ps][axis] == b[g->ps][axis] && a[g->ps][1 - axis] > b[g->ps][1 - axis])) {
+      p = b;
+      r = a;
+   }
+   const double t = (edge - p[g->ps][axis]) / ((double)r[g->ps][axis] - p[g->ps][axis]);
+   guard_lerp(g, p, r, t, o);
+   o[g->ps][axis] = (float)edge;
+}
+
+/* Sutherland-Hodgman against the band; the polygon in `poly`, n vertices. */
+static unsigned guard_clip_polygon(const struct guard *g, tile_vertex *poly, unsigned n,
+                                   tile_vertex *tmp)
+{
+   for (unsigned plane = 0; plane < 4 && n; plane++) {
+      const unsigned axis = plane & 1;
+      const bool upper = plane >= 2;
+      const double edge = upper ? g->hi[axis] : g->lo[axis];
+      unsigned m = 0;
+      for (unsigned i = 0; i < n; i++) {
+         const float (*a)[4] = (const float (*)[4])poly[i];
+         const float (*b)[4] = (const float (*)[4])poly[(i + 1) % n];
+         const double pa = a[g->ps][axis], pb = b[g->ps][axis];
+         const bool ina = upper ? pa <= edge : pa >= edge;
+         const bool inb = upper ? pb <= edge : pb >= edge;
+         if (ina)
+            guard_copy(g, a, tmp[m++]);
+         if (ina != inb)
+            guard_cross(g, a, b, axis, edge, tmp[m++]);
+      }
+      for (unsigned i = 0; i < m; i++)
+         guard_copy(g, (const float (*)[4])tmp[i], poly[i]);
+      n = m;
+   }
+   return n;
+}
+
+/* The primitive clipped to the band and drawn in the current pass; its
+ * pieces' set-up is not counted (the primitive was, once). */
+static void guard_draw(struct rast_context *rc, struct guard *g, enum rast_prim_kind kind,
+                       const float (*v0)[4], const float (*v1)[4], const float (*v2)[4])
+{
+   tile_vertex poly[TILE_MAX_POLY], tmp[TILE_MAX_POLY];
+   if (kind == RAST_PRIM_LINE) {
+      /* Liang-Barsky on the segment */
+      double t0 = 0.0, t1 = 1.0;
+      for (unsigned axis = 0; axis < 2; axis++) {
+         const double p = v0[g->ps][axis], d = (double)v1[g->ps][axis] - p;
+         if (d == 0.0) {
+            if (p < g->lo[axis] || p > g->hi[axis])
+               return;
+            continue;
+         }
+         double ta = (g->lo[axis] - p) / d, tb = (g->hi[axis] - p) / d;
+         if (ta > tb) { const double t = ta; ta = tb; tb = t; }
+         if (ta > t0) t0 = ta;
+         if (tb < t1) t1 = tb;
+      }
+      if (t0 > t1)
+         return;
+      guard_lerp(g, v0, v1, t0, poly[0]);
+      guard_lerp(g, v0, v1, t1, poly[1]);
+      rast_count_stretch(rc, false);
+      rast_line_pass(rc, (const float (*)[4])poly[0], (const float (*)[4])poly[1]);
+      return;
+   }
+   guard_copy(g, v0, poly[0]);
+   guard_copy(g, v1, poly[1]);
+   guard_copy(g, v2, poly[2]);
+   unsigned n = guard_clip_polygon(g, poly, 3, tmp);
+   for (unsigned i = 1; i + 1 < n; i++) {
+      rast_count_stretch(rc, false);
+      rast_triangle_pass(rc, (const float (*)[4])poly[0], (const float (*)[4])poly[i],
+                         (const float (*)[4])poly[i + 1]);
+   }
+}
+
+/* Counted once for a primitive drawn in pieces: what its own set-up would
+ * count (a triangle by the sign of its determinant on the grid). */
+static bool guard_count(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
+                        const float (*v1)[4], const float (*v2)[4])
+{
+   const unsigned ps = rc->vl.pos_slot;
+   if (kind == RAST_PRIM_LINE) {
+      const float dx = v0[ps][0] - v1[ps][0], dy = v0[ps][1] - v1[ps][1];
+      if (dx * dx + dy * dy == 0) {
+         rc->stats.culled++;
+         return false;
+      }
+      rc->stats.lines++;
+      return true;
+   }
+   const double S = (double)fx_one(rc->profile->xy);
+   const float (*v[3])[4] = { v0, v1, v2 };
+   int64_t X[3], Y[3];
+   for (unsigned k = 0; k < 3; k++) {
+      X[k] = (int64_t)round((double)v[k][ps][0] * S);
+      Y[k] = (int64_t)round((double)v[k][ps][1] * S);
+   }
+   /* the box is finite and within 2^15 pixels: 2^28 grid steps, products in 2^57 */
+   const int64_t det = (X[0] - X[2]) * (Y[1] - Y[2]) - (Y[0] - Y[2]) * (X[1] - X[2]);
+   const unsigned facing = (unsigned)(det < 0) ^ (unsigned)rc->rs.front_ccw;
+   const unsigned face = facing ? RAST_CULL_BACK : RAST_CULL_FRONT;
+   if (det == 0 || (face & (unsigned)rc->rs.cull)) {
+      rc->stats.culled++;
+      return false;
+   }
+   rc->stats.triangles++;
+   return true;
+}
+
 void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
                      const float (*v1)[4], const float (*v2)[4])
 {
    const struct rast_scissor all = rc->clip_all;
    const int64_t T = rc->profile->tile_size;
+   const int64_t R = INT64_C(1) << (rc->profile->xy.int_bits - 1);   /* the registers' reach */
 
    /* The pixels the primitive can reach; without a finite extent (NaN,
     * infinities) it is drawn in every tile from the origin, and saturates
@@ -81,9 +287,15 @@ void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const fl
    float box[4];
    int64_t bx0 = all.minx, by0 = all.miny, bx1 = all.maxx, by1 = all.maxy;
    int64_t ox = 0, oy = 0;
+   bool guard = false;
    if (rast_prim_extent(rc, kind, v0, v1, v2, box)) {
       ox = even_middle(box[0], box[2]);
       oy = even_middle(box[1], box[3]);
+      /* the vertices (the box less its 2-pixel snap margin) from the middle */
+      /* (a point is at most 255 pixels across: it always fits) */
+      guard = kind != RAST_PRIM_POINT &&
+              !(box[0] + 2.0f >= (float)(ox - R) && box[2] - 2.0f < (float)(ox + R) &&
+                box[1] + 2.0f >= (float)(oy - R) && box[3] - 2.0f < (float)(oy + R));
       int64_t fx0 = (int64_t)floorf(box[0]), fy0 = (int64_t)floorf(box[1]);
       int64_t fx1 = (int64_t)ceilf(box[2]), fy1 = (int64_t)ceilf(box[3]);
       if (fx0 > bx0) bx0 = fx0;
@@ -91,9 +303,17 @@ void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const fl
       if (fx1 < bx1) bx1 = fx1;
       if (fy1 < by1) by1 = fy1;
    }
+   struct guard g;
+   if (guard) {
+      if (rc->vl.vertex_size > TILE_MAX_SLOTS || !guard_count(rc, kind, v0, v1, v2))
+         return;
+      const bool first_pv = rc->rs.flatshade_first;
+      guard_modes(rc, &g, first_pv ? v0 : kind == RAST_PRIM_LINE ? v1 : v2);
+   }
 
    const bool counting = rc->counting;
    bool first = true;
+   uint64_t passes = 0;
    for (int64_t ty = floor_div_i(by0, T); by0 < by1 && ty <= floor_div_i(by1 - 1, T); ty++) {
       for (int64_t tx = floor_div_i(bx0, T); bx0 < bx1 && tx <= floor_div_i(bx1 - 1, T); tx++) {
          struct rast_scissor c = { (int)(tx * T), (int)(ty * T),
@@ -104,24 +324,42 @@ void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const fl
          if (c.maxy > all.maxy) c.maxy = all.maxy;
          if (c.minx >= c.maxx || c.miny >= c.maxy)
             continue;
+         if (guard) {
+            /* from the tile's centre, the band around it */
+            const int64_t band = (T / 2 + R) / 2;
+            ox = tx * T + T / 2;
+            oy = ty * T + T / 2;
+            g.lo[0] = (double)(ox - band);
+            g.hi[0] = (double)(ox + band);
+            g.lo[1] = (double)(oy - band);
+            g.hi[1] = (double)(oy + band);
+         }
          rc->clip = (struct rast_scissor){ (int)(c.minx - ox), (int)(c.miny - oy),
                                            (int)(c.maxx - ox), (int)(c.maxy - oy) };
          rc->org_x = ox;
          rc->org_y = oy;
+         passes++;
+         if (guard) {
+            guard_draw(rc, &g, kind, v0, v1, v2);
+            continue;
+         }
          if (!first)
             rast_count_stretch(rc, false);
          first = false;
          draw_pass(rc, kind, v0, v1, v2);
       }
    }
-   if (first) {
+   if (first && !guard) {
       /* in no tile: set up and counted as untiled, and nothing drawn */
       rc->clip = (struct rast_scissor){ 0, 0, 0, 0 };
       rc->org_x = ox;
       rc->org_y = oy;
       draw_pass(rc, kind, v0, v1, v2);
    }
+   /* counted in the primitive's own stretch, once */
    rast_count_stretch(rc, counting);
+   rc->stats.tile_passes += passes;
+   rc->stats.tile_guard += guard;
    rc->clip = all;
    rc->org_x = rc->org_y = 0;
 }
