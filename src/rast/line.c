@@ -39,6 +39,16 @@ static int64_t line_snap(const struct rast_profile *prof, float v, int64_t org,
    return fx_from_double(prof->xy, (double)k / LINE_SNAP_ONE, sxy);
 }
 
+bool rast_line_counted(struct rast_context *rc, float dx, float dy)
+{
+   if (dx * dx + dy * dy == 0) {
+      rc->stats.culled++;
+      return false;
+   }
+   rc->stats.lines++;
+   return true;
+}
+
 void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
    if (!rast_queue(rc, RAST_PRIM_LINE, v1, v2, NULL))
@@ -64,11 +74,8 @@ void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (
    float width = rc->rs.line_width > 1.0f ? rc->rs.line_width : 1.0f;
    float dx = v1[ps][0] - v2[ps][0];
    float dy = v1[ps][1] - v2[ps][1];
-   if (dx * dx + dy * dy == 0) {
-      rc->stats.culled++;
+   if (!rast_line_counted(rc, dx, dy))
       return;
-   }
-   rc->stats.lines++;
 
    float x_offset = 0, y_offset = 0, x_offset_end = 0, y_offset_end = 0;
    float x1diff = v1[ps][0] - floorf(v1[ps][0]) - 0.5f;

@@ -5,6 +5,7 @@
 #ifndef FIXPIPE_RAST_PRIV_H
 #define FIXPIPE_RAST_PRIV_H
 
+#include <math.h>
 #include "rast/rast.h"
 
 struct rast_context;
@@ -70,6 +71,24 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
                         const float (*v1)[4], const float (*v2)[4]);
 void rast_draw_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[4]);
 void rast_draw_point(struct rast_context *rc, const float (*v0)[4]);
+
+/* The XY register's grid point of a window coordinate, unsaturated (ties
+ * away from zero, as fx_from_double): |v| < 2^30. */
+static inline int64_t rast_snap_xy(struct fx_format xy, double v)
+{
+   return (int64_t)round(v * (double)fx_one(xy));   /* exact: a power of two */
+}
+
+/* softpipe's det = (v0 - v2) x (v1 - v2) of three grid points. */
+static inline int64_t rast_det(const int64_t *X, const int64_t *Y)
+{
+   return (X[0] - X[2]) * (Y[1] - Y[2]) - (Y[0] - Y[2]) * (X[1] - X[2]);
+}
+
+/* A primitive's counters: culled (edge-on, zero length, or its face
+ * culled) or drawn; false when culled.  setup.c, line.c. */
+bool rast_triangle_counted(struct rast_context *rc, int64_t det, bool *front);
+bool rast_line_counted(struct rast_context *rc, float dx, float dy);
 
 /* One pass of each through the scan converter, at rc->org_x/org_y and
  * inside rc->clip (setup.c, line.c, point.c). */

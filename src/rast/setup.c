@@ -243,10 +243,23 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
  * vertex lands on the same grid point whatever the pass. */
 static int64_t vertex_xy(struct fx_format xy, double v, int64_t org, struct fx_sat *s)
 {
-   if (org == 0 || !(fabs(v) < 0x1p30))
+   if (!(fabs(v) < 0x1p30))            /* NaN, or far off any target */
       return fx_from_double(xy, v - (double)org, s);
-   const int64_t r = (int64_t)round(v * (double)fx_one(xy));   /* exact */
-   return fx_sat(xy, r - org * fx_one(xy), s);
+   return fx_sat(xy, rast_snap_xy(xy, v) - org * fx_one(xy), s);
+}
+
+bool rast_triangle_counted(struct rast_context *rc, int64_t det, bool *front)
+{
+   /* zero is a triangle seen edge-on */
+   const unsigned facing = (unsigned)(det < 0) ^ (unsigned)rc->rs.front_ccw;   /* 0 = front */
+   const unsigned face = facing ? RAST_CULL_BACK : RAST_CULL_FRONT;
+   if (det == 0 || (face & (unsigned)rc->rs.cull)) {
+      rc->stats.culled++;
+      return false;
+   }
+   rc->stats.triangles++;
+   *front = facing == 0;
+   return true;
 }
 
 void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
@@ -263,22 +276,10 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
       fr->X[k] = vertex_xy(prof->xy, v[k][ps][0], rc->org_x, sxy);
       fr->Y[k] = vertex_xy(prof->xy, v[k][ps][1], rc->org_y, sxy);
    }
-   /* softpipe's det = (v0 - v2) x (v1 - v2) in gallium's window coordinates,
-    * exact on the fixed-point vertices; zero is a triangle seen edge-on. */
-   int64_t det = (fr->X[0] - fr->X[2]) * (fr->Y[1] - fr->Y[2]) -
-                 (fr->Y[0] - fr->Y[2]) * (fr->X[1] - fr->X[2]);
-   if (det == 0) {
-      rc->stats.culled++;
+   bool front;
+   if (!rast_triangle_counted(rc, rast_det(fr->X, fr->Y), &front))
       return;
-   }
-   unsigned facing = (unsigned)(det < 0) ^ (unsigned)rc->rs.front_ccw;   /* 0 = front */
-   unsigned face = facing ? RAST_CULL_BACK : RAST_CULL_FRONT;
-   if (face & (unsigned)rc->rs.cull) {
-      rc->stats.culled++;
-      return;
-   }
-   rc->stats.triangles++;
-   fr->quad[0].front_facing = fr->quad[1].front_facing = facing == 0;
+   fr->quad[0].front_facing = fr->quad[1].front_facing = front;
 
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);

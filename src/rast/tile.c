@@ -173,28 +173,32 @@ static void guard_cross(const struct guard *g, const float (*a)[4], const float 
    o[g->ps][axis] = (float)edge;
 }
 
-/* Sutherland-Hodgman against the band; the polygon in `poly`, n vertices. */
-static unsigned guard_clip_polygon(const struct guard *g, tile_vertex *poly, unsigned n,
-                                   tile_vertex *tmp)
+/* Sutherland-Hodgman against the band, from one buffer to the other: the
+ * polygon's n vertices in *poly, which ends as the buffer holding the
+ * result. */
+static unsigned guard_clip_polygon(const struct guard *g, tile_vertex **poly, unsigned n,
+                                   tile_vertex **tmp)
 {
    for (unsigned plane = 0; plane < 4 && n; plane++) {
       const unsigned axis = plane & 1;
       const bool upper = plane >= 2;
       const double edge = upper ? g->hi[axis] : g->lo[axis];
       unsigned m = 0;
+      tile_vertex *in = *poly;
+      tile_vertex *out = *tmp;
       for (unsigned i = 0; i < n; i++) {
-         const float (*a)[4] = (const float (*)[4])poly[i];
-         const float (*b)[4] = (const float (*)[4])poly[(i + 1) % n];
+         const float (*a)[4] = (const float (*)[4])in[i];
+         const float (*b)[4] = (const float (*)[4])in[(i + 1) % n];
          const double pa = a[g->ps][axis], pb = b[g->ps][axis];
          const bool ina = upper ? pa <= edge : pa >= edge;
          const bool inb = upper ? pb <= edge : pb >= edge;
          if (ina)
-            guard_copy(g, a, tmp[m++]);
+            guard_copy(g, a, out[m++]);
          if (ina != inb)
-            guard_cross(g, a, b, axis, edge, tmp[m++]);
+            guard_cross(g, a, b, axis, edge, out[m++]);
       }
-      for (unsigned i = 0; i < m; i++)
-         guard_copy(g, (const float (*)[4])tmp[i], poly[i]);
+      *tmp = *poly;
+      *poly = out;
       n = m;
    }
    return n;
@@ -205,7 +209,8 @@ static unsigned guard_clip_polygon(const struct guard *g, tile_vertex *poly, uns
 static void guard_draw(struct rast_context *rc, struct guard *g, enum rast_prim_kind kind,
                        const float (*v0)[4], const float (*v1)[4], const float (*v2)[4])
 {
-   tile_vertex poly[TILE_MAX_POLY], tmp[TILE_MAX_POLY];
+   tile_vertex buf[2][TILE_MAX_POLY];
+   tile_vertex *poly = buf[0], *tmp = buf[1];
    if (kind == RAST_PRIM_LINE) {
       /* Liang-Barsky on the segment */
       double t0 = 0.0, t1 = 1.0;
@@ -232,7 +237,7 @@ static void guard_draw(struct rast_context *rc, struct guard *g, enum rast_prim_
    guard_copy(g, v0, poly[0]);
    guard_copy(g, v1, poly[1]);
    guard_copy(g, v2, poly[2]);
-   unsigned n = guard_clip_polygon(g, poly, 3, tmp);
+   unsigned n = guard_clip_polygon(g, &poly, 3, &tmp);
    for (unsigned i = 1; i + 1 < n; i++) {
       rast_count_stretch(rc, false);
       rast_triangle_pass(rc, (const float (*)[4])poly[0], (const float (*)[4])poly[i],
@@ -246,32 +251,17 @@ static bool guard_count(struct rast_context *rc, enum rast_prim_kind kind, const
                         const float (*v1)[4], const float (*v2)[4])
 {
    const unsigned ps = rc->vl.pos_slot;
-   if (kind == RAST_PRIM_LINE) {
-      const float dx = v0[ps][0] - v1[ps][0], dy = v0[ps][1] - v1[ps][1];
-      if (dx * dx + dy * dy == 0) {
-         rc->stats.culled++;
-         return false;
-      }
-      rc->stats.lines++;
-      return true;
-   }
-   const double S = (double)fx_one(rc->profile->xy);
+   if (kind == RAST_PRIM_LINE)
+      return rast_line_counted(rc, v0[ps][0] - v1[ps][0], v0[ps][1] - v1[ps][1]);
    const float (*v[3])[4] = { v0, v1, v2 };
    int64_t X[3], Y[3];
    for (unsigned k = 0; k < 3; k++) {
-      X[k] = (int64_t)round((double)v[k][ps][0] * S);
-      Y[k] = (int64_t)round((double)v[k][ps][1] * S);
+      X[k] = rast_snap_xy(rc->profile->xy, v[k][ps][0]);
+      Y[k] = rast_snap_xy(rc->profile->xy, v[k][ps][1]);
    }
    /* the box is finite and within 2^15 pixels: 2^28 grid steps, products in 2^57 */
-   const int64_t det = (X[0] - X[2]) * (Y[1] - Y[2]) - (Y[0] - Y[2]) * (X[1] - X[2]);
-   const unsigned facing = (unsigned)(det < 0) ^ (unsigned)rc->rs.front_ccw;
-   const unsigned face = facing ? RAST_CULL_BACK : RAST_CULL_FRONT;
-   if (det == 0 || (face & (unsigned)rc->rs.cull)) {
-      rc->stats.culled++;
-      return false;
-   }
-   rc->stats.triangles++;
-   return true;
+   bool front;
+   return rast_triangle_counted(rc, rast_det(X, Y), &front);
 }
 
 void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],

@@ -16,7 +16,7 @@
 #define W 203
 #define H 150
 #define MAX_PRIMS 600
-#define SLOTS 3                     /* position, a PERSPECTIVE and a COLOR varying */
+#define SLOTS T_PERSP_COLOR_SLOTS
 
 struct shade_ctx {
    uint64_t quads;                  /* written by this thread only */
@@ -116,24 +116,8 @@ static void draw_scene(const struct scene *s, unsigned threads, bool daz, struct
    for (unsigned i = 0; i < W * H; i++)
       res->zs[i] = 0x00ffffffu;        /* depth far, stencil 0 */
 
-   struct rast_framebuffer fb;
-   memset(&fb, 0, sizeof(fb));
-   fb.width = W;
-   fb.height = H;
-   fb.nr_cbufs = 1;
-   fb.cbuf[0] = (struct rast_color_target){ res->color, W * 4, 4, RAST_CL_RGBA8,
-                                            t_load_rgba8, t_store_rgba8, true };
-   fb.zs = (struct rast_zs_target){ (uint8_t *)res->zs, W * 4, RAST_ZS_Z24_S8 };
-   rast_set_framebuffer(rc, &fb);
-
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof(vl));
-   vl.vertex_size = SLOTS;
-   vl.pos_slot = 0;
-   vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
-   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_COLOR, 0xf };
-   rast_set_vertex_layout(rc, &vl);
+   t_bind_rgba8_z24s8(rc, res->color, res->zs, W, H);
+   t_layout_persp_color(rc);
 
    struct rast_shader fs;
    memset(&fs, 0, sizeof(fs));

@@ -26,7 +26,7 @@
 #include "tutil.h"
 
 #define MAX_PRIMS 400
-#define SLOTS 3                     /* position, a PERSPECTIVE and a COLOR varying */
+#define SLOTS T_PERSP_COLOR_SLOTS
 
 static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
@@ -108,24 +108,8 @@ static void draw_scene(const struct scene *s, const struct rast_profile *prof, u
    for (size_t i = 0; i < n; i++)
       res->zs[i] = 0x00ffffffu;        /* depth far, stencil 0 */
 
-   struct rast_framebuffer fb;
-   memset(&fb, 0, sizeof(fb));
-   fb.width = (unsigned)s->w;
-   fb.height = (unsigned)s->h;
-   fb.nr_cbufs = 1;
-   fb.cbuf[0] = (struct rast_color_target){ res->color, s->w * 4, 4, RAST_CL_RGBA8,
-                                            t_load_rgba8, t_store_rgba8, true };
-   fb.zs = (struct rast_zs_target){ (uint8_t *)res->zs, s->w * 4, RAST_ZS_Z24_S8 };
-   rast_set_framebuffer(rc, &fb);
-
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof(vl));
-   vl.vertex_size = SLOTS;
-   vl.pos_slot = 0;
-   vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
-   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_COLOR, 0xf };
-   rast_set_vertex_layout(rc, &vl);
+   t_bind_rgba8_z24s8(rc, res->color, res->zs, s->w, s->h);
+   t_layout_persp_color(rc);
 
    struct rast_shader fs;
    memset(&fs, 0, sizeof(fs));

@@ -225,3 +225,28 @@ void t_depth_count_hits(struct rast_context *rc, enum rast_func func)
                                                    RAST_STENCIL_INCR_WRAP, 0xff, 0xff };
    rast_set_depth_stencil(rc, &dsa);
 }
+
+void t_bind_rgba8_z24s8(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w, int h)
+{
+   struct rast_framebuffer fb;
+   memset(&fb, 0, sizeof(fb));
+   fb.width = (unsigned)w;
+   fb.height = (unsigned)h;
+   fb.nr_cbufs = 1;
+   fb.cbuf[0] = (struct rast_color_target){ color, w * 4, 4, RAST_CL_RGBA8,
+                                            t_load_rgba8, t_store_rgba8, true };
+   fb.zs = (struct rast_zs_target){ (uint8_t *)zs, w * 4, RAST_ZS_Z24_S8 };
+   rast_set_framebuffer(rc, &fb);
+}
+
+void t_layout_persp_color(struct rast_context *rc)
+{
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof(vl));
+   vl.vertex_size = T_PERSP_COLOR_SLOTS;
+   vl.pos_slot = 0;
+   vl.num_varyings = 2;
+   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
+   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_COLOR, 0xf };
+   rast_set_vertex_layout(rc, &vl);
+}

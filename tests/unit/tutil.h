@@ -51,6 +51,13 @@ struct tctx {
 void t_load_rgba8(const uint8_t *src, unsigned n, float (*rgba)[4]);
 void t_store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4]);
 
+/* A w x h RGBA8 colour buffer and a Z24S8 buffer as the framebuffer. */
+void t_bind_rgba8_z24s8(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w, int h);
+/* Vertices of three slots: position, a PERSPECTIVE varying (x, y read) and
+ * a COLOR varying (all four read). */
+#define T_PERSP_COLOR_SLOTS 3
+void t_layout_persp_color(struct rast_context *rc);
+
 /* Depth tested by `func` and written; the stencil (both faces) counts
  * every hit of a pixel, passed or not (INCR_WRAP). */
 void t_depth_count_hits(struct rast_context *rc, enum rast_func func);
