@@ -10,6 +10,7 @@
 #include "util/u_inlines.h"
 #include "util/u_upload_mgr.h"
 #include "util/u_framebuffer.h"
+#include "util/simple_mtx.h"
 #include "draw/draw_context.h"
 #include "draw/draw_vbuf.h"
 #include "tgsi/tgsi_exec.h"
@@ -48,6 +49,18 @@ LLVMContextRef fp_llvm_context(struct fp_context *fp)
    return fp->llvm_context;
 }
 
+/* FIXPIPE_INTERP=MODE:error: the registers against exact arithmetic. */
+static void fp_print_interp_error(const struct rast_stats *st, const char *indent)
+{
+   for (unsigned c = 0; c < 2; c++)
+      fprintf(stderr, "%sinterpolator error, %s: %" PRIu64 " values, mean %.4f, max %.4f "
+              "(last bits of the register, against exact arithmetic)\n", indent,
+              c ? "colour" : "z", st->interp_err_n[c],
+              st->interp_err_n[c] ? (double)st->interp_err_sum[c] / 65536.0 /
+                                    (double)st->interp_err_n[c] : 0.0,
+              (double)st->interp_err_max[c] / 65536.0);
+}
+
 void fp_context_frame_presented(struct fp_context *fp)
 {
    fp->frames++;
@@ -62,7 +75,8 @@ void fp_context_frame_presented(struct fp_context *fp)
 
 static void fp_print_stats(const struct fp_context *fp)
 {
-   static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color" };
+   static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color",
+                                                                  "weight" };
    const struct rast_stats *st = fp_stats(fp);
    uint64_t quads_jit = 0, quads_interp = 0, serial, parallel;
    for (unsigned t = 0; t < fp->num_threads; t++) {
@@ -88,6 +102,16 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  datapath work: quads divided %" PRIu64 ", component-quads %" PRIu64
            ", texture quads with a LOD from differences %" PRIu64 "\n",
            st->persp_quads, st->persp_comp_quads, st->tex_lod_quads);
+   {
+      const unsigned im = fp_env_interp();
+      const double px = st->pixels_covered ? (double)st->pixels_covered : 1.0;
+      fprintf(stderr, "  interpolator %s: per covered pixel %.2f additions, %.2f "
+              "multiplications, %.3f divisions; pixels in the primitives' boxes %" PRIu64 "\n",
+              rast_interp_name((enum rast_interp_mode)(im & 3u)), (double)st->interp_add / px,
+              (double)st->interp_mul / px, (double)st->interp_div / px, st->interp_box_pixels);
+      if (im & RAST_INTERP_MEASURE)
+         fp_print_interp_error(st, "  ");
+   }
    fprintf(stderr, "  tiles of %u: passes %" PRIu64 ", primitives clipped to the guard band %"
            PRIu64 "\n", rast_get_profile(fp->rast)->tile_size, st->tile_passes, st->tile_guard);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
@@ -100,12 +124,47 @@ static void fp_print_stats(const struct fp_context *fp)
            rast_get_threads(fp->rast), serial, parallel);
 }
 
+/* FIXPIPE_STATS=1 prints a context's statistics when it is destroyed.  A
+ * program may exit without destroying its context (eglretrace does): the
+ * contexts still alive print theirs at exit. */
+#define FP_STATS_LIVE 16
+static simple_mtx_t stats_mtx = SIMPLE_MTX_INITIALIZER;
+static struct fp_context *stats_live[FP_STATS_LIVE];
+static bool stats_atexit;
+
+static void fp_stats_at_exit(void)
+{
+   simple_mtx_lock(&stats_mtx);
+   for (unsigned i = 0; i < FP_STATS_LIVE; i++)
+      if (stats_live[i]) {
+         rast_flush(stats_live[i]->rast);      /* what the threads still hold */
+         fp_print_stats(stats_live[i]);
+         stats_live[i] = NULL;
+      }
+   simple_mtx_unlock(&stats_mtx);
+}
+
+static void fp_stats_track(struct fp_context *fp, bool live)
+{
+   simple_mtx_lock(&stats_mtx);
+   if (live && !stats_atexit)
+      stats_atexit = atexit(fp_stats_at_exit) == 0;
+   for (unsigned i = 0; i < FP_STATS_LIVE; i++)
+      if (live ? !stats_live[i] : stats_live[i] == fp) {
+         stats_live[i] = live ? fp : NULL;
+         break;
+      }
+   simple_mtx_unlock(&stats_mtx);
+}
+
 static void fp_destroy(struct pipe_context *pipe)
 {
    struct fp_context *fp = fp_context(pipe);
 
-   if (fp->rast && fp->print_stats)
+   if (fp->rast && fp->print_stats) {
+      fp_stats_track(fp, false);
       fp_print_stats(fp);
+   }
    if (fp->rast)
       rast_set_threads(fp->rast, 1);   /* the workers stop before what they shade with goes */
 
@@ -212,6 +271,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       goto fail;
    rast_set_texfmt(fp->rast, fp_env_texfmt());
    rast_set_options(fp->rast, fp_env_rast_options());
+   rast_set_interp(fp->rast, fp_env_interp());
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
    if (!fp->pipe.stream_uploader)
@@ -286,6 +346,8 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    draw_install_aapoint_stage(fp->draw, &fp->pipe);
    draw_install_pstipple_stage(fp->draw, &fp->pipe);
 
+   if (fp->print_stats)
+      fp_stats_track(fp, true);
    return &fp->pipe;
 
 fail:

@@ -20,6 +20,7 @@ static unsigned long env_stats_frames;
 static const struct numsys *env_texfmt;
 static unsigned env_debug;
 static unsigned env_threads;
+static unsigned env_interp;
 
 static const struct debug_named_value fp_debug_flags[] = {
    { "nojit", FP_DEBUG_NOJIT,
@@ -103,6 +104,30 @@ static void fp_env_parse(void)
          env_threads = (unsigned)v;
    }
 
+   /* FIXPIPE_INTERP=MODE[:error] (docs/interp-modes.md) */
+   const char *im = getenv("FIXPIPE_INTERP");
+   env_interp = RAST_INTERP_SCANLINE;
+   if (im && *im) {
+      char mode[32];
+      const char *colon = strchr(im, ':');
+      const size_t len = colon ? (size_t)(colon - im) : strlen(im);
+      bool ok = len < sizeof(mode) && (!colon || !strcmp(colon, ":error"));
+      unsigned m = 0;
+      if (ok) {
+         memcpy(mode, im, len);
+         mode[len] = '\0';
+         for (m = 0; rast_interp_name((enum rast_interp_mode)m); m++)
+            if (!strcmp(mode, rast_interp_name((enum rast_interp_mode)m)))
+               break;
+         ok = rast_interp_name((enum rast_interp_mode)m) != NULL;
+      }
+      if (ok)
+         env_interp = m | (colon ? RAST_INTERP_MEASURE : 0u);
+      else
+         fprintf(stderr, "fixpipe: bad FIXPIPE_INTERP '%s' (accepted: scanline, barycentric, "
+                 "vector, each optionally with :error); using scanline\n", im);
+   }
+
    const char *t = getenv("FIXPIPE_TEXFMT");
    env_texfmt = numsys_default();
    if (t && *t) {
@@ -151,6 +176,14 @@ unsigned fp_env_rast_options(void)
 {
    const unsigned d = fp_env_debug();
    return (d & FP_DEBUG_SCALAR ? RAST_OPT_SCALAR : 0u) | (d & FP_DEBUG_NOSKIP ? RAST_OPT_NOSKIP : 0u);
+}
+
+/* The interpolator of Z and colour, and whether it is measured
+ * (rast_set_interp). */
+unsigned fp_env_interp(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return env_interp;
 }
 
 /* The texture path's number system: the unit (fp_sampler.c) and the

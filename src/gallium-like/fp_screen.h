@@ -43,6 +43,7 @@ const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 #define FP_DEBUG_NOTHREADS (1u << 4) /* the model on one thread, whatever FIXPIPE_THREADS says */
 unsigned fp_env_debug(void);
 unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
+unsigned fp_env_interp(void);                /* FIXPIPE_INTERP: rast_set_interp's mode */
 unsigned fp_env_threads(void);               /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */
 
 /* Render-target formats the driver can pack from float (fp_format.c). */

@@ -122,6 +122,23 @@ void rast_set_options(struct rast_context *rc, unsigned opts)
    state_changed(rc);
 }
 
+void rast_set_interp(struct rast_context *rc, unsigned mode)
+{
+   rast_flush(rc);
+   rc->interp = mode;
+   state_changed(rc);
+}
+
+const char *rast_interp_name(enum rast_interp_mode mode)
+{
+   switch (mode) {
+   case RAST_INTERP_SCANLINE: return "scanline";
+   case RAST_INTERP_BARYCENTRIC: return "barycentric";
+   case RAST_INTERP_VECTOR: return "vector";
+   }
+   return NULL;
+}
+
 void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns)
 {
    rast_flush(rc);

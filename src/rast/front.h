@@ -156,6 +156,22 @@ struct fr_tex {
    float next[RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE];
 };
 
+/* The per-pixel independent interpolators of Z and colour (seeds 001,
+ * 002; interp_modes.c): what a primitive gives them once. */
+struct fr_modes {
+   bool on;                    /* the primitive takes rc->interp's mode (points: the walk) */
+   int64_t vx[3], vy[3];       /* the three vertices, XY format */
+   int64_t e1x, e1y, e2x, e2y; /* V1 - V0, V2 - V0 */
+   int64_t det;                /* (V1 - V0) x (V2 - V0), 2 XY fraction bits' worth */
+   int64_t rdet;               /* 002: round(2^(k + W) / det), k the bits of |det| */
+   unsigned rshift;            /* 002: a = n_a · rdet >> rshift (k) */
+   int64_t v[3][FR_MAX_FIX];   /* 001: the vertices' registers */
+   int64_t d1[FR_MAX_FIX], d2[FR_MAX_FIX];   /* 002: A1 - A0, A2 - A0 */
+   int64_t wmin, wmax;         /* the weight format's range */
+   unsigned wbits;             /* its fraction bits, W */
+   int64_t row0;               /* the first scan line (the baseline count) */
+};
+
 struct rast_front {
    /* ---- chosen in rast_front_validate, and again when the primitive
     *      changes between points and the rest (rast_front_begin) ---- */
@@ -164,6 +180,8 @@ struct rast_front {
    struct fr_comp color[FR_MAX_COMP], lin[FR_MAX_COMP], persp[FR_MAX_COMP],
                   cnst[FR_MAX_COMP];
    unsigned nfix, nflt, nwalk; /* 1 + ncolor; 1 + nlin + npersp; 1 + nlin */
+   unsigned nfix_walk;         /* the fix registers the edges walk: nfix, or 0 in a
+                                * per-pixel mode (FIXPIPE_INTERP), set per primitive */
    int64_t fix_min[FR_MAX_FIX], fix_max[FR_MAX_FIX];
    struct fx_sat *fix_sat[FR_MAX_FIX];
    struct fx_format fix_fmt[FR_MAX_FIX];
@@ -175,6 +193,7 @@ struct rast_front {
    float inv_S;
    fr_pair_func pair;          /* span processor specialised for the inputs */
    struct fr_tex tex;          /* the perspective division's registers */
+   struct fr_modes md;         /* FIXPIPE_INTERP's registers */
 
    /* ---- the primitive being drawn ---- */
    unsigned nverts;
@@ -267,7 +286,12 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr);
 void rast_scan_convex(struct rast_context *rc, struct rast_front *fr);
 
 /* interp.c */
-fr_pair_func rast_interp_choose(const struct rast_front *fr);
+fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast_front *fr);
+/* interp_modes.c: a primitive's registers for the interpolator of
+ * rc->interp, on its vertices i0, i1, i2 (a line: two corners along it and
+ * one across); the bounding box counted. */
+void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, unsigned i0,
+                             unsigned i1, unsigned i2);
 /* interp.c: the perspective division's functions for rc->texfmt */
 void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *fr);
 /* interp.c: the perspective division's per-primitive set-up, with vertices

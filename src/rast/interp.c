@@ -14,6 +14,7 @@
 #include <math.h>
 #include <string.h>
 #include "rast/front.h"
+#include "rast/interp_modes.h"
 #include "fixed/dfx_ops.h"
 #include "rast/lanes.h"
 #include "fixed/dfx_lanes.h"
@@ -574,9 +575,73 @@ static inline void fix_quad(const struct rast_front *fr, unsigned k, int64_t (*r
    }
 }
 
+/* The scan line walk's operations for a quad row of nq quads (its two
+ * rows' starts and a step per pixel and register), and seed 002's baseline:
+ * each pixel walked alone from the primitive's first scan line and its
+ * row's first covered pixel (docs/interp-modes.md), for triangles and
+ * lines. */
+static inline void count_walk(struct rast_context *rc, const struct rast_front *fr, int64_t y,
+                              const int64_t *xa, int64_t xq, uint64_t nq, unsigned nfix)
+{
+   rc->stats.interp_add += 2 * (2 + nfix) + 4 * nq * nfix;
+   rc->stats.interp_mul += 2 * (1 + nfix);
+   if (!fr->md.on)
+      return;        /* a point: no first scan line of its own */
+   const int64_t n = 2 * (int64_t)nq;
+   uint64_t steps = 0;
+   for (unsigned r = 0; r < 2; r++) {
+      const int64_t left = xa[r] - xq < 0 ? 0 : (xa[r] - xq > n ? n : xa[r] - xq);
+      const int64_t right = n - left, down = y + r - fr->md.row0;
+      steps += (uint64_t)(left * (left + 1) / 2 + right * (right - 1) / 2) +
+               (uint64_t)n * (uint64_t)(down > 0 ? down + 1 : 1);
+   }
+   rc->stats.interp_indep_add += steps * nfix + 4 * nq * 2;
+   rc->stats.interp_indep_mul += 4 * nq * (1 + 3 * nfix);
+}
+
+/* The operations of nq quads of a per-pixel mode (interp_modes.h). */
+static inline void count_modes(struct rast_context *rc, const unsigned mode, uint64_t nq,
+                               unsigned nfix)
+{
+   const uint64_t px = 4 * nq;
+   if (mode == RAST_INTERP_BARYCENTRIC) {
+      rc->stats.interp_add += px * (MODES_BARY_ADD + MODES_BARY_ADD_REG * nfix);
+      rc->stats.interp_mul += px * (MODES_BARY_MUL + MODES_BARY_MUL_REG * nfix);
+      rc->stats.interp_div += px * MODES_BARY_DIV;
+   } else {
+      rc->stats.interp_add += px * (MODES_VEC_ADD + MODES_VEC_ADD_REG * nfix);
+      rc->stats.interp_mul += px * (MODES_VEC_MUL + MODES_VEC_MUL_REG * nfix);
+   }
+}
+
+/* The fix registers of the quad at x (pass-local) in a per-pixel mode. */
+static inline void modes_quad(struct rast_context *rc, const struct rast_front *fr,
+                              const unsigned mode, int64_t x, int64_t y, unsigned nfix,
+                              int64_t v[RAST_QUAD_SIZE][FR_MAX_FIX])
+{
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      const int64_t px = (x + (i & 1)) * fr->S + fr->H, py = (y + (i >> 1)) * fr->S + fr->H;
+      if (mode == RAST_INTERP_BARYCENTRIC)
+         modes_barycentric(rc, fr, px, py, nfix, v[i]);
+      else
+         modes_vector(rc, fr, px, py, nfix, v[i]);
+   }
+}
+
+/* RAST_INTERP_MEASURE: register k of the quad's covered pixels. */
+static inline void measure_quad(struct rast_context *rc, const struct rast_front *fr, unsigned k,
+                                int64_t x, int64_t y, unsigned mask, const int64_t *v)
+{
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+      if (mask & (1u << i))
+         modes_measure(rc, fr, k, (x + (i & 1)) * fr->S + fr->H, (y + (i >> 1)) * fr->S + fr->H,
+                       v[i]);
+}
+
 static inline __attribute__((always_inline)) void
 pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
-          const bool has_color, const bool has_lin, const bool has_persp)
+          const bool has_color, const bool has_lin, const bool has_persp,
+          const unsigned mode, const bool measure)
 {
    const struct fr_row *r0 = &fr->row[0], *r1 = &fr->row[1];
    bool e0 = r0->valid && r0->xs <= r0->xe;
@@ -606,30 +671,39 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
     * cannot shift the next. */
    const bool direct[2] = { !e0, !e1 };
    int64_t xa[2] = { e0 ? r0->xs : xq, e1 ? r1->xs : xq };
+   /* the per-pixel modes start no fix register from a row */
+   const unsigned nrow = mode == RAST_INTERP_SCANLINE ? nfix : 0;
    if (r0->valid) {
       if (e0)
-         row_start_fix(fr, r0, xa[0], nfix, fix[0], frac);
+         row_start_fix(fr, r0, xa[0], nrow, fix[0], frac);
       else
-         row_base_derived(fr, r0, xq, 0, nfix, fix[0], frac);
+         row_base_derived(fr, r0, xq, 0, nrow, fix[0], frac);
       row_start_flt(fr, r0, xq, nflt, flt[0]);
       if (r1->valid) {
          if (e1)
-            row_start_fix(fr, r1, xa[1], nfix, fix[1], frac);
+            row_start_fix(fr, r1, xa[1], nrow, fix[1], frac);
          else
-            row_base_derived(fr, r1, xq, 0, nfix, fix[1], frac);
+            row_base_derived(fr, r1, xq, 0, nrow, fix[1], frac);
          row_start_flt(fr, r1, xq, nflt, flt[1]);
       } else {
-         row_base_derived(fr, r0, xq, 1, nfix, fix[1], frac);
+         row_base_derived(fr, r0, xq, 1, nrow, fix[1], frac);
          for (unsigned k = 0; k < nflt; k++)
             flt[1][k] = flt[0][k] + fr->flt_dy[k];
       }
    } else {
       /* here e1: r1 has the covered pixels */
-      row_start_fix(fr, r1, xa[1], nfix, fix[1], frac);
+      row_start_fix(fr, r1, xa[1], nrow, fix[1], frac);
       row_start_flt(fr, r1, xq, nflt, flt[1]);
-      row_base_derived(fr, r1, xq, -1, nfix, fix[0], frac);
+      row_base_derived(fr, r1, xq, -1, nrow, fix[0], frac);
       for (unsigned k = 0; k < nflt; k++)
          flt[0][k] = flt[1][k] - fr->flt_dy[k];
+   }
+   {
+      const uint64_t nq = (uint64_t)((xe - xq) / 2 + 1);
+      if (mode == RAST_INTERP_SCANLINE)
+         count_walk(rc, fr, y, xa, xq, nq, nfix);
+      else
+         count_modes(rc, mode, nq, nfix);
    }
 
    struct rast_quad *q = &fr->quad[fr->cur];
@@ -644,15 +718,30 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    for (int64_t x = xq; x <= xe; x += 2) {
       unsigned mask = span_bits(r0, x) | (span_bits(r1, x) << 2);
 
-      /* Z: the seed's Z_left + ∂Z/∂x walk. */
-      fix_quad(fr, 0, fix, xa, direct, x, q->z);
+      int64_t mv[RAST_QUAD_SIZE][FR_MAX_FIX];
+      if (mode != RAST_INTERP_SCANLINE)
+         modes_quad(rc, fr, mode, x, y, nfix, mv);
+      /* Z: the seed's Z_left + ∂Z/∂x walk, or the mode's. */
+      if (mode == RAST_INTERP_SCANLINE)
+         fix_quad(fr, 0, fix, xa, direct, x, q->z);
+      else
+         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+            q->z[i] = mv[i][0];
+      if (measure)
+         measure_quad(rc, fr, 0, x, y, mask, q->z);
       for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
          q->frag_z[i] = (float)((double)q->z[i] * zs);
       if (has_color) {
          for (unsigned k = 1; k < nfix; k++) {
             const struct fr_comp *c = &fr->color[k - 1];
             int64_t p[RAST_QUAD_SIZE];
-            fix_quad(fr, k, fix, xa, direct, x, p);
+            if (mode == RAST_INTERP_SCANLINE)
+               fix_quad(fr, k, fix, xa, direct, x, p);
+            else
+               for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+                  p[i] = mv[i][k];
+            if (measure)
+               measure_quad(rc, fr, k, x, y, mask, p);
             float *o = q->in[c->var][c->chan];
             for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
                o[i] = (float)p[i] * cs;
@@ -705,7 +794,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
 
 #define PAIR_VARIANT(name, c, l, p)                                        \
    static void name(struct rast_context *rc, struct rast_front *fr, int64_t y) \
-   { pair_impl(rc, fr, y, c, l, p); }
+   { pair_impl(rc, fr, y, c, l, p, RAST_INTERP_SCANLINE, false); }
 
 PAIR_VARIANT(pair_z,      false, false, false)
 PAIR_VARIANT(pair_c,      true,  false, false)
@@ -716,8 +805,19 @@ PAIR_VARIANT(pair_cp,     true,  false, true)
 PAIR_VARIANT(pair_lp,     false, true,  true)
 PAIR_VARIANT(pair_clp,    true,  true,  true)
 
-fr_pair_func rast_interp_choose(const struct rast_front *fr)
+/* FIXPIPE_INTERP other than the walk, or measured: one function for every
+ * input, the mode taken per primitive (a point keeps the walk). */
+static void pair_modes(struct rast_context *rc, struct rast_front *fr, int64_t y)
 {
+   const unsigned mode = fr->md.on ? rc->interp & 3u : RAST_INTERP_SCANLINE;
+   const bool measure = (rc->interp & RAST_INTERP_MEASURE) && fr->md.on;
+   pair_impl(rc, fr, y, fr->ncolor != 0, fr->nlin != 0, fr->npersp != 0, mode, measure);
+}
+
+fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast_front *fr)
+{
+   if (rc->interp != RAST_INTERP_SCANLINE)
+      return pair_modes;
    static const fr_pair_func table[8] = {
       pair_z, pair_c, pair_l, pair_cl, pair_p, pair_cp, pair_lp, pair_clp
    };

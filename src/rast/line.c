@@ -236,6 +236,7 @@ void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (
 
    /* The perspective division's vector form on corners 0, 1 (along the
     * line) and 3 (across it, where nothing varies: Δ2 = 0). */
+   rast_interp_modes_setup(rc, fr, 0, 1, 3);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 3);
    fr->quad[0].front_facing = fr->quad[1].front_facing = true;

@@ -20,6 +20,7 @@ static const struct rast_profile profile_seed = {
    .tile_size = 2048,
    .max_target = 8192,
    .color_perspective = false,
+   .weight = { 8, 24 },
 };
 
 static const struct rast_profile profile_wide = {
@@ -34,6 +35,7 @@ static const struct rast_profile profile_wide = {
    .tile_size = 8192,
    .max_target = 8192,
    .color_perspective = true,
+   .weight = { 8, 24 },
 };
 
 static const struct rast_profile *const profiles[] = {

@@ -37,6 +37,7 @@ enum rast_reg_class {
    RAST_REG_DXDY,      /* edge slopes dx/dy */
    RAST_REG_Z,         /* Z registers and their slopes */
    RAST_REG_COLOR,     /* R, G, B, A registers and their slopes */
+   RAST_REG_WEIGHT,    /* the per-pixel weights of FIXPIPE_INTERP=barycentric|vector */
    RAST_REG_COUNT
 };
 
@@ -53,6 +54,9 @@ struct rast_profile {
    unsigned tile_size;
    unsigned max_target;            /* largest target and texture side (the GL limits) */
    bool color_perspective;         /* seed: false, colour is the seed's linear Gouraud walk */
+   /* The weights of the per-pixel independent interpolators (seeds 001,
+    * 002; docs/interp-modes.md): 8.24 in both profiles. */
+   struct fx_format weight;
 };
 
 /* NULL when the name is unknown. */
@@ -305,6 +309,17 @@ struct rast_stats {
     * target larger than X_out, and primitives clipped to the guard band
     * because no origin holds them in the XY registers. */
    uint64_t tile_passes, tile_guard;
+   /* The interpolator of Z and colour (rast_set_interp): the operations
+    * its registers took (docs/interp-modes.md says what each counts), the
+    * additions and multiplications a scan-line walk made per-pixel
+    * independent would take (seed 002's baseline; scanline mode only), and the pixels of the
+    * primitives' bounding boxes (seed 001's coordinate manager).  With
+    * RAST_INTERP_MEASURE, each covered pixel's registers against exact
+    * arithmetic, per class (0 Z, 1 colour): how many, the sum of the
+    * errors and the largest, in 2^-16 of the register's last bit. */
+   uint64_t interp_add, interp_mul, interp_div, interp_indep_add, interp_indep_mul;
+   uint64_t interp_box_pixels;
+   uint64_t interp_err_n[2], interp_err_sum[2], interp_err_max[2];
 };
 
 /* ------------------------------------------------------------------ */
@@ -337,6 +352,16 @@ void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns);
  * computes what the skips leave out.  Every choice gives the same bits. */
 enum { RAST_OPT_SCALAR = 1u << 0, RAST_OPT_NOSKIP = 1u << 1 };
 void rast_set_options(struct rast_context *rc, unsigned opts);
+/* How Z and the colour registers get each pixel's value (FIXPIPE_INTERP,
+ * docs/interp-modes.md): seed 000's incremental walk, seed 001's areas or
+ * seed 002's edge vectors.  Coverage is the scan converter's in every mode.
+ * RAST_INTERP_MEASURE also compares every covered pixel's registers with
+ * exact arithmetic (rast_stats.interp_err_*). */
+enum rast_interp_mode { RAST_INTERP_SCANLINE, RAST_INTERP_BARYCENTRIC, RAST_INTERP_VECTOR };
+enum { RAST_INTERP_MEASURE = 1u << 4 };
+void rast_set_interp(struct rast_context *rc, unsigned mode);
+/* "scanline", "barycentric", "vector"; NULL for another value. */
+const char *rast_interp_name(enum rast_interp_mode mode);
 
 /* Primitives: each vertex is vertex_size float[4] slots. */
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],

@@ -31,6 +31,7 @@ struct rast_context {
    struct rast_vertex_layout vl;
    struct rast_shader fs;
    unsigned opts;                   /* RAST_OPT_* */
+   unsigned interp;                 /* enum rast_interp_mode | RAST_INTERP_MEASURE */
    const struct numsys *texfmt;     /* never NULL after rast_create */
 
    bool dirty;                      /* re-validate before the next primitive */

@@ -65,7 +65,11 @@ static void edge_start(struct rast_context *rc, struct rast_front *fr,
 
    if (!e->left)
       return;
-   for (unsigned k = 0; k < fr->nfix; k++) {
+   const unsigned nfix = fr->nfix_walk;
+   rc->stats.interp_add += 2 * nfix;
+   rc->stats.interp_mul += (steps ? 2 : 1) * nfix;
+   rc->stats.interp_div += (steps ? 2 : 1) * nfix;
+   for (unsigned k = 0; k < nfix; k++) {
       int64_t va = fr->vfix[e->a][k], d = fr->vfix[e->b][k] - va;
       e->fix[k] = fr_fix_sat(fr, k, (fx_i128)va + fx_div_round_i128((fx_i128)d * t, e->dy));
       e->fix_step[k] = steps ? fr_fix_sat(fr, k, fx_div_round_i128((fx_i128)d * S, e->dy)) : 0;
@@ -90,7 +94,8 @@ static inline void edge_step(struct rast_context *rc, struct rast_front *fr, str
    }
    if (!e->left)
       return;
-   for (unsigned k = 0; k < fr->nfix; k++)
+   rc->stats.interp_add += fr->nfix_walk;
+   for (unsigned k = 0; k < fr->nfix_walk; k++)
       e->fix[k] = fr_fix_add(fr, k, e->fix[k], e->fix_step[k]);
    for (unsigned k = 0; k < fr->nwalk; k++)
       e->flt[k] += e->flt_step[k];
@@ -109,7 +114,7 @@ static inline void record_row(struct rast_context *rc, struct rast_front *fr, st
    row->xe = xe;
    row->xl = L->x;
    row->xl_frac = (float)L->rem / (float)L->dy;
-   for (unsigned k = 0; k < fr->nfix; k++)
+   for (unsigned k = 0; k < fr->nfix_walk; k++)
       row->fix[k] = L->fix[k];
    for (unsigned k = 0; k < fr->nwalk; k++)
       row->flt[k] = L->flt[k];

@@ -112,7 +112,8 @@ void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool po
    for (unsigned k = 1; k < fr->nfix; k++)
       set_fix_class(rc, fr, k, prof->color, RAST_REG_COLOR);
 
-   fr->pair = rast_interp_choose(fr);
+   fr->nfix_walk = fr->nfix;
+   fr->pair = rast_interp_choose(rc, fr);
    rast_interp_perspective_choose(rc, fr);
 }
 
@@ -155,8 +156,10 @@ void rast_setup_constants(struct rast_front *fr, const float (*pv)[4])
 }
 
 /* The plane of every attribute through the three fixed-point vertices:
- * ∂/∂x and ∂/∂y per pixel, once per triangle.  Fixed registers get the exact
- * quotient rounded once; floats are computed in double. */
+ * ∂/∂x and ∂/∂y per pixel, once per triangle; the fix registers only for
+ * the walk (a per-pixel FIXPIPE_INTERP mode has no use for them).  Fixed
+ * registers get the exact quotient rounded once; floats are computed in
+ * double. */
 static void tri_gradients(struct rast_front *fr)
 {
    int64_t ex = fr->X[1] - fr->X[0], ey = fr->Y[1] - fr->Y[0];
@@ -164,7 +167,7 @@ static void tri_gradients(struct rast_front *fr)
    int64_t D = ex * gy - ey * gx;
    fx_i128 DS = (fx_i128)D;
 
-   for (unsigned k = 0; k < fr->nfix; k++) {
+   for (unsigned k = 0; k < fr->nfix_walk; k++) {
       int64_t d1 = fr->vfix[1][k] - fr->vfix[0][k];
       int64_t d2 = fr->vfix[2][k] - fr->vfix[0][k];
       fx_i128 nx = ((fx_i128)d1 * gy - (fx_i128)d2 * ey) * fr->S;
@@ -283,6 +286,7 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
 
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);
+   rast_interp_modes_setup(rc, fr, 0, 1, 2);
    tri_gradients(fr);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 2);

@@ -218,20 +218,27 @@ static void sync_state(struct rast_context *w, const struct rast_context *rc, un
    if (rc->fs.thread_ctx[t])
       w->fs.ctx = rc->fs.thread_ctx[t];
    w->opts = rc->opts;
+   w->interp = rc->interp;
    w->texfmt = rc->texfmt;
    w->dirty = true;
 }
 
-/* rast_stats holds uint64_t counters only (fx_sat is two of them). */
+/* rast_stats holds uint64_t counters only (fx_sat is two of them), and
+ * two largest values, which merge by their maximum. */
 static void stats_add(struct rast_stats *to, struct rast_stats *from)
 {
    _Static_assert(sizeof(struct rast_stats) % sizeof(uint64_t) == 0, "counters only");
    uint64_t a[sizeof(struct rast_stats) / sizeof(uint64_t)], b[sizeof(a) / sizeof(a[0])];
+   uint64_t max[2];
+   for (unsigned c = 0; c < 2; c++)
+      max[c] = to->interp_err_max[c] > from->interp_err_max[c] ? to->interp_err_max[c]
+                                                                : from->interp_err_max[c];
    memcpy(a, to, sizeof(a));
    memcpy(b, from, sizeof(b));
    for (size_t i = 0; i < sizeof(a) / sizeof(a[0]); i++)
       a[i] += b[i];
    memcpy(to, a, sizeof(a));
+   memcpy(to->interp_err_max, max, sizeof(max));
    memset(from, 0, sizeof(*from));
 }
 

@@ -10,7 +10,6 @@
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=tiles
 . "$(dirname "$0")/checks.sh"
-compare=$build/tools/fp-compare
 
 # replay TRACE DIR DRIVER PROFILE [VAR=value...]: snapshots of every frame in DIR
 replay() {
@@ -29,9 +28,6 @@ renderer() {
         env WAFFLE_PLATFORM=surfaceless_egl eglretrace --headless --dump-state="${first:-0}" \
         "$1" 2>/dev/null | sed -n 's/.*"GL_RENDERER": "\([^"]*\)".*/\1/p'
 }
-
-# kv A B KEY: one figure of fp-compare A B
-kv() { "$compare" --format=kv "$1" "$2" | sed -n "s/^$3=//p"; }
 
 for trace in "$root"/traces/tiles/*.trace; do
     name=$(basename "$trace" .trace)
@@ -61,20 +57,8 @@ for trace in "$root"/traces/tiles/*.trace; do
     else
         fail "$name: $(wc -l < "$d/threads.diff") of $n frames differ between 1 and 2 threads"
     fi
-    worse=""
-    worst="inf"
-    for f in $(ls "$d/llvmpipe"); do
-        ps=$(kv "$d/llvmpipe/$f" "$d/seed/$f" psnr) pw=$(kv "$d/llvmpipe/$f" "$d/wide/$f" psnr)
-        ds=$(kv "$d/llvmpipe/$f" "$d/seed/$f" diff_percent)
-        dw=$(kv "$d/llvmpipe/$f" "$d/wide/$f" diff_percent)
-        echo "$f seed $ps dB $ds% wide $pw dB $dw%" >> "$d/frames.txt"
-        if awk -v ps="$ps" -v pw="$pw" -v ds="$ds" -v dw="$dw" 'BEGIN {
-               if (ps == "inf") ps = 1e9; if (pw == "inf") pw = 1e9;
-               exit !(ps + 0.5 < pw || ds > dw + 0.1) }'; then
-            worse="$worse $f"
-        fi
-        worst=$(awk -v a="$worst" -v b="$ps" 'BEGIN { if (a == "inf") print b; else if (b == "inf") print a; else print (b < a ? b : a) }')
-    done
+    worse=$(worse_frames "$d/llvmpipe" "$d/seed" "$d/wide" "$d/frames.txt")
+    worst=$(awk '{ print $2 }' "$d/frames.txt" | sort -g | head -n 1)
     if [ -z "$worse" ]; then
         pass "$name: $n frames of seed within wide's error against llvmpipe (worst $worst dB)"
     else

@@ -3,8 +3,8 @@
  * triangles, lines and points, many of them small and across the bands'
  * boundaries, with depth, stencil and order-dependent blending, drawn with
  * random thread counts.  Colour, depth and stencil bytes and every counter
- * must be those of one thread; each thread must shade with its own shader
- * context.  Run under ThreadSanitizer by `./fixpipe check` (build/tsan).
+ * must be those of one thread, in each FIXPIPE_INTERP mode (whose coverage
+ * must be scanline's); each thread must shade with its own shader context.  Run under ThreadSanitizer by `./fixpipe check` (build/tsan).
  */
 #include <math.h>
 #if defined(__x86_64__) || defined(__i386__)
@@ -95,11 +95,13 @@ struct result {
    unsigned threads_shading;
 };
 
-static void draw_scene(const struct scene *s, unsigned threads, bool daz, struct result *res)
+static void draw_scene(const struct scene *s, unsigned threads, bool daz, unsigned interp,
+                       struct result *res)
 {
    static struct shade_ctx sctx[RAST_MAX_THREADS];
    struct rast_context *rc = rast_create(rast_profile_by_name("seed"));
    CHECK(rast_set_threads(rc, threads), "%u threads", threads);
+   rast_set_interp(rc, interp);
 #if defined(__x86_64__) || defined(__i386__)
    /* With daz, drawn as Mesa's draw module leaves the thread around a draw:
     * denormals flushed to zero (FTZ) and read as zero (DAZ), set after the
@@ -186,8 +188,29 @@ int main(void)
       unsigned threads = 2 + (unsigned)(t_xorshift(&rng) % 7);
       if (n % 10 == 9)
          threads = RAST_MAX_THREADS;
-      draw_scene(&scene, 1, n & 1, &one);
-      draw_scene(&scene, threads, n & 1, &many);
+      /* every FIXPIPE_INTERP mode, measured or not, in turn */
+      const unsigned interp = n % 3 | (n % 6 >= 3 ? RAST_INTERP_MEASURE : 0u);
+      draw_scene(&scene, 1, n & 1, interp, &one);
+      draw_scene(&scene, threads, n & 1, interp, &many);
+      if (interp != RAST_INTERP_SCANLINE) {
+         /* the scan converter's coverage, whatever the interpolator */
+         static struct result walk;
+         draw_scene(&scene, 1, n & 1, RAST_INTERP_SCANLINE, &walk);
+         CHECK(walk.stats.quads == one.stats.quads &&
+               walk.stats.pixels_covered == one.stats.pixels_covered &&
+               walk.stats.triangles == one.stats.triangles,
+               "scene %u: %s covers %llu pixels in %llu quads, scanline %llu in %llu", n,
+               rast_interp_name(interp & 3u), (unsigned long long)one.stats.pixels_covered,
+               (unsigned long long)one.stats.quads, (unsigned long long)walk.stats.pixels_covered,
+               (unsigned long long)walk.stats.quads);
+      }
+      if (interp & RAST_INTERP_MEASURE)
+         /* points are not measured: their registers are the vertex's */
+         CHECK(one.stats.interp_err_n[0] > 0 &&
+               one.stats.interp_err_n[0] <= one.stats.pixels_covered,
+               "scene %u: %llu Z values measured of %llu pixels covered", n,
+               (unsigned long long)one.stats.interp_err_n[0],
+               (unsigned long long)one.stats.pixels_covered);
       scenes++;
       parallel_scenes += many.threads_shading > 1;
       range_events += one.stats.tex_sat + one.stats.tex_flush;
