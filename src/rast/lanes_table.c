@@ -10,7 +10,7 @@
 #define LANES_STR(x) LANES_STR2(x)
 
 const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
-   .isa = LANES_STR(LANES_SUFFIX) + 1,
+   .isa = &LANES_STR(LANES_SUFFIX)[1],     /* without the leading _ */
    .persp_dfx19 = LANES_FN(persp_dfx19_lanes),
    .persp2_dfx19 = LANES_FN(persp2_dfx19_lanes),
    .tex_dfx19_2d = LANES_FN(tex_dfx19_2d_lanes),

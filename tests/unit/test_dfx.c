@@ -21,16 +21,18 @@
 __extension__ typedef __int128 i128;
 
 static struct dfx_format F;
+
+static int ex(int l) { return 4 * l + 4 - F.mant_bits - 32; }
+static uint32_t mlo(void) { return UINT32_C(1) << (F.mant_bits - 4); }
+static uint32_t mhi(void) { return (UINT32_C(1) << F.mant_bits) - 1; }
+
+#ifndef FUZZ_TARGET   /* the unit test's random operands */
 static uint64_t rng = 88172645463325252ull;
 
 static uint64_t rnd(void)
 {
    return t_xorshift(&rng);
 }
-
-static int ex(int l) { return 4 * l + 4 - F.mant_bits - 32; }
-static uint32_t mlo(void) { return UINT32_C(1) << (F.mant_bits - 4); }
-static uint32_t mhi(void) { return (UINT32_C(1) << F.mant_bits) - 1; }
 
 static struct dfx rnd_dfx(void)
 {
@@ -40,6 +42,7 @@ static struct dfx rnd_dfx(void)
    a.m = mlo() + (uint32_t)(rnd() % (mhi() - mlo() + 1));
    return a;
 }
+#endif
 
 static bool valid(struct dfx a)
 {
@@ -197,6 +200,46 @@ static void test_from_double(double d)
    check_near("from_double", r, x, e - 53, 8, false, &st, b0);
 }
 
+#ifdef FUZZ_TARGET
+/* libFuzzer (tests/fuzz, ./fixpipe fuzz): the same checks on operands from
+ * the input's bytes: a format W, an operation, two registers (sign, L,
+ * a mantissa in range) and a double; a result off its bound aborts. */
+static struct dfx fuzz_dfx(const uint8_t *p)
+{
+   uint32_t m;
+   memcpy(&m, p + 1, 4);
+   struct dfx a;
+   a.s = p[0] & 1;
+   a.l = (uint8_t)((p[0] >> 1) % 16);
+   a.m = mlo() + m % (mhi() - mlo() + 1);
+   return a;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+   if (size < 2 + 5 + 5 + 8)
+      return 0;
+   F.mant_bits = (uint8_t)(DFX_MANT_BITS_MIN + data[0] % (DFX_MANT_BITS_MAX - DFX_MANT_BITS_MIN + 1));
+   const struct dfx a = fuzz_dfx(data + 2), b = fuzz_dfx(data + 7);
+   double d;
+   memcpy(&d, data + 12, 8);
+   switch (data[1] % 6) {
+   case 0: test_mul(a, b); break;
+   case 1: test_addsub(a, b, false); break;
+   case 2: test_addsub(a, b, true); break;
+   case 3: test_recip(b); break;
+   case 4: test_div(a, b); break;
+   default:
+      if (isfinite(d) && d != 0)
+         test_from_double(d);
+      break;
+   }
+   if (t_failures)
+      abort();
+   return 0;
+}
+#else
 static void random_ops(unsigned n)
 {
    for (unsigned i = 0; i < n; i++) {
@@ -380,3 +423,4 @@ int main(void)
           (unsigned long long)n_checked, (unsigned long long)n19);
    return t_summary("dfx");
 }
+#endif

@@ -18,9 +18,11 @@
 #define TH 2048
 
 enum kind { K_SMALL, K_MEDIUM, K_SLIVER, K_HUGE, K_CENTRES, K_HALVES, K_DEGEN, K_GUARD, K_COUNT };
+#ifndef FUZZ_TARGET
 static const char *kind_name[K_COUNT] = {
    "small", "medium", "sliver", "huge", "on-centres", "on-half-pixels", "degenerate", "guard-band"
 };
+#endif
 
 struct cmp { struct tctx *t; uint64_t missing; };
 
@@ -31,6 +33,45 @@ static void visit_ref(void *ctx, int x, int y)
       c->missing++;
 }
 
+/* What one triangle did against the reference. */
+struct outcome {
+   int64_t X[3], Y[3];          /* its vertices in the XY format */
+   uint64_t ref, missing;       /* the reference's pixels; those the model left out */
+   bool same;                   /* the same pixel set, none twice, none outside */
+   bool sat, dsat;              /* a counted saturation; one of a dx/dy slope (not compared) */
+};
+
+/* The triangle v through the model and through the exact reference. */
+static struct outcome draw_and_compare(struct tctx *t, float v[3][2], bool half,
+                                       bool bottom, struct rast_scissor clip)
+{
+   struct outcome o;
+   struct fx_sat dummy = { 0, 0 };
+   const int64_t S = fx_one(t->prof->xy);
+   float vert[3][1][4];
+   for (int i = 0; i < 3; i++) {
+      vert[i][0][0] = v[i][0];
+      vert[i][0][1] = v[i][1];
+      vert[i][0][2] = 0.5f;
+      vert[i][0][3] = 1.0f;
+      o.X[i] = fx_from_double(t->prof->xy, v[i][0], &dummy);
+      o.Y[i] = fx_from_double(t->prof->xy, v[i][1], &dummy);
+   }
+   struct rast_stats before = *rast_get_stats(t->rc);
+   t_begin(t);
+   t_tri(t->rc, vert[0], vert[1], vert[2]);
+   const struct rast_stats *after = rast_get_stats(t->rc);
+   o.sat = t_sat_total(after) != t_sat_total(&before);
+   o.dsat = t_sat_class(after, RAST_REG_DXDY) != t_sat_class(&before, RAST_REG_DXDY);
+   struct cmp c = { t, 0 };
+   o.ref = t_ref_triangle(o.X, o.Y, S, half ? S / 2 : 0, bottom, clip, visit_ref, &c);
+   o.missing = c.missing;
+   o.same = c.missing == 0 && o.ref == t->count && t->dups == 0 && t->outside == 0 &&
+            t->badquad == 0;
+   return o;
+}
+
+#ifndef FUZZ_TARGET  /* the random triangles of the unit test */
 static double coord(double lo, double hi) { return lo + (hi - lo) * t_rand(); }
 
 /* Random float vertices of the given kind. */
@@ -107,7 +148,61 @@ static void gen(enum kind k, bool half, float v[3][2], bool wide)
          if (v[i][c] < -lim) v[i][c] = (float)-lim;
       }
 }
+#endif
 
+#ifdef FUZZ_TARGET
+/* libFuzzer (tests/fuzz, ./fixpipe fuzz): one triangle from the input's
+ * bytes, through the model and through the exact reference.  Byte 0: the
+ * profile, the pixel-centre convention, the edge rule, whether vertices 1
+ * and 2 are near vertex 0 (within 64 pixels: slivers and small triangles)
+ * or anywhere, and whether anywhere is the whole 2048x2048 target or its
+ * first 128x128; then six int32, each a coordinate on the 1/4096 grid of
+ * the XY registers, from 32 pixels before that.  A difference aborts. */
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+   static struct tctx t[2];
+   static bool ready;
+   if (!ready) {
+      t_init(&t[0], "seed", TW, TH);
+      t_init(&t[1], "wide", TW, TH);
+      ready = true;
+   }
+   if (size < 1 + 6 * 4)
+      return 0;
+   const uint8_t flags = data[0];
+   struct tctx *tc = &t[flags & 1];
+   const bool half = flags & 2, bottom = flags & 4, near = flags & 8, whole = flags & 16;
+   const int64_t far = whole ? TW + 64 : 128 + 64;     /* most triangles stay quick */
+   float v[3][2];
+   for (unsigned i = 0; i < 6; i++) {
+      int32_t r;
+      memcpy(&r, data + 1 + 4 * i, 4);
+      const int64_t span = (i < 2 || !near ? far : 128) * INT64_C(4096);
+      const int64_t off = i < 2 || !near ? -32 * INT64_C(4096) : -64 * INT64_C(4096);
+      const int64_t g = ((int64_t)r % span + span) % span + off;
+      v[i / 2][i % 2] = (float)((double)g / 4096.0 + (i >= 2 && near ? v[0][i % 2] : 0.0));
+   }
+   struct rast_raster_state rs;
+   memset(&rs, 0, sizeof(rs));
+   rs.half_pixel_center = half;
+   rs.bottom_edge_rule = bottom;
+   rs.line_width = 1;
+   rast_set_raster_state(tc->rc, &rs);
+   const struct rast_scissor clip = { 0, 0, TW, TH };
+   struct outcome o = draw_and_compare(tc, v, half, bottom, clip);
+   if (!o.same && !o.dsat) {
+      fprintf(stderr, "scan_ref fuzz: %s half=%d bottom=%d: model %llu px, reference %llu, "
+              "missing %llu, twice %llu, outside %llu; v=(%.9g,%.9g) (%.9g,%.9g) (%.9g,%.9g)\n",
+              tc->prof->name, half, bottom, (unsigned long long)tc->count,
+              (unsigned long long)o.ref, (unsigned long long)o.missing,
+              (unsigned long long)tc->dups, (unsigned long long)tc->outside, v[0][0], v[0][1],
+              v[1][0], v[1][1], v[2][0], v[2][1]);
+      abort();
+   }
+   return 0;
+}
+#else
 int main(void)
 {
    const char *profiles[2] = { "seed", "wide" };
@@ -121,8 +216,6 @@ int main(void)
       struct tctx t;
       t_init(&t, profiles[pi], TW, TH);
       const bool wide = pi == 1;
-      struct fx_sat dummy = { 0, 0 };
-      int64_t S = fx_one(t.prof->xy);
       for (unsigned cfg = 0; cfg < 8; cfg++) {
          bool half = cfg & 1, bottom = (cfg >> 1) & 1, scissor = (cfg >> 2) & 1;
          struct rast_raster_state rs;
@@ -155,46 +248,31 @@ int main(void)
             else k = K_GUARD;
             float v[3][2];
             gen(k, half, v, wide);
-            float vert[3][1][4];
-            int64_t X[3], Y[3];
-            for (int i = 0; i < 3; i++) {
-               vert[i][0][0] = v[i][0];
-               vert[i][0][1] = v[i][1];
-               vert[i][0][2] = 0.5f;
-               vert[i][0][3] = 1.0f;
-               X[i] = fx_from_double(t.prof->xy, v[i][0], &dummy);
-               Y[i] = fx_from_double(t.prof->xy, v[i][1], &dummy);
-            }
             struct rast_stats before = *rast_get_stats(t.rc);
-            t_begin(&t);
-            t_tri(t.rc, vert[0], vert[1], vert[2]);
+            struct outcome o = draw_and_compare(&t, v, half, bottom, clip);
             const struct rast_stats *after = rast_get_stats(t.rc);
-            uint64_t sat = t_sat_total(after) - t_sat_total(&before);
-            uint64_t dsat = t_sat_class(after, RAST_REG_DXDY) - t_sat_class(&before, RAST_REG_DXDY);
-            if (sat) {
+            const int64_t *X = o.X, *Y = o.Y;
+            uint64_t ref = o.ref;
+            bool same = o.same;
+            if (o.sat) {
                sat_tris++;
                for (unsigned c = 0; c < RAST_REG_COUNT; c++)
                   sat_class[c] += t_sat_class(after, (enum rast_reg_class)c) !=
                                   t_sat_class(&before, (enum rast_reg_class)c);
             }
-            if (dsat) dxdy_sat_tris++;
-
-            struct cmp c = { &t, 0 };
-            uint64_t ref = t_ref_triangle(X, Y, S, half ? S / 2 : 0, bottom, clip, visit_ref, &c);
-            bool same = c.missing == 0 && ref == t.count && t.dups == 0 && t.outside == 0 &&
-                        t.badquad == 0;
+            if (o.dsat) dxdy_sat_tris++;
             if (k == K_DEGEN && (X[0] - X[2]) * (Y[1] - Y[2]) == (Y[0] - Y[2]) * (X[1] - X[2])) {
                CHECK(after->culled == before.culled + 1 && t.count == 0,
                      "degenerate triangle not dropped");
                degen_culled_ok++;
             }
-            if (!same && !dsat) {
+            if (!same && !o.dsat) {
                mismatches++;
                CHECK(same, "%s %s half=%d bottom=%d scissor=%d kind=%s: model %llu px, ref %llu, "
                      "missing %llu, dups %llu, outside %llu, badquad %llu; v=(%.9g,%.9g) (%.9g,%.9g) (%.9g,%.9g)",
                      profiles[pi], "", half, bottom, scissor, kind_name[k],
                      (unsigned long long)t.count, (unsigned long long)ref,
-                     (unsigned long long)c.missing, (unsigned long long)t.dups,
+                     (unsigned long long)o.missing, (unsigned long long)t.dups,
                      (unsigned long long)t.outside, (unsigned long long)t.badquad,
                      v[0][0], v[0][1], v[1][0], v[1][1], v[2][0], v[2][1]);
             }
@@ -221,3 +299,4 @@ int main(void)
    CHECK(degen_culled_ok > 1000, "too few degenerate cases: %llu", (unsigned long long)degen_culled_ok);
    return t_summary("scan_ref");
 }
+#endif

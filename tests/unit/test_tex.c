@@ -11,6 +11,11 @@
 #include "rast/tex_ns.h"
 #include "fixed/numsys.h"
 
+#ifdef FUZZ_TARGET
+/* the fuzz build keeps the checks; the unit test's own drivers go unused */
+#pragma GCC diagnostic ignored "-Wunused-function"
+#endif
+
 static struct ns_stats st;
 
 static const char *wrap_name[TEX_WRAP_COUNT] = {
@@ -89,6 +94,34 @@ static bool nearest_tie(double u)
    return fabs(u - floor(u + 0.5)) <= m * ldexp(1.0, -14);
 }
 
+/* One coordinate c through unit u (wrap w, filter f, one axis of `size`
+ * texels in system ns) against the reference on the value the register
+ * holds: whether they agree (a disagreement is a failure for `strict`
+ * systems); *wrong_orig: whether the unit misses the reference on the
+ * application's own coordinate. */
+static bool address_matches(const struct tex_unit *u, const struct numsys *ns, enum tex_wrap w,
+                            unsigned f, int size, float c, bool strict, bool *wrong_orig)
+{
+   ns_val h = tex_ns_coord(ns, tex_ns_kind(ns), c, &st);
+   double held = ns->to_float(ns, h);
+   struct ref_taps got = unit_taps(u, (enum tex_filter)f, h);
+   struct ref_taps want = ref_axis(w, f, held, size, true);
+   struct ref_taps orig = ref_axis(w, f, c, size, true);
+   double tol = f ? weight_tol(ns, size) : 0.0;
+   bool tie = !f && nearest_tie(want.u);
+   double d = ref_taps_diff(got, want);
+   *wrong_orig = !(!f && nearest_tie(orig.u)) && ref_taps_diff(got, orig) > (f ? 2.0 / 256 : 0);
+   if (tie || d <= tol)
+      return true;
+   if (strict)
+      CHECK(0, "%s %s %s size %d c %.9g (held %.9g): diff %.5f tol %.5f "
+            "got %d,%d w %.4f want %d,%d w %.4f", ns->name, wrap_name[w],
+            f ? "LINEAR" : "NEAREST", size, (double)c, held, d, tol,
+            got.i[0], got.n > 1 ? got.i[1] : -9, got.n > 1 ? got.w[1] : 0,
+            want.i[0], want.n > 1 ? want.i[1] : -9, want.n > 1 ? want.w[1] : 0);
+   return false;
+}
+
 /* Every wrap mode x filter x size on coordinates up to 2^20.  On the value
  * the register holds, the unit must agree with the reference (asserted for
  * `strict` systems); against the coordinate the application gave, the
@@ -112,29 +145,14 @@ static void wrap_sweep(const char *name, bool strict, unsigned n)
             samp_init(&s, (enum tex_wrap)w, (enum tex_filter)f);
             tex_unit_bind(&u, ns, &v, &s, &st);
             for (unsigned k = 0; k < n; k++) {
-               float c = (float)rand_coord();
-               ns_val h = tex_ns_coord(ns, tex_ns_kind(ns), c, &st);
-               double held = ns->to_float(ns, h);
-               struct ref_taps got = unit_taps(&u, (enum tex_filter)f, h);
-               struct ref_taps want = ref_axis((enum tex_wrap)w, f, held, sizes[si], true);
-               struct ref_taps orig = ref_axis((enum tex_wrap)w, f, c, sizes[si], true);
-               double tol = f ? weight_tol(ns, sizes[si]) : 0.0;
-               bool tie = !f && nearest_tie(want.u);
-               double d = ref_taps_diff(got, want);
-               if (!tie && d > tol) {
-                  bad_held++;
-                  if (strict)
-                     CHECK(0, "%s %s %s size %d c %.9g (held %.9g): diff %.5f tol %.5f "
-                           "got %d,%d w %.4f want %d,%d w %.4f", name, wrap_name[w],
-                           f ? "LINEAR" : "NEAREST", sizes[si], (double)c, held, d, tol,
-                           got.i[0], got.n > 1 ? got.i[1] : -9, got.n > 1 ? got.w[1] : 0,
-                           want.i[0], want.n > 1 ? want.i[1] : -9, want.n > 1 ? want.w[1] : 0);
-               }
+               const float c = (float)rand_coord();
+               bool wrong_orig;
+               bad_held += !address_matches(&u, ns, (enum tex_wrap)w, f, sizes[si], c, strict,
+                                            &wrong_orig);
                double ac = fabs(c);
                unsigned b = ac < 128 ? 0 : ac < 32768 ? 1 : ac < 8388608 ? 2 : 3;
                tot[b]++;
-               if (!(!f && nearest_tie(orig.u)) && ref_taps_diff(got, orig) > (f ? 2.0 / 256 : 0))
-                  bad_orig[b]++;
+               bad_orig[b] += wrong_orig;
             }
          }
    printf("  %-8s wrong vs held value %6lu | vs app coordinate, |c|<2^7: %lu/%lu  "
@@ -257,13 +275,12 @@ static void sample_2d(void)
 }
 
 /* LOD: log2 of the largest scaled derivative within 0.02; level choice. */
-static void lod_select(void)
+/* A 256x256 texture of 9 levels, mipmapped nearest, in system ns. */
+static void lod_unit(struct tex_unit *u, const struct numsys *ns)
 {
    static uint8_t tex[4];
-   const struct numsys *ns = numsys_default();
    struct tex_view_desc v;
    struct tex_sampler_desc s;
-   struct tex_unit u;
    view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, tex, 256, 256, 1);
    v.num_levels = 9;
    for (unsigned l = 0; l < 9; l++) {
@@ -272,47 +289,71 @@ static void lod_select(void)
    }
    samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
    s.mip = TEX_MIP_NEAREST;
-   tex_unit_bind(&u, ns, &v, &s, &st);
+   tex_unit_bind(u, ns, &v, &s, &st);
+}
+
+/* The quad from s0, t0 and three differences d[] (pixel 3 completes the
+ * parallelogram, as the interpolators make it). */
+static void lod_quad(struct tex_quad *q, double s0, double t0, const double d[4])
+{
+   memset(q, 0, sizeof(*q));
+   q->s[0] = (float)s0; q->t[0] = (float)t0;
+   q->s[1] = (float)(s0 + d[0]); q->t[1] = (float)(t0 + d[1]);
+   q->s[2] = (float)(s0 + d[2]); q->t[2] = (float)(t0 + d[3]);
+   q->s[3] = q->s[1] + q->s[2] - q->s[0]; q->t[3] = q->t[1] + q->t[2] - q->t[0];
+}
+
+/* The unit's LOD of quad q against log2 of the largest scaled difference
+ * of the held coordinates, within 0.02, and GL's nearest level where the
+ * LOD is not within 0.02 of a choice (counted in *levels); returns the
+ * error. */
+static double lod_check(const struct tex_unit *u, const struct numsys *ns,
+                        const struct tex_quad *q, unsigned *levels)
+{
+   double h[3][2];
+   for (unsigned p = 0; p < 3; p++) {
+      h[p][0] = ns->to_float(ns, tex_ns_coord(ns, u->kind, q->s[p], &st));
+      h[p][1] = ns->to_float(ns, tex_ns_coord(ns, u->kind, q->t[p], &st));
+   }
+   double rho = 0;
+   for (unsigned a = 0; a < 2; a++) {
+      rho = fmax(rho, fabs(h[1][a] - h[0][a]) * 256);
+      rho = fmax(rho, fabs(h[2][a] - h[0][a]) * 256);
+   }
+   double ref = log2(rho);
+   int32_t lod = tex_lod_quad(u, q);
+   double err = fabs(lod / 256.0 - ref);
+   CHECK(err <= 0.02, "lod %.4f want %.4f (rho %g)", lod / 256.0, ref, rho);
+   /* GL's nearest level: ceil(lod + 1/2) - 1, clamped */
+   if (fabs(ref - floor(ref) - 0.5) > 0.02 && fabs(ref - floor(ref + 0.5)) > 0.02) {
+      int want = ref <= 0.5 ? 0 : (int)ceil(ref + 0.5) - 1;
+      want = want > 8 ? 8 : want;
+      unsigned l0, l1;
+      uint32_t fr;
+      enum tex_filter flt;
+      tex_unit_select(u, lod, &l0, &l1, &fr, &flt);
+      CHECK((int)l0 == want && l1 == l0, "level %u want %d (lod %.3f)", l0, want, ref);
+      (*levels)++;
+   }
+   return err;
+}
+
+static void lod_select(void)
+{
+   const struct numsys *ns = numsys_default();
+   struct tex_unit u;
+   lod_unit(&u, ns);
    double worst = 0;
    unsigned lvl_checked = 0;
    t_seed(5);
    for (unsigned k = 0; k < 20000; k++) {
       struct tex_quad q;
-      memset(&q, 0, sizeof(q));
       double s0 = t_rand(), t0 = t_rand();
       double d[4];
       for (unsigned i = 0; i < 4; i++)
          d[i] = ldexp((t_rand() < 0.5 ? -1 : 1) * (0.5 + t_rand()), (int)(t_rand() * 16) - 14);
-      q.s[0] = (float)s0; q.t[0] = (float)t0;
-      q.s[1] = (float)(s0 + d[0]); q.t[1] = (float)(t0 + d[1]);
-      q.s[2] = (float)(s0 + d[2]); q.t[2] = (float)(t0 + d[3]);
-      q.s[3] = q.s[1] + q.s[2] - q.s[0]; q.t[3] = q.t[1] + q.t[2] - q.t[0];
-      double h[3][2];
-      for (unsigned p = 0; p < 3; p++) {
-         h[p][0] = ns->to_float(ns, tex_ns_coord(ns, u.kind, q.s[p], &st));
-         h[p][1] = ns->to_float(ns, tex_ns_coord(ns, u.kind, q.t[p], &st));
-      }
-      double rho = 0;
-      for (unsigned a = 0; a < 2; a++) {
-         rho = fmax(rho, fabs(h[1][a] - h[0][a]) * 256);
-         rho = fmax(rho, fabs(h[2][a] - h[0][a]) * 256);
-      }
-      double ref = log2(rho);
-      int32_t lod = tex_lod_quad(&u, &q);
-      double err = fabs(lod / 256.0 - ref);
-      worst = fmax(worst, err);
-      CHECK(err <= 0.02, "lod %.4f want %.4f (rho %g)", lod / 256.0, ref, rho);
-      /* GL's nearest level: ceil(lod + 1/2) - 1, clamped */
-      if (fabs(ref - floor(ref) - 0.5) > 0.02 && fabs(ref - floor(ref + 0.5)) > 0.02) {
-         int want = ref <= 0.5 ? 0 : (int)ceil(ref + 0.5) - 1;
-         want = want > 8 ? 8 : want;
-         unsigned l0, l1;
-         uint32_t fr;
-         enum tex_filter flt;
-         tex_unit_select(&u, lod, &l0, &l1, &fr, &flt);
-         CHECK((int)l0 == want && l1 == l0, "level %u want %d (lod %.3f)", l0, want, ref);
-         lvl_checked++;
-      }
+      lod_quad(&q, s0, t0, d);
+      worst = fmax(worst, lod_check(&u, ns, &q, &lvl_checked));
    }
    CHECK(lvl_checked > 10000, "levels checked %u", lvl_checked);
    printf("  LOD: worst |lod - log2(rho)| %.4f over 20000 quads\n", worst);
@@ -709,6 +750,55 @@ static void texel_fetch_and_swizzle(void)
       CHECK(rgba[0][p] == 0 && rgba[3][p] == 0 && rgba[1][p] == 1, "out of range %u", p);
 }
 
+#ifdef FUZZ_TARGET
+/* libFuzzer (tests/fuzz, ./fixpipe fuzz): the unit's addressing and LOD on
+ * the input's bytes, in the systems the unit test holds to the reference
+ * (dfx24, float).  Byte 0: the system and what to check; addressing: a
+ * wrap mode, a filter, a size of 1 to 4096 texels and any finite binary32
+ * coordinate below 2^24; LOD: a quad at s0, t0 in [0, 1) with differences
+ * of 2^-14 to 2^2 (the range the unit test's bound is stated for).  A
+ * failed check aborts. */
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+   if (size < 4 + 6 * 4)
+      return 0;
+   const struct numsys *ns = numsys_by_name(data[0] & 1 ? "float" : "dfx24");
+   uint32_t word[6];
+   memcpy(word, data + 4, sizeof(word));
+   if (data[0] & 2) {
+      struct tex_unit u;
+      lod_unit(&u, ns);
+      double d[4];
+      for (unsigned i = 0; i < 4; i++)
+         d[i] = ldexp((word[i] & 1 ? -1 : 1) * (0.5 + (word[i] >> 1) * 0x1p-31),
+                      (int)(word[i] >> 28) - 14);
+      struct tex_quad q;
+      lod_quad(&q, word[4] * 0x1p-32, word[5] * 0x1p-32, d);
+      unsigned levels = 0;
+      lod_check(&u, ns, &q, &levels);
+   } else {
+      const enum tex_wrap w = (enum tex_wrap)(data[1] % TEX_WRAP_COUNT);
+      const unsigned f = data[2] & 1;
+      const int texels = 1 + (int)((data[3] | (unsigned)data[2] << 7) % 4096);
+      float c;
+      memcpy(&c, &word[0], sizeof(c));
+      if (!isfinite(c) || fabsf(c) >= 0x1p24f)
+         return 0;
+      struct tex_view_desc v;
+      struct tex_sampler_desc s;
+      struct tex_unit u;
+      view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, texels, 1, 1);
+      samp_init(&s, w, (enum tex_filter)f);
+      tex_unit_bind(&u, ns, &v, &s, &st);
+      bool wrong_orig;
+      address_matches(&u, ns, w, f, texels, c, true, &wrong_orig);
+   }
+   if (t_failures)
+      abort();
+   return 0;
+}
+#else
 int main(void)
 {
    wrap_exact_dfx24();
@@ -733,3 +823,4 @@ int main(void)
           (unsigned long long)st.flush);
    return t_summary("tex");
 }
+#endif
