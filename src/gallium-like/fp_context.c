@@ -125,22 +125,21 @@ static void fp_print_stats(const struct fp_context *fp)
 }
 
 /* FIXPIPE_STATS=1 prints a context's statistics when it is destroyed.  A
- * program may exit without destroying its context (eglretrace does): the
- * contexts still alive print theirs at exit. */
-#define FP_STATS_LIVE 16
+ * program may exit without destroying its contexts (eglretrace does): the
+ * contexts still alive, listed in creation order through stats_next, print
+ * theirs at exit. */
 static simple_mtx_t stats_mtx = SIMPLE_MTX_INITIALIZER;
-static struct fp_context *stats_live[FP_STATS_LIVE];
+static struct fp_context *stats_live;
 static bool stats_atexit;
 
 static void fp_stats_at_exit(void)
 {
    simple_mtx_lock(&stats_mtx);
-   for (unsigned i = 0; i < FP_STATS_LIVE; i++)
-      if (stats_live[i]) {
-         rast_flush(stats_live[i]->rast);      /* what the threads still hold */
-         fp_print_stats(stats_live[i]);
-         stats_live[i] = NULL;
-      }
+   for (struct fp_context *fp = stats_live; fp; fp = fp->stats_next) {
+      rast_flush(fp->rast);      /* what the threads still hold */
+      fp_print_stats(fp);
+   }
+   stats_live = NULL;
    simple_mtx_unlock(&stats_mtx);
 }
 
@@ -149,11 +148,15 @@ static void fp_stats_track(struct fp_context *fp, bool live)
    simple_mtx_lock(&stats_mtx);
    if (live && !stats_atexit)
       stats_atexit = atexit(fp_stats_at_exit) == 0;
-   for (unsigned i = 0; i < FP_STATS_LIVE; i++)
-      if (live ? !stats_live[i] : stats_live[i] == fp) {
-         stats_live[i] = live ? fp : NULL;
-         break;
-      }
+   struct fp_context **p = &stats_live;
+   while (*p && *p != fp)
+      p = &(*p)->stats_next;
+   if (live) {
+      fp->stats_next = NULL;
+      *p = fp;                   /* the end of the list */
+   } else if (*p) {
+      *p = fp->stats_next;
+   }
    simple_mtx_unlock(&stats_mtx);
 }
 

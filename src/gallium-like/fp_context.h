@@ -143,6 +143,7 @@ struct fp_context {
    unsigned active_occlusion_queries;
 
    bool print_stats;
+   struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
 };
 
