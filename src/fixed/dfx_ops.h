@@ -44,11 +44,6 @@ static inline int dfx_floor_div4_i(int v)
    return v >= 0 ? v / 4 : -((-v + 3) / 4);
 }
 
-static inline unsigned dfx_bitlen64_i(uint64_t n)
-{
-   return n ? 64 - (unsigned)__builtin_clzll(n) : 0;
-}
-
 /* (-1)^s * n * 2^e into the format: truncated (nearest = false) or rounded
  * to nearest, ties away from zero; n != 0.  The kept mantissa has W-3 to W
  * bits, so every shift stays inside 64 bits. */
@@ -56,7 +51,7 @@ static inline struct dfx dfx_from_exact_i(struct dfx_format f, unsigned s, uint6
                                           bool nearest, struct dfx_stats *st)
 {
    /* The top bit weighs 2^p, bit p + 32 of the virtual word: its digit is L. */
-   int p = (int)dfx_bitlen64_i(n) - 1 + e;
+   int p = (int)fx_bitlen64(n) - 1 + e;
    int l = dfx_floor_div4_i(p + 32);
    int sh = dfx_exp_i(f, l) - e;        /* drop sh bits of n (or append -sh) */
    uint64_t m;
@@ -126,7 +121,7 @@ static inline struct dfx dfx_add_i(struct dfx_format f, struct dfx a, struct dfx
       S >>= 4;
       l++;
    }
-   unsigned bl = dfx_bitlen64_i(S);
+   unsigned bl = fx_bitlen64(S);
    if (bl <= w) {                       /* leading-zero digits */
       unsigned z = (w + 4 - bl) / 4;
       S <<= 4 * z;

@@ -24,6 +24,12 @@ struct fx_sat {
    uint64_t low;        /* clamped to the smallest value */
 };
 
+/* The bits of n: the position of its leading one, plus one (0 for 0). */
+static inline unsigned fx_bitlen64(uint64_t n)
+{
+   return n ? 64 - (unsigned)__builtin_clzll(n) : 0;
+}
+
 static inline int64_t fx_max(struct fx_format f)
 {
    return (INT64_C(1) << (f.int_bits + f.frac_bits - 1)) - 1;

@@ -292,6 +292,8 @@ fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast
  * one across); the bounding box counted. */
 void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, unsigned i0,
                              unsigned i1, unsigned i2);
+/* A point: its registers are its vertex's in every mode, walked (constant). */
+void rast_interp_modes_off(struct rast_front *fr);
 /* interp.c: the perspective division's functions for rc->texfmt */
 void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *fr);
 /* interp.c: the perspective division's per-primitive set-up, with vertices

@@ -158,11 +158,6 @@ static void plane_set(struct fr_plane *p, const struct numsys *ns, float v0, flo
    p->d2 = ns->sub(ns, c, a, st);
 }
 
-static inline unsigned bitlen64(uint64_t v)
-{
-   return v ? 64 - (unsigned)__builtin_clzll(v) : 0;
-}
-
 static bool plane_is_const(const struct fr_plane *p)
 {
    return !p->d1.d.m && !p->d2.d.m;
@@ -230,7 +225,7 @@ void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *f
    t->a_dy = -t->e2x * S;
    t->b_dx = -t->e1y * S;
    t->b_dy = t->e1x * S;
-   t->k = bitlen64(det < 0 ? -(uint64_t)det : (uint64_t)det);
+   t->k = fx_bitlen64(det < 0 ? -(uint64_t)det : (uint64_t)det);
    t->kfmt = (struct fx_format){ 0, (uint8_t)t->k };
    t->fscale = (float)fx_pow2(-(int)t->k);
    if (det) {

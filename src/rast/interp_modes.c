@@ -7,27 +7,27 @@
  */
 #include "rast/interp_modes.h"
 
-static unsigned bitlen64(uint64_t v)
+/* Pixel centres c·S + H in [lo, hi] (XY format), inside [clo, chi): how many. */
+static int64_t centres(const struct fx_format xy, const struct rast_front *fr, int64_t lo,
+                       int64_t hi, int64_t clo, int64_t chi)
 {
-   return v ? 64u - (unsigned)__builtin_clzll(v) : 0u;
-}
-
-/* Pixel centres c·S + H in [lo, hi]: how many. */
-static int64_t centres(const struct rast_front *fr, int64_t lo, int64_t hi, int64_t clo, int64_t chi)
-{
-   /* first c with c·S + H >= lo, last with c·S + H <= hi */
-   int64_t a = lo - fr->H, b = hi - fr->H;
-   int64_t first = a >= 0 ? (a + fr->S - 1) / fr->S : -((-a) / fr->S);
-   int64_t last = b >= 0 ? b / fr->S : -((-b + fr->S - 1) / fr->S);
+   int64_t first = fx_ceil_int(xy, lo - fr->H), last = fx_floor_int(xy, hi - fr->H);
    if (first < clo) first = clo;
    if (last > chi - 1) last = chi - 1;
    return last >= first ? last - first + 1 : 0;
 }
 
-/* The edges, det, 002's recip(det) and the registers' differences. */
-static void modes_planes(struct rast_context *rc, struct rast_front *fr)
+/* The vertices i0, i1, i2, the edges, det, 002's recip(det) and the
+ * registers' differences: what a per-pixel mode, or a measure, reads. */
+static void modes_planes(struct rast_context *rc, struct rast_front *fr, const unsigned idx[3])
 {
    struct fr_modes *m = &fr->md;
+   for (unsigned i = 0; i < 3; i++) {
+      m->vx[i] = fr->X[idx[i]];
+      m->vy[i] = fr->Y[idx[i]];
+      for (unsigned k = 0; k < fr->nfix; k++)
+         m->v[i][k] = fr->vfix[idx[i]][k];
+   }
    m->e1x = m->vx[1] - m->vx[0];
    m->e1y = m->vy[1] - m->vy[0];
    m->e2x = m->vx[2] - m->vx[0];
@@ -37,7 +37,7 @@ static void modes_planes(struct rast_context *rc, struct rast_front *fr)
    m->wmin = fx_min(rc->profile->weight);
    m->wmax = fx_max(rc->profile->weight);
    /* recip(det): k + W bits over det, so a = n_a·rdet >> k keeps W bits */
-   const unsigned kbits = bitlen64(m->det < 0 ? -(uint64_t)m->det : (uint64_t)m->det);
+   const unsigned kbits = fx_bitlen64(m->det < 0 ? -(uint64_t)m->det : (uint64_t)m->det);
    m->rshift = kbits;
    m->rdet = m->det ? (int64_t)fx_div_round_i128((fx_i128)1 << (kbits + m->wbits), m->det) : 0;
    for (unsigned k = 0; k < fr->nfix; k++) {
@@ -46,21 +46,22 @@ static void modes_planes(struct rast_context *rc, struct rast_front *fr)
    }
 }
 
+void rast_interp_modes_off(struct rast_front *fr)
+{
+   fr->md.on = false;
+   fr->nfix_walk = fr->nfix;
+}
+
 void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, unsigned i0,
                              unsigned i1, unsigned i2)
 {
    struct fr_modes *m = &fr->md;
+   const struct fx_format xy = rc->profile->xy;
    const unsigned mode = rc->interp & 3u;
    const unsigned idx[3] = { i0, i1, i2 };
    m->on = true;
    fr->nfix_walk = mode == RAST_INTERP_SCANLINE ? fr->nfix : 0;
    int64_t xmin = INT64_MAX, xmax = INT64_MIN, ymin = INT64_MAX, ymax = INT64_MIN;
-   for (unsigned i = 0; i < 3; i++) {
-      m->vx[i] = fr->X[idx[i]];
-      m->vy[i] = fr->Y[idx[i]];
-      for (unsigned k = 0; k < fr->nfix; k++)
-         m->v[i][k] = fr->vfix[idx[i]][k];
-   }
    for (unsigned i = 0; i < fr->nverts; i++) {
       xmin = fr->X[i] < xmin ? fr->X[i] : xmin;
       xmax = fr->X[i] > xmax ? fr->X[i] : xmax;
@@ -68,13 +69,13 @@ void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, uns
       ymax = fr->Y[i] > ymax ? fr->Y[i] : ymax;
    }
    rc->stats.interp_box_pixels +=
-      (uint64_t)(centres(fr, xmin, xmax, rc->clip.minx, rc->clip.maxx) *
-                 centres(fr, ymin, ymax, rc->clip.miny, rc->clip.maxy));
-   m->row0 = ymin - fr->H >= 0 ? (ymin - fr->H + fr->S - 1) / fr->S : -((fr->H - ymin) / fr->S);
+      (uint64_t)(centres(xy, fr, xmin, xmax, rc->clip.minx, rc->clip.maxx) *
+                 centres(xy, fr, ymin, ymax, rc->clip.miny, rc->clip.maxy));
+   m->row0 = fx_ceil_int(xy, ymin - fr->H);
 
    /* the walk needs none of the planes (measuring compares with them) */
    if (rc->interp != RAST_INTERP_SCANLINE)
-      modes_planes(rc, fr);
+      modes_planes(rc, fr, idx);
 
    /* the set-up's operations: the edges and det (4 differences, 2
     * products, 1 difference) in the two per-pixel modes; 002's recip and

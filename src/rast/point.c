@@ -136,9 +136,7 @@ void rast_point_pass(struct rast_context *rc, const float (*v)[4])
       }
    }
 
-   /* a point's registers are its vertex's in every FIXPIPE_INTERP mode */
-   fr->md.on = false;
-   fr->nfix_walk = fr->nfix;
+   rast_interp_modes_off(fr);
    fr->quad[0].front_facing = fr->quad[1].front_facing = true;
    rast_setup_constants(fr, v);
    rast_scan_convex(rc, fr);

@@ -162,6 +162,23 @@ static void result_free(struct result *r)
    free(r->zs);
 }
 
+/* The scene on `ref` in one pass (one), and on `prof` in tiles on one
+ * thread (tiled) and on `threads` (many), which must be the same bytes,
+ * counters included. */
+static void draw_tiled(const struct scene *s, const struct rast_profile *ref,
+                       const struct rast_profile *prof, unsigned threads, struct result *one,
+                       struct result *tiled, struct result *many, const char *what, unsigned n)
+{
+   const size_t bytes = (size_t)s->w * (size_t)s->h * 4;
+   draw_scene(s, ref, 1, one);
+   draw_scene(s, prof, 1, tiled);
+   draw_scene(s, prof, threads, many);
+   CHECK(!memcmp(tiled->color, many->color, bytes) && !memcmp(tiled->zs, many->zs, bytes),
+         "%s scene %u: tiles differ with %u threads", what, n, threads);
+   CHECK(!memcmp(&tiled->stats, &many->stats, sizeof(tiled->stats)),
+         "%s scene %u: tiles' counters differ with %u threads", what, n, threads);
+}
+
 /* The counters that depend on coverage alone, not on the registers. */
 static bool same_coverage_counts(const struct rast_stats *a, const struct rast_stats *b)
 {
@@ -215,10 +232,8 @@ int main(void)
    size_t hits = 0;
    for (unsigned n = 0; n < 40; n++) {
       make_scene(&scene, W, H, 1 + (unsigned)(t_xorshift(&rng) % MAX_PRIMS), 32, 128, n % 4);
-      unsigned threads = 2 + (unsigned)(t_xorshift(&rng) % 7);
-      draw_scene(&scene, seed, 1, &one);
-      draw_scene(&scene, &small, 1, &tiled);
-      draw_scene(&scene, &small, threads, &many);
+      draw_tiled(&scene, seed, &small, 2 + (unsigned)(t_xorshift(&rng) % 7), &one, &tiled,
+                 &many, "small", n);
       unsigned mz, mc;
       size_t h;
       size_t bad = compare(&scene, &one, &tiled, &mz, &mc, &h);
@@ -232,11 +247,6 @@ int main(void)
             (unsigned long long)one.stats.quads, (unsigned long long)tiled.stats.quads);
       if (mz > worst_z) worst_z = mz;
       if (mc > worst_c) worst_c = mc;
-      CHECK(!memcmp(tiled.color, many.color, (size_t)W * H * 4) &&
-            !memcmp(tiled.zs, many.zs, (size_t)W * H * 4),
-            "scene %u: tiles differ with %u threads", n, threads);
-      CHECK(!memcmp(&tiled.stats, &many.stats, sizeof(tiled.stats)),
-            "scene %u: tiles' counters differ with %u threads", n, threads);
    }
    /* Where the walk starts moves a register by its last bit (2^-12 of a Z
     * unit, 2^-7 of the 24-bit buffer's): the buffer's rounding by one. */
@@ -285,10 +295,8 @@ int main(void)
    uint64_t guarded = 0;
    for (unsigned n = 0; n < 20; n++) {
       make_scene(&scene, W3, H3, 1 + (unsigned)(t_xorshift(&rng) % 100), 64, 300, 6);
-      unsigned threads = 2 + (unsigned)(t_xorshift(&rng) % 7);
-      draw_scene(&scene, seed, 1, &one);
-      draw_scene(&scene, &narrow, 1, &tiled);
-      draw_scene(&scene, &narrow, threads, &many);
+      draw_tiled(&scene, seed, &narrow, 2 + (unsigned)(t_xorshift(&rng) % 7), &one, &tiled,
+                 &many, "guard", n);
       for (size_t i = 0; i < (size_t)W3 * H3; i++) {
          int a = (int)(one.zs[i] >> 24), b = (int)(tiled.zs[i] >> 24);
          hit3 += a != 0;
@@ -304,10 +312,6 @@ int main(void)
             "guard scene %u: primitives counted %llu/%llu, %llu/%llu culled", n,
             (unsigned long long)tiled.stats.triangles, (unsigned long long)one.stats.triangles,
             (unsigned long long)tiled.stats.culled, (unsigned long long)one.stats.culled);
-      CHECK(!memcmp(tiled.color, many.color, (size_t)W3 * H3 * 4) &&
-            !memcmp(tiled.zs, many.zs, (size_t)W3 * H3 * 4) &&
-            !memcmp(&tiled.stats, &many.stats, sizeof(tiled.stats)),
-            "guard scene %u: differs with %u threads", n, threads);
    }
    CHECK(guarded > 20, "only %llu primitives clipped to the guard band", (unsigned long long)guarded);
    CHECK(moved * 10000 <= hit3, "%zu of %zu hit pixels moved by the guard band's clip", moved, hit3);
