@@ -25,6 +25,9 @@
 #   fixpipe-1thread  FIXPIPE_THREADS=1: the model on one thread (docs/threads.md)
 #   fixpipe-jitall   FIXPIPE_DEBUG=jitall: every fragment shader compiled at first use
 #   fixpipe-nojit    FIXPIPE_DEBUG=nojit: tgsi_exec for every shader, draw without LLVM
+#   fixpipe-barycentric, fixpipe-vector
+#                    FIXPIPE_INTERP=barycentric|vector: Z and colour by seed 001's or
+#                    seed 002's per-pixel interpolator (docs/interp-modes.md)
 #   fixpipe-before   the fixpipe of another build: --before WORKDIR (its .fixpipe/,
 #                    e.g. a worktree of an earlier commit after its ./fixpipe setup)
 #   softpipe         our Mesa build (with LLVM: draw compiles vertex shaders)
@@ -70,8 +73,9 @@ configs="llvmpipe $(echo "$configs" | tr ' ' '\n' | { grep -vx llvmpipe || true;
 for c in $configs; do
     case $c in
     fixpipe|fixpipe-1thread|fixpipe-scalar|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe) ;;
+    fixpipe-barycentric|fixpipe-vector) ;;
     fixpipe-before) [ -n "$before" ] || { echo "replay-bench: fixpipe-before needs --before WORKDIR" >&2; exit 2; } ;;
-    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-1thread, fixpipe-scalar, fixpipe-jitall, fixpipe-nojit, fixpipe-before, softpipe, llvmpipe)" >&2; exit 2 ;;
+    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-1thread, fixpipe-scalar, fixpipe-jitall, fixpipe-nojit, fixpipe-barycentric, fixpipe-vector, fixpipe-before, softpipe, llvmpipe)" >&2; exit 2 ;;
     esac
 done
 mkdir -p "$out"
@@ -95,6 +99,8 @@ run() {
     fixpipe-jitall) driver=fixpipe; envs=(FIXPIPE_DEBUG=jitall) ;;
     fixpipe-1thread) driver=fixpipe; envs=(FIXPIPE_THREADS=1) ;;
     fixpipe-nojit) driver=fixpipe; envs=(FIXPIPE_DEBUG=nojit) ;;
+    fixpipe-barycentric) driver=fixpipe; envs=(FIXPIPE_INTERP=barycentric) ;;
+    fixpipe-vector) driver=fixpipe; envs=(FIXPIPE_INTERP=vector) ;;
     fixpipe-before) driver=fixpipe; work=$before/.fixpipe ;;
     fixpipe) [ -z "$scene_frames" ] || envs=(FIXPIPE_STATS=frames:1) ;;
     esac
