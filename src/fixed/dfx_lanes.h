@@ -316,6 +316,41 @@ DFXL_INLINE struct dfxl dfxl_add(struct dfxl a, struct dfxl b, struct dfxl_stats
    return dfxl_round(hi + lo_al, st);
 }
 
+/* dfxl_add where the operands have the same sign: the exact sum truncated,
+ * without the aligner.  The aligner's truncation of the smaller operand
+ * cannot matter then: the larger, hi, lies on its digit's grid G, the sum
+ * on a grid G' >= G (its magnitude is at least hi's), and the smaller is
+ * cut to g = G/16, so hi + cut(lo) is a multiple of g and the bits cut, less
+ * than g, cannot carry it across a multiple of G'.  Where the aligner drops
+ * lo (below G/2), |hi| + |lo| stays below the next multiple of G in hi's
+ * digit, so the sum truncates to hi.  The double sum is exact where lo is
+ * kept (at most 35 bits apart); where it is dropped, rounding the double
+ * stays below |hi| + G.  Registers are never -0 (dfxl_round), so a zero
+ * operand's sign is +. */
+DFXL_INLINE struct dfxl dfxl_add_same_sign(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
+{
+   return dfxl_round(a.v + b.v, st);
+}
+
+/* dfxl_add, without the aligner where every lane's operands have the same
+ * sign bit: for sums whose signs are mostly fixed (a plane's terms have
+ * the signs of their vertex values and differences over a primitive), so
+ * that the branch is predicted. */
+DFXL_INLINE struct dfxl dfxl_add_mostly_same_sign(struct dfxl a, struct dfxl b,
+                                                  struct dfxl_stats *st)
+{
+   const dfxl_i differ = ((dfxl_i)a.v ^ (dfxl_i)b.v) < 0;
+   if (__builtin_expect(!dfxl_any(differ), 1))
+      return dfxl_add_same_sign(a, b, st);
+   return dfxl_add(a, b, st);
+}
+
+/* Whether every lane of a mask is set. */
+DFXL_INLINE bool dfxl_all(dfxl_i m)
+{
+   return !dfxl_any(~m);
+}
+
 DFXL_INLINE struct dfxl dfxl_neg(struct dfxl a)
 {
    a.v = dfxl_seld(a.v == 0, a.v, -a.v);
@@ -422,6 +457,41 @@ DFXL_INLINE struct dfxl dfxl_from_int(dfxl_d x, struct dfxl_stats *st)
    const dfxl_d up = ax + dfxl_seld(ax == 0, (dfxl_d){ 0, 0, 0, 0 }, h);
    const dfxl_d sgn = (dfxl_d)((dfxl_i)x & dfxl_splat(INT64_MIN));
    return dfxl_round((dfxl_d)((dfxl_i)up | (dfxl_i)sgn), st);
+}
+
+/* The linear filter's texel offset, 1/2 - 2^-9 (tex_bind.c), taken from a
+ * coordinate scaled to texels, s - k, where the difference needs no
+ * aligner (dfxl_sub_texel_offset_direct): where s <= 0 the operands have
+ * the same sign (dfxl_add_same_sign); where 1/2 > s >= 2^-8, k's digit
+ * L = 7 puts the guard digit's grid at 2^-23, and s, with L >= 6, lies on
+ * it and is too large to drop; where 2^12 > s >= 1/2, s's digit L <= 10
+ * puts the guard grid at 2^-11 or finer, which holds k's 2^-9 bits whole.
+ * Either way the exact difference, truncated, is the adder's. */
+#define DFXL_TEXEL_OFFSET (0.5 - 0x1p-9)
+DFXL_INLINE bool dfxl_sub_texel_offset_direct(dfxl_d s)
+{
+   return dfxl_all((s <= 0) | ((s >= 0x1p-8) & (s < 0x1p12)));
+}
+
+DFXL_INLINE struct dfxl dfxl_sub_texel_offset(struct dfxl s, struct dfxl_stats *st)
+{
+   return dfxl_round(s.v - DFXL_TEXEL_OFFSET, st);
+}
+
+/* c less the register of its floor n, for 0 <= c < 2^16
+ * (dfxl_sub_floor_direct), as the wrap modes' fraction takes it: n is below
+ * 2^16, so exact in binary32 and in the register (dfxl_from_int leaves
+ * it); c has digit L <= 11, so the guard digit's grid (2^-7 or finer)
+ * holds n whole, and a nonzero n is too large to drop: the exact
+ * difference, truncated (+ 0.0: a zero difference is +0, as the adder's). */
+DFXL_INLINE bool dfxl_sub_floor_direct(dfxl_d c)
+{
+   return dfxl_all((c >= 0) & (c < 0x1p16));
+}
+
+DFXL_INLINE struct dfxl dfxl_sub_floor(struct dfxl c, dfxl_d n, struct dfxl_stats *st)
+{
+   return dfxl_round(c.v - n + 0.0, st);
 }
 
 DFXL_INLINE void dfxl_stats_add(struct dfx_stats *to, struct dfxl_stats st)

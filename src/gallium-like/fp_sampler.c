@@ -54,6 +54,8 @@ struct fp_tgsi_sampler {
    struct ns_stats stats;
    uint64_t skip_lod;             /* quads sampled without their LOD */
    uint64_t lod_quads;            /* quads with an implicit or biased LOD */
+   uint64_t quads;                /* every quad sampled */
+   uint64_t skip_axes;            /* quads addressed per axis (tex_unit.axes_shared) */
    /* made at the unit's first binding: 3.7 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
@@ -272,6 +274,7 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    tex_unit_bind(&slot->unit, ts->ns, &vd, &sd, &ts->stats);
    tex_unit_set_datapath(&slot->unit, fp_env_debug() & FP_DEBUG_SCALAR,
                          fp_env_debug() & FP_DEBUG_NOSKIP);
+   slot->unit.axes_shared = &ts->skip_axes;
    memcpy(&slot->key, &key, sizeof(key));
    slot->valid = true;
    return &slot->unit;
@@ -291,15 +294,17 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 /* The sampler's counts into the model's counters (FIXPIPE_STATS). */
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts, struct rast_context *rc)
 {
-   tex_stats_to_rast(rc, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads);
+   tex_stats_to_rast(rc, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads,
+                     ts->skip_axes, ts->quads);
    ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
+   ts->skip_axes = ts->quads = 0;
 }
 
 /* Range events at once (rare); the LOD counts, one per sample, in batches:
  * whoever prints the counters flushes the rest first. */
 static inline void fp_tex_stats(struct fp_tgsi_sampler *ts)
 {
-   if (ts->stats.sat | ts->stats.flush || ts->lod_quads >= 4096)
+   if (ts->stats.sat | ts->stats.flush || ts->quads >= 4096)
       fp_tgsi_sampler_flush_stats(ts, ts->rast);
 }
 
@@ -330,6 +335,7 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
    const enum tex_lod_control ctl = fp_lod_control(control);
    const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
    ts->lod_quads += n * lod_from_diffs;
+   ts->quads += n;
    ts->skip_lod += n * (u->lod_skipped && lod_from_diffs);
    if (n == 2)
       tex_unit_sample2(u, q, ctl, rgba);

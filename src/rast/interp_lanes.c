@@ -66,10 +66,10 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
          u[k][i] = dfxl_mul(b[k], splat(t->lv[t->lidx[i]][2]), &st);
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nq; k++)
-         v[k][i] = dfxl_add(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
+         v[k][i] = dfxl_add_mostly_same_sign(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nq; k++)
-         v[k][i] = dfxl_add(v[k][i], u[k][i], &st);
+         v[k][i] = dfxl_add_mostly_same_sign(v[k][i], u[k][i], &st);
 
    struct dfxl w[2];
    unsigned first = 0;

@@ -301,10 +301,15 @@ struct rast_stats {
    /* texture quads sampled without computing their LOD, which the sampler
     * cannot use (tex_unit_lod_unused) */
    uint64_t skip_tex_lod;
+   /* texture quad-axes (a quad's s or t) addressed once per column or row
+    * of a pair, where the coordinate follows the screen's axis (tex_lanes.c):
+    * a share of twice tex_quads */
+   uint64_t skip_tex_axes;
    /* what the skips are shares of: quads through the perspective division
     * and their PERSPECTIVE component-quads; texture quads whose LOD comes
-    * from the coordinates' differences (implicit or biased) */
-   uint64_t persp_quads, persp_comp_quads, tex_lod_quads;
+    * from the coordinates' differences (implicit or biased); every texture
+    * quad */
+   uint64_t persp_quads, persp_comp_quads, tex_lod_quads, tex_quads;
    /* Tiles (tile.c): passes of primitives through the scan converter on a
     * target larger than X_out, and primitives clipped to the guard band
     * because no origin holds them in the XY registers. */

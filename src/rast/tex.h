@@ -163,6 +163,10 @@ struct tex_unit {
     * specialised quads); NULL: quad twice */
    tex_quad2_fn quad2;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
+   /* quad-axes of pairs addressed once per column or row (the lanes' pair
+    * functions: s that follows the screen's x, t that follows y), counted
+    * here when not NULL; NULL after bind */
+   uint64_t *axes_shared;
    struct tex_axis axis[TEX_MAX_LEVELS][3];
    int32_t lod_bias, min_lod, max_lod;   /* units of 2^-TEX_LOD_FRAC_BITS */
    int kind;                      /* the number system's family (tex_ns.h) */
@@ -226,10 +230,11 @@ unsigned tex_format_bytes(enum tex_format f);
 /* Adds the unit's range events to the model's counters (rast_stats
  * tex_sat / tex_flush, printed by FIXPIPE_STATS), and its quads without a
  * LOD among those with an implicit or biased one (skip_tex_lod,
- * tex_lod_quads). */
+ * tex_lod_quads), and its quad-axes addressed once per column or row among
+ * the two axes of all quads it sampled (skip_tex_axes, tex_quads). */
 struct rast_context;
 void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
-                       uint64_t lod_quads);
+                       uint64_t lod_quads, uint64_t skip_axes, uint64_t quads);
 
 /* Pieces of the data path, for tests. */
 int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */

@@ -78,6 +78,17 @@ coords(const struct tex_unit *u, const struct tex_quad *q, struct dfxl *cs, stru
    }
 }
 
+/* s minus the linear filter's texel offset: the difference itself where
+ * the adder's aligner cannot change it (dfx_lanes.h), nearly always. */
+_Static_assert(TEX_WEIGHT_BITS == 8, "DFXL_TEXEL_OFFSET is 1/2 - 2^-(TEX_WEIGHT_BITS + 1)");
+static inline __attribute__((always_inline)) struct dfxl
+sub_texel_offset(const struct tex_unit *u, struct dfxl s, struct dfxl_stats *st)
+{
+   if (__builtin_expect(dfxl_sub_texel_offset_direct(s.v), 1))
+      return dfxl_sub_texel_offset(s, st);
+   return dfxl_sub(s, splat(u->lk_texel_offset), st);
+}
+
 /* floor(a) saturated to int32 (counted), as a double, and which lanes saturated. */
 static inline __attribute__((always_inline)) dfxl_d
 floor_int32(dfxl_d a, dfxl_i *sat, struct dfxl_stats *st)
@@ -115,6 +126,9 @@ lanes_frac_of(struct dfxl c, dfxl_i *odd, struct dfxl_stats *st)
    const dfxl_d cl = floor_int32(c.v, &sat, st);
    const lanes_v4i i = __builtin_convertvector(cl, lanes_v4i);
    *odd = __builtin_convertvector(i & 1, dfxl_i) != 0;
+   /* 0 <= c < 2^16, nearly every coordinate: the difference itself */
+   if (__builtin_expect(dfxl_sub_floor_direct(c.v), 1))
+      return dfxl_sub_floor(c, cl, st);
    const dfxl_d asf = __builtin_convertvector(__builtin_convertvector(cl, lanes_v4f), dfxl_d);
    return dfxl_sub(c, dfxl_from_int(asf, st), st);
 }
@@ -174,7 +188,7 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
          a->w = zero;
          return;
       }
-      floor_frac(dfxl_sub(s, splat(u->lk_texel_offset), st), false, &i, &w, st);
+      floor_frac(sub_texel_offset(u, s, st), false, &i, &w, st);
       const lanes_v4i k = clamp4i(i, -1, size - 1);
       const lanes_v4i last = { size - 1, size - 1, size - 1, size - 1 };
       const lanes_v4i sz = { size, size, size, size };
@@ -208,7 +222,7 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       a->w = zero;
       return;
    }
-   s = dfxl_sub(s, splat(u->lk_texel_offset), st);
+   s = sub_texel_offset(u, s, st);
    floor_frac(s, bounded, &i, &w, st);
    /* the scalar path's i + 1 in 64 bits: INT32_MAX + 1 is outside and
     * above every size, as INT32_MAX itself */
@@ -531,16 +545,65 @@ QUAD2_FN(quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, 1, true
 QUAD2_FN(quad2_mm, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, false)
 QUAD2_FN(quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, 1, true)
 
+/* Whether a pair's s follows the screen's x axis (the same down each
+ * column of both quads) and whether its t follows the y axis (the same
+ * along each row, both quads on the same rows), as a 2-D window's texture
+ * coordinates do.  The registers the coordinate input made are compared,
+ * bit for bit. */
+static inline __attribute__((always_inline)) bool s_by_column(const struct dfxl cs[2])
+{
+   const dfxl_i s0 = (dfxl_i)cs[0].v, s1 = (dfxl_i)cs[1].v;
+   return !dfxl_any((s0 != __builtin_shufflevector(s0, s0, 2, 3, 0, 1)) |
+                    (s1 != __builtin_shufflevector(s1, s1, 2, 3, 0, 1)));
+}
+
+static inline __attribute__((always_inline)) bool t_by_row(const struct dfxl ct[2])
+{
+   const dfxl_i t0 = (dfxl_i)ct[0].v, t1 = (dfxl_i)ct[1].v;
+   return !dfxl_any((t0 != __builtin_shufflevector(t0, t0, 1, 0, 3, 2)) | (t1 != t0));
+}
+
+/* A quad's addresses from one computed per column (lanes c, c + 1) or per
+ * row (lanes 0, 1). */
+static inline __attribute__((always_inline)) struct lanes_addr
+columns(const struct lanes_addr *a, unsigned c)
+{
+   struct lanes_addr r;
+   if (c == 0) {
+      r.i0 = __builtin_shufflevector(a->i0, a->i0, 0, 1, 0, 1);
+      r.i1 = __builtin_shufflevector(a->i1, a->i1, 0, 1, 0, 1);
+      r.w = __builtin_shufflevector(a->w, a->w, 0, 1, 0, 1);
+   } else {
+      r.i0 = __builtin_shufflevector(a->i0, a->i0, 2, 3, 2, 3);
+      r.i1 = __builtin_shufflevector(a->i1, a->i1, 2, 3, 2, 3);
+      r.w = __builtin_shufflevector(a->w, a->w, 2, 3, 2, 3);
+   }
+   return r;
+}
+
+static inline __attribute__((always_inline)) struct lanes_addr rows(const struct lanes_addr *a)
+{
+   struct lanes_addr r;
+   r.i0 = __builtin_shufflevector(a->i0, a->i0, 0, 0, 1, 1);
+   r.i1 = __builtin_shufflevector(a->i1, a->i1, 0, 0, 1, 1);
+   r.w = __builtin_shufflevector(a->w, a->w, 0, 0, 1, 1);
+   return r;
+}
+
 /* Two quads of a unit that reads one level without its LOD and filters one
  * channel per vector (the specialised quads' state): quad2's operations
  * for both, each step for the two before the next.  A sample's chain of
  * dependent operations is long and the compiled shader's calls come one
  * after the other, so one quad a call leaves the processor waiting on
- * latencies; two side by side overlap.  False, leaving nothing counted,
+ * latencies; two side by side overlap.  Where s follows the screen's x
+ * axis, each column's s goes through the address unit once (four lanes of
+ * eight), and where t follows y, each row's t (two of eight): the same
+ * operations on the same registers.  `shared`: how many of the two axes
+ * were addressed so.  False, leaving nothing counted,
  * when a lane had a range event (the caller then takes each quad alone). */
 static inline __attribute__((always_inline)) bool
 pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX_QUAD],
-      const struct quad_kind k, const bool linear)
+      const struct quad_kind k, const bool linear, unsigned *shared)
 {
    struct tex_fst x = { { 0, 0 }, { 0, 0 } };
    struct dfxl_stats st = DFXL_STATS(true);
@@ -553,11 +616,36 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
          for (unsigned p = 0; p < TEX_QUAD; p++)
             zoff[i][p] = layer_of(u, q[i].layer[p]) * (int32_t)lv->img_stride;
    }
+   /* each axis once per column or row where its coordinate follows it */
    struct lanes_addr A[2], B[2];
-   for (unsigned i = 0; i < 2; i++)
-      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], cs[i], &A[i], &st);
-   for (unsigned i = 0; i < 2; i++)
-      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], ct[i], &B[i], &st);
+   const bool s_col = s_by_column(cs), t_row = t_by_row(ct);
+   if (s_col) {
+      struct lanes_addr SA;
+      const struct dfxl sv = { { cs[0].v[0], cs[0].v[1], cs[1].v[0], cs[1].v[1] } };
+      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], sv, &SA, &st);
+      A[0] = columns(&SA, 0);
+      A[1] = columns(&SA, 2);
+   } else {
+      for (unsigned i = 0; i < 2; i++)
+         lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], cs[i], &A[i],
+                       &st);
+   }
+   if (t_row) {
+      struct lanes_addr TB;
+      const struct dfxl tv = { { ct[0].v[0], ct[0].v[2], ct[0].v[0], ct[0].v[2] } };
+      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], tv, &TB, &st);
+      B[0] = B[1] = rows(&TB);
+   } else {
+      for (unsigned i = 0; i < 2; i++)
+         lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], ct[i], &B[i],
+                       &st);
+   }
+   /* a count (a saturating floor) of a lane shared by several pixels would
+    * be counted once: such a pair (rare) is taken quad by quad.  The counts
+    * are numbers, not masks, so compared with zero first. */
+   if ((s_col || t_row) && dfxl_any((st.sat | st.flush) != 0))
+      return false;
+   *shared = (unsigned)s_col + (unsigned)t_row;
    const bool border = may_border(k.ws, linear) || may_border(k.wt, linear);
    lanes_v4f out[2][4];
    for (unsigned i = 0; i < 2; i++)
@@ -575,10 +663,14 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
                     enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD])                    \
    {                                                                                         \
       const struct quad_kind k = { ws, wt, 1, true };                                        \
+      unsigned sh = 0;                                                                       \
       if (ctl != TEX_LOD_DERIVS &&                                                           \
-          (u->samp.mag_filter != TEX_FILTER_NEAREST ? pair2(u, q, rgba, k, true)             \
-                                                    : pair2(u, q, rgba, k, false)))          \
+          (u->samp.mag_filter != TEX_FILTER_NEAREST ? pair2(u, q, rgba, k, true, &sh)        \
+                                                    : pair2(u, q, rgba, k, false, &sh))) {   \
+         if (u->axes_shared)                                                                 \
+            *u->axes_shared += 2 * sh;                                                       \
          return;                                                                             \
+      }                                                                                      \
       quad_fn(u, &q[0], ctl, rgba[0]);                                                       \
       quad_fn(u, &q[1], ctl, rgba[1]);                                                       \
    }

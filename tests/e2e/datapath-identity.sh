@@ -17,16 +17,17 @@ flags() { [ "$1" = lanes ] && echo jitall || echo jitall,scalar,noskip; }
 
 # skips NAME: the default run's skip counters, summed over its contexts
 skips() {
-    sed -n 's/.*datapath: \([a-z0-9]*\); skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\).*/\1 \2 \3 \4/p' \
+    sed -n 's/.*datapath: \([a-z0-9]*\); skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\).*/\1 \2 \3 \4 \5/p' \
         "$out/$1.lanes.log" |
-        awk '{ isa = $1; w += $2; c += $3; l += $4 } END { print isa, w + 0, c + 0, l + 0 }'
+        awk '{ isa = $1; w += $2; c += $3; l += $4; a += $5 } END { print isa, w + 0, c + 0, l + 0, a + 0 }'
 }
 
-total_w=0 total_c=0 total_l=0
+total_w=0 total_c=0 total_l=0 total_a=0
 check_lanes() { # NAME
     set -- $(skips "$1")
     case ${1:-} in
-    avx2 | sse2) total_w=$((total_w + $2)); total_c=$((total_c + $3)); total_l=$((total_l + $4)) ;;
+    avx2 | sse2) total_w=$((total_w + $2)); total_c=$((total_c + $3)); total_l=$((total_l + $4))
+                 total_a=$((total_a + $5)) ;;
     *) fail "$name: the default run did not report the lanes (datapath: ${1:-none})"; return 1 ;;
     esac
     if grep -q "datapath: scalar" "$out/$name.scalar.log"; then :; else
@@ -35,14 +36,15 @@ check_lanes() { # NAME
 }
 
 # work_ok LOG SKIPS: the work counters' lines (FIXPIPE_STATS=frames:N, in the form
-# "quads Q divided D skip_w ... skip_lod L"): at least one, every skip count at most
+# "quads Q divided D skip_w ... skip_axes A"): at least one, every skip count at most
 # what it is a share of, and with SKIPS=none nothing skipped
 work_ok() {
     awk -v none="$2" '
         { for (i = 1; i < NF; i += 2) v[$i] = $(i + 1)
           if (v["divided"] > v["quads"] || v["skip_w"] > v["divided"] ||
-              v["skip_comp"] > v["comp_quads"] || v["skip_lod"] > v["lod_quads"]) bad++
-          if (none == "none" && v["skip_w"] + v["skip_comp"] + v["skip_lod"] > 0) bad++
+              v["skip_comp"] > v["comp_quads"] || v["skip_lod"] > v["lod_quads"] ||
+              v["skip_axes"] > 2 * v["tex_quads"]) bad++
+          if (none == "none" && v["skip_w"] + v["skip_comp"] + v["skip_lod"] + v["skip_axes"] > 0) bad++
           n++ }
         END { exit !(n > 0 && !bad) }' "$1"
 }
@@ -60,9 +62,9 @@ render() { # NAME PROGRAM ARGS...
     done
     check_lanes "$name" || return 1
     for m in $MODES; do   # the totals at the context's end, as work lines
-        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3/p' \
+        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3 skip_axes \4/p' \
             "$out/$name.$m.log" > "$out/$name.$m.skipped"
-        sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 quads \1/p' \
+        sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\), texture quads \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 tex_quads \4 quads \1/p' \
             "$out/$name.$m.log" > "$out/$name.$m.shares"
         paste -d' ' "$out/$name.$m.skipped" "$out/$name.$m.shares" > "$out/$name.$m.work"
         if ! work_ok "$out/$name.$m.work" "$([ $m = scalar ] && echo none || echo some)"; then
@@ -112,8 +114,8 @@ for m in $MODES; do
     fi
 done
 
-taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD"
-if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ]; then
+taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD, $total_a texture quad-axes addressed per column or row"
+if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ] && [ "$total_a" -gt 0 ]; then
     pass "skips taken: $taken"
 else
     fail "skips taken: $taken"

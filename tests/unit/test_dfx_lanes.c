@@ -6,6 +6,7 @@
  * range, mantissas at 2^15 and 2^19 - 1).  Built once per instruction set
  * (TEST_ISA names it); the AVX2 build checks the CPU first.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "fixed/dfx_lanes.h"
@@ -159,6 +160,16 @@ static void test_binary(void)
    BOTH_WAYS("mul", dfx_mul_i(F, a[i], b[i], &wl), MUL, b, dfxl_splat(0));
    BOTH_WAYS("recip", dfx_recip_i(F, a[i], &wl), RECIP, NULL, dfxl_splat(0));
 
+   /* the adder without its aligner, where the signs are the same */
+   struct dfx bs[DFXL_N];
+   for (int i = 0; i < DFXL_N; i++) {
+      bs[i] = b[i];
+      bs[i].s = a[i].s;
+   }
+   const struct dfxl BS = dfxl_load(bs);
+#define ADD_SAME_SIGN(st) dfxl_add_same_sign(A, BS, st)
+   BOTH_WAYS("add_same_sign", dfx_add_i(F, a[i], bs[i], &wl), ADD_SAME_SIGN, bs, dfxl_splat(0));
+
    float fw[DFXL_N], fg[DFXL_N];
    for (int i = 0; i < DFXL_N; i++)
       fw[i] = (float)dfx_to_double_i(F, a[i]);
@@ -168,6 +179,56 @@ static void test_binary(void)
       CHECK(!memcmp(&fw[i], &fg[i], sizeof(float)), "to_float (%u,%u,%u): %a, want %a",
             a[i].s, a[i].l, a[i].m, (double)fg[i], (double)fw[i]);
    }
+}
+
+/* A register of magnitude in [2^lo, 2^hi) (lo, hi multiples of 4 from -32
+ * to 32), any mantissa, near a power of two now and then. */
+static struct dfx rnd_between(int lo, int hi, unsigned sign)
+{
+   struct dfx a = rnd_dfx();
+   if (!a.m)
+      a.m = 1u << 15;
+   a.s = (uint8_t)sign;
+   a.l = (uint8_t)((lo + 32) / 4 + (int)(rnd() % (uint64_t)((hi - lo) / 4)));
+   return a;
+}
+
+/* The texture unit's subtractions without the aligner (dfx_lanes.h): the
+ * linear filter's texel offset from a scaled coordinate, and a coordinate's
+ * floor from it, where their conditions hold, against the scalar adder. */
+static void test_tex_subtractions(void)
+{
+   struct dfx a[DFXL_N], k[DFXL_N], want[DFXL_N];
+   struct dfx_stats loads = { 0, 0 };   /* exact: none */
+   const struct dfx off = dfx_from_double(F, DFXL_TEXEL_OFFSET, &loads);
+   for (int i = 0; i < DFXL_N; i++) {
+      k[i] = off;
+      do {
+         switch (rnd() % 4) {
+         case 0: a[i] = rnd_dfx(); break;                              /* anything */
+         case 1: a[i] = rnd_between(-8, 0, 0); break;                  /* near the offset */
+         case 2: a[i] = rnd_between(-12, 16, 0); break;                /* across the bounds */
+         default: a[i] = rnd_between(-32, 32, 1); break;               /* negative */
+         }
+      } while (!dfxl_sub_texel_offset_direct((dfxl_d){ dfxl_value(a[i]), 0, 0, 0 }));
+   }
+   struct dfxl A = dfxl_load(a);
+   CHECK(dfxl_sub_texel_offset_direct(A.v), "texel offset: a lane outside the condition");
+#define SUB_OFFSET(st) dfxl_sub_texel_offset(A, st)
+   BOTH_WAYS("sub_texel_offset", dfx_add_i(F, a[i], dfx_neg(off), &wl), SUB_OFFSET, k,
+             dfxl_splat(0));
+
+   struct dfx n[DFXL_N];
+   for (int i = 0; i < DFXL_N; i++) {
+      a[i] = rnd() % 8 ? rnd_between(-32, 16, 0) : dfx_zero();
+      n[i] = dfx_from_double(F, floor(dfxl_value(a[i])), &loads);
+   }
+   A = dfxl_load(a);
+   CHECK(dfxl_sub_floor_direct(A.v), "floor: a lane outside the condition");
+   const dfxl_d N = dfxl_floor(A.v);
+#define SUB_FLOOR(st) dfxl_sub_floor(A, N, st)
+   BOTH_WAYS("sub_floor", dfx_add_i(F, a[i], dfx_neg(n[i]), &wl), SUB_FLOOR, n, dfxl_splat(0));
+   CHECK(!loads.sat && !loads.flush, "the offset and the floors are not exact registers");
 }
 
 /* Numerators as the perspective division makes them: any sign, up to
@@ -208,6 +269,7 @@ int main(void)
    for (long n = 0; n < 1500000; n++) {
       test_binary();
       test_from_fixed();
+      test_tex_subtractions();
    }
    printf("dfx_lanes (%s): %llu lane results compared with the scalar data paths, "
           "%llu optimistic lanes marked for the careful way\n", TEST_ISA,

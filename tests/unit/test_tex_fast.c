@@ -247,7 +247,33 @@ static void rand_quad(struct tex_quad *q, const struct tex_unit *u)
    }
 }
 
-static uint64_t quads, fast_quads, lanes_quads, nolod_quads, pair_quads;
+/* Two quads side by side whose coordinates follow the screen's axes, as a
+ * 2-D window's texture (s per column, t per row, or one of the two): the
+ * pair functions then address each column or row once (tex_lanes.c).  The columns' and rows'
+ * values smooth, as a triangle gives, or any float. */
+static void axis_pair(struct tex_quad two[2], const struct tex_unit *u)
+{
+   const float scale = u->samp.normalized ? 1.0f : (float)u->view.level[0].w;
+   float col[4], row[2];
+   const float s0 = rand_float(), t0 = rand_float();
+   const float ds = ldexpf(rndu(), -(int)rndn(14)) * scale, dt = ldexpf(rndu(), -(int)rndn(14)) * scale;
+   const bool any = rndn(4) == 0;
+   for (unsigned c = 0; c < 4; c++)
+      col[c] = any ? rand_float() : s0 * scale + (float)c * ds;
+   for (unsigned r = 0; r < 2; r++)
+      row[r] = any ? rand_float() : t0 * scale + (float)r * dt;
+   /* both axes, or one (the other as it came) */
+   const unsigned axes = rndn(3);
+   for (unsigned i = 0; i < 2; i++)
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         if (axes != 2)
+            two[i].s[p] = col[2 * i + (p & 1)];
+         if (axes != 1)
+            two[i].t[p] = row[p >> 1];
+      }
+}
+
+static uint64_t quads, fast_quads, lanes_quads, nolod_quads, pair_quads, axes_quads;
 
 enum mode { LANES_BEST, LANES_SSE2, SCALAR };
 
@@ -309,18 +335,29 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
           * events on each (the pair function where the unit has one) */
          struct tex_quad two[2] = { q, q };
          rand_quad(&two[1], &u);
+         if (j % 3 == 2)
+            axis_pair(two, &u);
          float one_by_one[2][4][TEX_QUAD], paired[2][4][TEX_QUAD];
          struct ns_stats s_one = { 0, 0 }, s_two = { 0, 0 };
          u.stats = &s_one;
          tex_unit_sample(&u, &two[0], ctl, one_by_one[0]);
          tex_unit_sample(&u, &two[1], ctl, one_by_one[1]);
          u.stats = &s_two;
+         u.axes_shared = &axes_quads;
          tex_unit_sample2(&u, two, ctl, paired);
+         u.axes_shared = NULL;
          const bool ok2 = !memcmp(one_by_one, paired, sizeof(paired)) &&
                           s_one.sat == s_two.sat && s_one.flush == s_two.flush;
          if (!ok2 && bad++ < 5)
-            CHECK(ok2, "%s unit %u quad %u: two quads in one call (%s) differ from each alone",
-                  name, i, j, u.quad2 ? "pair function" : "quad twice");
+            CHECK(ok2, "%s unit %u quad %u: two quads in one call (%s) differ from each alone "
+                  "(wrap %d/%d filt %d/%d, ctl %d; sat %llu vs %llu, flush %llu vs %llu; "
+                  "s %a t %a: %a vs %a)",
+                  name, i, j, u.quad2 ? "pair function" : "quad twice", u.samp.wrap[0],
+                  u.samp.wrap[1], u.samp.min_filter, u.samp.mag_filter, ctl,
+                  (unsigned long long)s_one.sat, (unsigned long long)s_two.sat,
+                  (unsigned long long)s_one.flush, (unsigned long long)s_two.flush,
+                  (double)two[0].s[0], (double)two[0].t[0], (double)one_by_one[0][0][0],
+                  (double)paired[0][0][0]);
          pair_quads += u.quad2 != NULL;
          quads++;
          fast_quads += u.quad != NULL;
@@ -357,6 +394,10 @@ int main(void)
    printf("  %llu pairs of quads through a pair function\n", (unsigned long long)pair_quads);
    CHECK(pair_quads > 5000, "only %llu pairs took a pair function",
          (unsigned long long)pair_quads);
+   printf("  %llu quad-axes of pairs addressed once per column or row\n",
+          (unsigned long long)axes_quads);
+   CHECK(axes_quads > 4000, "only %llu quad-axes of pairs were addressed per column or row",
+         (unsigned long long)axes_quads);
    CHECK(fast_quads > 1000000, "only %llu quads took the specialised path",
          (unsigned long long)fast_quads);
    return t_summary("tex_fast");

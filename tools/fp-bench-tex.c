@@ -1,0 +1,145 @@
+/*
+ * fp-bench-tex: what the texture unit alone costs per quad, for the
+ * sampler states the replays spend their time in.  A 300x200 RGBA8
+ * texture (one level, CLAMP_TO_EDGE or REPEAT, LINEAR or NEAREST) is
+ * sampled in pairs of quads, the way the compiled shader calls the unit,
+ * over a run of quads whose coordinates come from a plane: an
+ * axis-aligned one (each coordinate follows one screen axis, as a 2-D
+ * window's texture does), a sheared one (s follows x, t does not) or a
+ * rotated one.  Prints the CPU time per quad.
+ * No GL, no Mesa: the model's texture unit only.
+ *
+ *   fp-bench-tex [--quads N] [--runs N] [--scalar] [--noskip]
+ *
+ * Each case runs N times (5); the fastest run is the figure, the mean shows
+ * the noise.
+ */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "rast/tex.h"
+#include "fixed/numsys.h"
+
+static double cpu_seconds(void)
+{
+   struct timespec t;
+   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+   return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+enum { TW = 300, TH = 200, ROW_QUADS = 320 };   /* a 640-pixel row of quads */
+
+static uint8_t texels[TW * TH * 4];
+
+static void bind(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap, enum tex_filter f)
+{
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   memset(&v, 0, sizeof(v));
+   memset(&s, 0, sizeof(s));
+   v.target = TEX_TARGET_2D;
+   v.format = TEX_FMT_RGBA8;
+   v.num_levels = 1;
+   v.layers = 1;
+   v.level[0] = (struct tex_level){ texels, TW * 4, TW * TH * 4, TW, TH, 1 };
+   for (unsigned c = 0; c < 4; c++)
+      v.swizzle[c] = (uint8_t)c;
+   s.wrap[0] = s.wrap[1] = s.wrap[2] = wrap;
+   s.min_filter = s.mag_filter = f;
+   s.mip = TEX_MIP_NONE;
+   s.normalized = true;
+   s.min_lod = -1000;
+   s.max_lod = 1000;
+   tex_unit_bind(u, numsys_by_name("dfx24"), &v, &s, st);
+}
+
+/* Quad (qx, qy) of the screen: pixel (x, y) at s = s0 + x·ds_dx + y·ds_dy;
+ * `turn`: 0 axis-aligned, 1 sheared (t also follows x), 2 rotated. */
+static void plane_quad(struct tex_quad *q, int qx, int qy, int turn)
+{
+   const float sx = 1.0f / 640, sy = 1.0f / 480;
+   const float rx = turn == 2 ? 0.3f * sy : 0.0f, ry = turn ? -0.3f * sx : 0.0f;
+   memset(q, 0, sizeof(*q));
+   for (int p = 0; p < TEX_QUAD; p++) {
+      const float x = (float)(2 * qx + (p & 1)) + 0.5f, y = (float)(2 * qy + (p >> 1)) + 0.5f;
+      q->s[p] = 0.01f + x * sx + y * rx;
+      q->t[p] = 0.02f + y * sy + x * ry;
+   }
+}
+
+int main(int argc, char **argv)
+{
+   long nquads = 2000000;
+   int runs = 5;
+   bool scalar = false, noskip = false;
+   for (int i = 1; i < argc; i++) {
+      if (!strcmp(argv[i], "--quads") && i + 1 < argc)
+         nquads = atol(argv[++i]);
+      else if (!strcmp(argv[i], "--runs") && i + 1 < argc)
+         runs = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--scalar"))
+         scalar = true;
+      else if (!strcmp(argv[i], "--noskip"))
+         noskip = true;
+      else {
+         fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--scalar] [--noskip]\n");
+         return 2;
+      }
+   }
+   if (nquads < 2 || nquads > 1000000000 || runs < 1 || runs > 1000) {
+      fprintf(stderr, "fp-bench-tex: --quads takes 2 to 10^9, --runs 1 to 1000\n");
+      return 2;
+   }
+   for (unsigned i = 0; i < sizeof(texels); i++)
+      texels[i] = (uint8_t)(i * 2654435761u >> 24);
+
+   static const struct {
+      const char *name;
+      enum tex_wrap wrap;
+      enum tex_filter filter;
+      int turn;
+   } cases[] = {
+      { "edge linear, axis-aligned", TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR, 0 },
+      { "edge linear, sheared", TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR, 1 },
+      { "edge linear, rotated", TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR, 2 },
+      { "edge nearest, axis-aligned", TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_NEAREST, 0 },
+      { "repeat linear, axis-aligned", TEX_WRAP_REPEAT, TEX_FILTER_LINEAR, 0 },
+      { "repeat linear, rotated", TEX_WRAP_REPEAT, TEX_FILTER_LINEAR, 2 },
+   };
+   /* four rows of quads of a 640-pixel screen, sampled over and over: the
+    * coordinates stay in the caches, as a shader's would */
+   enum { SCREEN = ROW_QUADS * 4 };
+   static struct tex_quad q[SCREEN];
+   float check = 0;
+   for (unsigned c = 0; c < sizeof(cases) / sizeof(cases[0]); c++) {
+      struct tex_unit u;
+      struct ns_stats st;
+      memset(&st, 0, sizeof(st));
+      bind(&u, &st, cases[c].wrap, cases[c].filter);
+      tex_unit_set_datapath(&u, scalar, noskip);
+      for (int i = 0; i < SCREEN; i += 2) {
+         plane_quad(&q[i], i % ROW_QUADS, i / ROW_QUADS, cases[c].turn);
+         plane_quad(&q[i + 1], (i + 1) % ROW_QUADS, (i + 1) / ROW_QUADS, cases[c].turn);
+      }
+      float rgba[2][4][TEX_QUAD];
+      double best = 1e30, total = 0;
+      for (int r = 0; r < runs; r++) {
+         const double t0 = cpu_seconds();
+         for (long n = 0; n < nquads; n += 2) {
+            const long i = n % SCREEN;
+            tex_unit_sample2(&u, &q[i], TEX_LOD_IMPLICIT, rgba);
+            check += rgba[1][0][3];
+         }
+         const double t = cpu_seconds() - t0;
+         best = t < best ? t : best;
+         total += t;
+      }
+      printf("%-28s %6.1f ns a quad (the fastest of %d runs of %ld quads; mean %.1f ns), "
+             "range events %llu\n",
+             cases[c].name, 1e9 * best / (double)nquads, runs, nquads,
+             1e9 * total / runs / (double)nquads, (unsigned long long)(st.sat + st.flush));
+   }
+   return check == -1.0f;   /* keeps the samples */
+}
