@@ -173,8 +173,9 @@ struct tex_unit {
    ns_val k_zero, k_one, k_half, k_two, k_minus_one;
    ns_val k_texel_offset;        /* linear filtering: 1/2 - 2^-(TEX_WEIGHT_BITS+1) */
    /* dfx24 on lanes (tex_lanes.c): the registers above as the lanes hold
-    * them, their values in doubles; [l][a]: scale, lo, hi of axis[l][a] */
-   double lk_one, lk_texel_offset;
+    * them, their values in doubles (the texel offset is a constant there,
+    * DFXL_TEXEL_OFFSET); [l][a]: scale, lo, hi of axis[l][a] */
+   double lk_one;
    bool lanes_soa;                /* the filter one channel per vector (tex_bind.c) */
    /* with lanes_soa, each result channel (after the swizzle) from the
     * texel word: ((word >> shift) & mask) / 255 + add, the border's where

@@ -91,7 +91,6 @@ static void lanes_constants(struct tex_unit *u)
    if (u->lanes_soa)
       lanes_channels(u);
    u->lk_one = lanes_value(u, u->k_one);
-   u->lk_texel_offset = lanes_value(u, u->k_texel_offset);
    for (unsigned l = 0; l < u->view.num_levels; l++)
       for (unsigned a = 0; a < 3; a++) {
          u->laxis[l][a][0] = lanes_value(u, u->axis[l][a].scale);

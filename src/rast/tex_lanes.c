@@ -78,15 +78,16 @@ coords(const struct tex_unit *u, const struct tex_quad *q, struct dfxl *cs, stru
    }
 }
 
-/* s minus the linear filter's texel offset: the difference itself where
- * the adder's aligner cannot change it (dfx_lanes.h), nearly always. */
+/* s minus the linear filter's texel offset (the unit's k_texel_offset, a
+ * register dfx24 holds exactly): the difference itself where the adder's
+ * aligner cannot change it (dfx_lanes.h), nearly always. */
 _Static_assert(TEX_WEIGHT_BITS == 8, "DFXL_TEXEL_OFFSET is 1/2 - 2^-(TEX_WEIGHT_BITS + 1)");
 static inline __attribute__((always_inline)) struct dfxl
-sub_texel_offset(const struct tex_unit *u, struct dfxl s, struct dfxl_stats *st)
+sub_texel_offset(struct dfxl s, struct dfxl_stats *st)
 {
    if (__builtin_expect(dfxl_sub_texel_offset_direct(s.v), 1))
       return dfxl_sub_texel_offset(s, st);
-   return dfxl_sub(s, splat(u->lk_texel_offset), st);
+   return dfxl_sub(s, splat(DFXL_TEXEL_OFFSET), st);
 }
 
 /* floor(a) saturated to int32 (counted), as a double, and which lanes saturated. */
@@ -188,7 +189,7 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
          a->w = zero;
          return;
       }
-      floor_frac(sub_texel_offset(u, s, st), false, &i, &w, st);
+      floor_frac(sub_texel_offset(s, st), false, &i, &w, st);
       const lanes_v4i k = clamp4i(i, -1, size - 1);
       const lanes_v4i last = { size - 1, size - 1, size - 1, size - 1 };
       const lanes_v4i sz = { size, size, size, size };
@@ -222,7 +223,7 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       a->w = zero;
       return;
    }
-   s = sub_texel_offset(u, s, st);
+   s = sub_texel_offset(s, st);
    floor_frac(s, bounded, &i, &w, st);
    /* the scalar path's i + 1 in 64 bits: INT32_MAX + 1 is outside and
     * above every size, as INT32_MAX itself */
