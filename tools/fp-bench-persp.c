@@ -90,7 +90,7 @@ static int run(const char *sys, int ntri)
    memset(&vl, 0, sizeof vl);
    vl.vertex_size = 2;
    vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x3 };
    rast_set_vertex_layout(rc, &vl);
    struct rast_shader fs = { .shade = shade, .num_outputs = 1 };
    rast_set_shader(rc, &fs);

@@ -130,7 +130,7 @@ int main(int argc, char **argv)
    memset(&vl, 0, sizeof(vl));
    vl.vertex_size = 2;
    vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_COLOR, 0x7 };   /* R, G, B */
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR, .usage_mask = 0x7 };   /* R, G, B */
    rast_set_vertex_layout(rc, &vl);
    struct rast_shader fs;
    memset(&fs, 0, sizeof(fs));

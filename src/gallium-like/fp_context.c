@@ -95,8 +95,9 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  quads %" PRIu64 " pixels covered %" PRIu64 " shaded %" PRIu64
            " samples passed %" PRIu64 "\n", st->quads, st->pixels_covered,
            st->pixels_shaded, st->samples_passed);
-   fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64 "\n",
-           fp_env_texfmt()->name, st->tex_sat, st->tex_flush);
+   fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64
+           "; coordinates rebased (component-primitives) %" PRIu64 "\n",
+           fp_env_texfmt()->name, st->tex_sat, st->tex_flush, st->tex_rebased);
    fprintf(stderr, "  datapath: %s; skipped: quads with a constant 1/w %" PRIu64
            ", constant component-quads %" PRIu64 ", texture quads without a LOD %" PRIu64
            ", texture quad-axes addressed per column or row %" PRIu64 "\n",

@@ -43,6 +43,11 @@ struct fp_fragment_shader {
    int depth_output;                /* output register, or -1 */
    int color_output[RAST_MAX_CBUFS];
    unsigned num_color_outputs;
+   /* Per input component, the samplers whose axis a (s, t, r) it is the
+    * coordinate of, read as it is; and the components read any other way
+    * (fp_rebase.c). */
+   struct fp_coord_use { uint32_t samplers[3]; } coord_use[RAST_MAX_VARYINGS][4];
+   uint8_t coord_other[RAST_MAX_VARYINGS];
    /* Tiered execution: interpreted until hot, then compiled (fp_fs.c). */
    uint64_t quads_interpreted;
    struct fp_jit_variant *jit;
@@ -135,6 +140,7 @@ struct fp_context {
    struct vertex_info vinfo;
    struct rast_vertex_layout vl;
    bool vl_valid;
+   const struct fp_fragment_shader *vl_fs;   /* the shader vl was built for */
 
    /* Occlusion queries in flight and conditional rendering. */
    struct pipe_query *render_cond_query;
@@ -202,5 +208,13 @@ void fp_init_sampler_view(struct fp_sampler_view *view);
 
 /* fp_query.c: false when conditional rendering says skip. */
 bool fp_check_render_cond(struct fp_context *fp);
+
+/* fp_rebase.c: the shader's reads of its inputs, once; and which
+ * components of input `input` the model may rebase with the samplers now
+ * bound (rast_varying's rebase_mask and rebase_even). */
+void fp_rebase_scan(struct fp_fragment_shader *fs);
+/* fp_vbuf.c: the vertex layout's rebase masks after a sampler change. */
+void fp_vbuf_update_rebase(struct fp_context *fp);
+void fp_rebase_modes(const struct fp_context *fp, unsigned input, uint8_t *mask, uint8_t *even);
 
 #endif

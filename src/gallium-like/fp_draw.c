@@ -33,8 +33,10 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
       return;
 
    fp_vs_count(fp, (uint64_t)draws[0].count * info->instance_count);
-   if (fp->fs_dirty)
+   if (fp->fs_dirty) {
       fp_fs_validate(fp);
+      fp_vbuf_update_rebase(fp);
+   }
 
    for (unsigned i = 0; i < fp->num_vertex_buffers; i++) {
       const struct pipe_vertex_buffer *vb = &fp->vertex_buffer[i];

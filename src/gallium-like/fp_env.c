@@ -33,6 +33,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "compute everything the model's skips leave out (same bits)" },
    { "nothreads", FP_DEBUG_NOTHREADS,
      "the model on one thread whatever FIXPIPE_THREADS says (same bits)" },
+   { "norebase", FP_DEBUG_NOREBASE,
+     "no per-primitive rebase of REPEAT texture coordinates (large ones lose bits)" },
    DEBUG_NAMED_VALUE_END
 };
 

@@ -41,6 +41,7 @@ const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
 #define FP_DEBUG_SCALAR  (1u << 2)   /* the model's scalar reference datapath, no lanes */
 #define FP_DEBUG_NOSKIP  (1u << 3)   /* compute what the model's skips leave out */
 #define FP_DEBUG_NOTHREADS (1u << 4) /* the model on one thread, whatever FIXPIPE_THREADS says */
+#define FP_DEBUG_NOREBASE (1u << 5)  /* no coordinate rebase in the set-up (docs/texture-unit.md) */
 unsigned fp_env_debug(void);
 unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
 unsigned fp_env_interp(void);                /* FIXPIPE_INTERP: rast_set_interp's mode */

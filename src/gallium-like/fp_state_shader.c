@@ -30,6 +30,7 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
       return NULL;
    }
    tgsi_scan_shader(fs->tokens, &fs->info);
+   fp_rebase_scan(fs);
 
    struct pipe_shader_state dstate = *templ;
    dstate.tokens = fs->tokens;

@@ -12,6 +12,7 @@
 #include "draw/draw_vertex.h"
 
 #include "fp_context.h"
+#include "fp_screen.h"
 
 /* draw passes vertex counts as ushort: a batch must stay far below 65536
  * vertices (the smallest vertex is 16 bytes), or counts wrap and draw
@@ -56,6 +57,30 @@ static bool fp_is_sprite_coord(const struct fp_context *fp, unsigned name, unsig
           (fp->rasterizer->base.sprite_coord_enable >> index & 1u);
 }
 
+/* The rebase of a PERSPECTIVE input (fp_rebase.c) with the samplers bound. */
+static void rebase_of(const struct fp_context *fp, unsigned i, struct rast_varying *vr)
+{
+   vr->rebase_mask = vr->rebase_even = 0;
+   if (vr->interp == RAST_INTERP_PERSPECTIVE && !(fp_env_debug() & FP_DEBUG_NOREBASE))
+      fp_rebase_modes(fp, i, &vr->rebase_mask, &vr->rebase_even);
+}
+
+/* Samplers bound since the layout was built (draw asks for the layout again
+ * only when its own state changes, which a sampler is not): the rebase
+ * masks brought up to date, the rest of the layout as it is. */
+void fp_vbuf_update_rebase(struct fp_context *fp)
+{
+   if (!fp->vl_valid || fp->vl_fs != fp->fs)
+      return;
+   struct rast_vertex_layout vl = fp->vl;
+   for (unsigned i = 0; i < vl.num_varyings; i++)
+      rebase_of(fp, i, &vl.varying[i]);
+   if (memcmp(&vl, &fp->vl, sizeof(vl)) != 0) {
+      fp->vl = vl;
+      rast_set_vertex_layout(fp->rast, &fp->vl);
+   }
+}
+
 /* The layout depends on the FS inputs, the VS outputs, the rasterizer's
  * sprite coordinates and on the extra attributes draw's stages (smooth
  * points and lines) allocate while a draw is running, so it is rebuilt
@@ -90,6 +115,7 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
                                     : info->input_usage_mask[i];
          if (fp_is_sprite_coord(fp, name, index))
             vl.point_coord_mask |= 1u << i;
+         rebase_of(fp, i, &vl.varying[i]);
          draw_emit_vertex_attr(vinfo, EMIT_4F, src);
       }
       vl.num_varyings = n;
@@ -109,6 +135,7 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
       fp->vl_valid = true;
       rast_set_vertex_layout(fp->rast, &fp->vl);
    }
+   fp->vl_fs = fp->fs;
    return vinfo;
 }
 

@@ -30,7 +30,10 @@
 /* One shader input component: out in[var][chan], from vertex slot `slot`. */
 struct fr_comp {
    uint8_t var, chan, slot;
+   uint8_t rebase;               /* enum fr_rebase (PERSPECTIVE components) */
 };
+
+enum fr_rebase { FR_REBASE_NONE, FR_REBASE_INT, FR_REBASE_EVEN };
 
 /* An edge register set: X_left or X_right with its slope, and (left edges
  * only) the attribute registers Z_left, R_left, ... and their Δ/Δy.
@@ -200,6 +203,7 @@ struct rast_front {
    int64_t X[FR_MAX_VERTS], Y[FR_MAX_VERTS];
    int64_t vfix[FR_MAX_VERTS][FR_MAX_FIX];
    float vflt[FR_MAX_VERTS][FR_MAX_FLT];
+   double rebase[FR_MAX_COMP];  /* per PERSPECTIVE component (rast_setup_rebase) */
    int64_t fix_dx[FR_MAX_FIX], fix_dy[FR_MAX_FIX];   /* per pixel */
    float flt_dx[FR_MAX_FLT], flt_dy[FR_MAX_FLT];
    struct fr_edge edge[FR_MAX_VERTS];
@@ -278,6 +282,10 @@ static inline int64_t rast_lp_iround(float f)
  * the flat inputs from the provoking vertex. */
 void rast_setup_attribs(struct rast_context *rc, struct rast_front *fr,
                         unsigned k, const float (*v)[4]);
+/* setup.c: the integers rast_setup_attribs subtracts from the rebased
+ * components, from the primitive's n vertices; before it. */
+void rast_setup_rebase(struct rast_context *rc, struct rast_front *fr,
+                       const float (*const *v)[4], unsigned n);
 void rast_setup_constants(struct rast_front *fr, const float (*pv)[4]);
 
 /* scan.c: edge processing over fr->sec[0..nsec) */

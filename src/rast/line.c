@@ -207,6 +207,8 @@ void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (
 
    /* Attribute planes through the original end points, varying along the
     * major axis only; the corners take the plane's values. */
+   const float (*const ends[2])[4] = { o1, o2 };
+   rast_setup_rebase(rc, fr, ends, 2);
    rast_setup_attribs(rc, fr, 0, o1);
    rast_setup_attribs(rc, fr, 1, o2);
    /* the corners' offsets from the first end point, in pixels (exact) */

@@ -228,6 +228,14 @@ struct rast_varying {
    uint8_t slot;                 /* float[4] slot of the vertex it comes from */
    uint8_t interp;               /* enum rast_interp */
    uint8_t usage_mask;           /* components the shader reads */
+   /* PERSPECTIVE components that are only ever a REPEAT or
+    * MIRRORED_REPEAT texture coordinate, read as they are: the set-up
+    * subtracts an integer common to the primitive (an even one for those
+    * in rebase_even) from their vertex values before the division by w,
+    * which leaves every wrapped coordinate where it was and keeps the
+    * registers' grid that of the primitive's extent, not of its distance
+    * from 0 (docs/texture-unit.md, "Coordinate rebase"). */
+   uint8_t rebase_mask, rebase_even;
 };
 
 struct rast_vertex_layout {
@@ -305,6 +313,9 @@ struct rast_stats {
     * of a pair, where the coordinate follows the screen's axis (tex_lanes.c):
     * a share of twice tex_quads */
    uint64_t skip_tex_axes;
+   /* PERSPECTIVE component-primitives whose vertex values were rebased by
+    * a nonzero integer (rast_varying.rebase_mask) */
+   uint64_t tex_rebased;
    /* what the skips are shares of: quads through the perspective division
     * and their PERSPECTIVE component-quads; texture quads whose LOD comes
     * from the coordinates' differences (implicit or biased); every texture

@@ -14,7 +14,15 @@ static void add_comp(struct fr_comp *list, unsigned *n, unsigned var, unsigned c
    list[*n].var = (uint8_t)var;
    list[*n].chan = (uint8_t)chan;
    list[*n].slot = (uint8_t)slot;
+   list[*n].rebase = FR_REBASE_NONE;
    (*n)++;
+}
+
+static enum fr_rebase rebase_of(const struct rast_varying *vr, unsigned c)
+{
+   if (!(vr->rebase_mask >> c & 1u))
+      return FR_REBASE_NONE;
+   return vr->rebase_even >> c & 1u ? FR_REBASE_EVEN : FR_REBASE_INT;
 }
 
 static void set_fix_class(struct rast_context *rc, struct rast_front *fr, unsigned k,
@@ -90,6 +98,7 @@ void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool po
             break;
          case RAST_INTERP_PERSPECTIVE:
             add_comp(fr->persp, &fr->npersp, i, c, vr->slot);
+            fr->persp[fr->npersp - 1].rebase = (uint8_t)rebase_of(vr, c);
             break;
          case RAST_INTERP_COLOR:
             if (rc->rs.flatshade)
@@ -141,8 +150,40 @@ void rast_setup_attribs(struct rast_context *rc, struct rast_front *fr,
    fr->vflt[k][0] = oow;
    for (unsigned i = 0; i < fr->nlin; i++)
       fr->vflt[k][1 + i] = v[fr->lin[i].slot][fr->lin[i].chan];
-   for (unsigned i = 0; i < fr->npersp; i++)
-      fr->vflt[k][1 + fr->nlin + i] = v[fr->persp[i].slot][fr->persp[i].chan] * oow;
+   for (unsigned i = 0; i < fr->npersp; i++) {
+      const float a = v[fr->persp[i].slot][fr->persp[i].chan];
+      fr->vflt[k][1 + fr->nlin + i] =
+         fr->persp[i].rebase ? (float)((double)a - fr->rebase[i]) * oow : a * oow;
+   }
+}
+
+/* The rebase of a REPEAT (or MIRRORED_REPEAT) coordinate: the floor of
+ * the primitive's smallest vertex value (an even floor for the mirror,
+ * whose period is 2), so that each vertex keeps its place within the
+ * period and the values start from [0, 1) (or [0, 2)).  Subtracting it is
+ * exact wherever the vertex values are not much larger than their spread
+ * (Sterbenz: within a factor 2 of R), which is the case it exists for;
+ * elsewhere the difference rounds once, to the float nearest it. */
+void rast_setup_rebase(struct rast_context *rc, struct rast_front *fr,
+                       const float (*const *v)[4], unsigned n)
+{
+   for (unsigned i = 0; i < fr->npersp; i++) {
+      const struct fr_comp *c = &fr->persp[i];
+      fr->rebase[i] = 0.0;
+      if (!c->rebase)
+         continue;
+      double m = INFINITY;
+      for (unsigned k = 0; k < n; k++)
+         m = fmin(m, (double)v[k][c->slot][c->chan]);
+      for (unsigned k = 0; k < n; k++)
+         if (!isfinite(v[k][c->slot][c->chan]))
+            m = 0.0;                        /* nothing to keep: left as it is */
+      const double r = c->rebase == FR_REBASE_EVEN ? 2.0 * floor(m / 2.0) : floor(m);
+      if (r != 0.0) {
+         fr->rebase[i] = r;
+         rc->stats.tex_rebased++;
+      }
+   }
 }
 
 void rast_setup_constants(struct rast_front *fr, const float (*pv)[4])
@@ -284,6 +325,7 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
       return;
    fr->quad[0].front_facing = fr->quad[1].front_facing = front;
 
+   rast_setup_rebase(rc, fr, v, 3);
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);
    rast_interp_modes_setup(rc, fr, 0, 1, 2);

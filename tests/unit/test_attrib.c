@@ -124,10 +124,10 @@ static void run(const char *profile, const char *texfmt)
    vl.vertex_size = 5;
    vl.pos_slot = 0;
    vl.num_varyings = 4;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_COLOR, 0x1 };
-   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_PERSPECTIVE, 0x1 };
-   vl.varying[2] = (struct rast_varying){ 3, RAST_INTERP_LINEAR, 0x2 };
-   vl.varying[3] = (struct rast_varying){ 4, RAST_INTERP_CONSTANT, 0x4 };
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR, .usage_mask = 0x1 };
+   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x1 };
+   vl.varying[2] = (struct rast_varying){ .slot = 3, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x2 };
+   vl.varying[3] = (struct rast_varying){ .slot = 4, .interp = RAST_INTERP_CONSTANT, .usage_mask = 0x4 };
    rast_set_vertex_layout(t.rc, &vl);
    struct fx_sat s = { 0, 0 };
    double zfull = (double)((1 << t.prof->z_bits) - 1);
@@ -222,7 +222,7 @@ static void flat_and_cull(void)
    memset(&vl, 0, sizeof vl);
    vl.vertex_size = 2;
    vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_COLOR, 0x1 };
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR, .usage_mask = 0x1 };
    rast_set_vertex_layout(t.rc, &vl);
    float v[3][2][4] = {
       { { 10, 10, 0.5f, 1 }, { 0.1f, 0, 0, 0 } },
@@ -297,8 +297,8 @@ static void lines_persp(const char *texfmt)
    memset(&vl, 0, sizeof vl);
    vl.vertex_size = 3;
    vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_LINEAR, 0x1 };
-   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_PERSPECTIVE, 0x1 };
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x1 };
+   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x1 };
    rast_set_vertex_layout(t.rc, &vl);
    struct rast_raster_state rs;
    memset(&rs, 0, sizeof rs);

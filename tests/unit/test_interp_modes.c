@@ -104,8 +104,8 @@ static void run(const char *profile)
    vl.vertex_size = 2;
    vl.pos_slot = 0;
    vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ 0, RAST_INTERP_LINEAR, 0x1 };   /* unused */
-   vl.varying[1] = (struct rast_varying){ 1, RAST_INTERP_COLOR, 0xf };
+   vl.varying[0] = (struct rast_varying){ .slot = 0, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x1 };   /* unused */
+   vl.varying[1] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR, .usage_mask = 0xf };
    rast_set_vertex_layout(t.rc, &vl);
    const bool wide = !strcmp(profile, "wide");
    colour_regs = !wide;

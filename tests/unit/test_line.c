@@ -60,7 +60,7 @@ int main(void)
    memset(&vl, 0, sizeof vl);
    vl.vertex_size = 2;
    vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_LINEAR, 0x1 };
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x1 };
    rast_set_vertex_layout(t.rc, &vl);
 
    /* between pixel centres: the start pixel is drawn, the end one not */

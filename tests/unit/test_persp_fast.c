@@ -85,8 +85,11 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
             double r = t_rand();
             uint8_t interp = r < 0.7 ? RAST_INTERP_PERSPECTIVE
                            : r < 0.85 ? RAST_INTERP_COLOR : RAST_INTERP_LINEAR;
-            vl.varying[v] = (struct rast_varying){ (uint8_t)(1 + v), interp,
-                                                   (uint8_t)(1 + t_rand() * 15) };
+            vl.varying[v] = (struct rast_varying){
+               .slot = (uint8_t)(1 + v), .interp = interp,
+               .usage_mask = (uint8_t)(1 + t_rand() * 15),
+               /* rebased components: the set-up's, the same on every path */
+               .rebase_mask = (uint8_t)(t_rand() * 16), .rebase_even = (uint8_t)(t_rand() * 16) };
          }
          rast_set_vertex_layout(t.rc, &vl);
       }

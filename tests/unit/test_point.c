@@ -152,8 +152,8 @@ static void layout(void)
    vl.has_psize = true;
    vl.psize_slot = 1;
    vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ 2, RAST_INTERP_PERSPECTIVE, 0xf };
-   vl.varying[1] = (struct rast_varying){ 3, RAST_INTERP_COLOR, 0xf };
+   vl.varying[0] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0xf };
+   vl.varying[1] = (struct rast_varying){ .slot = 3, .interp = RAST_INTERP_COLOR, .usage_mask = 0xf };
    vl.point_coord_mask = 1u << 0;
    rast_set_vertex_layout(t.rc, &vl);
 }

@@ -246,7 +246,7 @@ void t_layout_persp_color(struct rast_context *rc)
    vl.vertex_size = T_PERSP_COLOR_SLOTS;
    vl.pos_slot = 0;
    vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ 1, RAST_INTERP_PERSPECTIVE, 0x3 };
-   vl.varying[1] = (struct rast_varying){ 2, RAST_INTERP_COLOR, 0xf };
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x3 };
+   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_COLOR, .usage_mask = 0xf };
    rast_set_vertex_layout(rc, &vl);
 }
