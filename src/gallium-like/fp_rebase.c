@@ -103,35 +103,38 @@ static unsigned wrap_kind(unsigned wrap)
    return wrap == PIPE_TEX_WRAP_REPEAT ? 1u : wrap == PIPE_TEX_WRAP_MIRROR_REPEAT ? 2u : 0u;
 }
 
-void fp_rebase_modes(const struct fp_context *fp, unsigned input, uint8_t *mask, uint8_t *even)
+/* How component c of an input may be rebased: 0 not, 1 by any integer,
+ * 2 by an even one. */
+static unsigned component_rebase(const struct fp_context *fp, unsigned input, unsigned c)
 {
    const struct fp_fragment_shader *fs = fp->fs;
+   const struct fp_coord_use *u = &fs->coord_use[input][c];
+   unsigned kind = 0;
+   if (fs->coord_other[input] >> c & 1u)
+      return 0;
+   for (unsigned a = 0; a < 3; a++) {
+      uint32_t m = u->samplers[a];
+      while (m) {
+         const struct pipe_sampler_state *st =
+            fp->samplers[PIPE_SHADER_FRAGMENT][u_bit_scan(&m)];
+         const unsigned wrap = !st ? 0u : a == 0 ? st->wrap_s : a == 1 ? st->wrap_t : st->wrap_r;
+         const unsigned k = st && !st->unnormalized_coords ? wrap_kind(wrap) : 0u;
+         if (!k)
+            return 0;
+         kind = MAX2(kind, k);
+      }
+   }
+   return kind;
+}
+
+void fp_rebase_modes(const struct fp_context *fp, unsigned input, uint8_t *mask, uint8_t *even)
+{
    *mask = *even = 0;
-   if (!fs || input >= RAST_MAX_VARYINGS)
+   if (!fp->fs || input >= RAST_MAX_VARYINGS)
       return;
    for (unsigned c = 0; c < 4; c++) {
-      const struct fp_coord_use *u = &fs->coord_use[input][c];
-      if (fs->coord_other[input] >> c & 1u)
-         continue;
-      bool ok = false, mirror = false;
-      for (unsigned a = 0; a < 3; a++) {
-         uint32_t m = u->samplers[a];
-         while (m) {
-            const unsigned s = (unsigned)u_bit_scan(&m);
-            const struct pipe_sampler_state *st = fp->samplers[PIPE_SHADER_FRAGMENT][s];
-            const unsigned wrap = !st ? 0u : a == 0 ? st->wrap_s : a == 1 ? st->wrap_t : st->wrap_r;
-            const unsigned k = st && !st->unnormalized_coords ? wrap_kind(wrap) : 0u;
-            if (!k)
-               goto next;
-            ok = true;
-            mirror |= k == 2;
-         }
-      }
-      if (ok) {
-         *mask |= (uint8_t)(1u << c);
-         if (mirror)
-            *even |= (uint8_t)(1u << c);
-      }
-   next:;
+      const unsigned k = component_rebase(fp, input, c);
+      *mask |= (uint8_t)((k != 0) << c);
+      *even |= (uint8_t)((k == 2) << c);
    }
 }

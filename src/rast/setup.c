@@ -173,11 +173,14 @@ void rast_setup_rebase(struct rast_context *rc, struct rast_front *fr,
       if (!c->rebase)
          continue;
       double m = INFINITY;
-      for (unsigned k = 0; k < n; k++)
-         m = fmin(m, (double)v[k][c->slot][c->chan]);
-      for (unsigned k = 0; k < n; k++)
-         if (!isfinite(v[k][c->slot][c->chan]))
+      for (unsigned k = 0; k < n; k++) {
+         const float a = v[k][c->slot][c->chan];
+         if (!isfinite(a)) {
             m = 0.0;                        /* nothing to keep: left as it is */
+            break;
+         }
+         m = fmin(m, (double)a);
+      }
       const double r = c->rebase == FR_REBASE_EVEN ? 2.0 * floor(m / 2.0) : floor(m);
       if (r != 0.0) {
          fr->rebase[i] = r;

@@ -65,12 +65,7 @@ static void square(float cx, float cy, double K, int size)
       if ((double)uv[k * 2] != K + cu[k] || (double)uv[k * 2 + 1] != K + cv[k])
          fp_die("offset %.0f: the coordinates are not exact in binary32", K);
    }
-   glBindBuffer(GL_ARRAY_BUFFER, 0);
-   glEnableVertexAttribArray(0);
-   glEnableVertexAttribArray(1);
-   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, pos);
-   glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 0, uv);
-   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, uv, 2);
 }
 
 int main(int argc, char **argv)
@@ -88,14 +83,7 @@ int main(int argc, char **argv)
 
    struct fp_gl g;
    e2e_begin(&g, &a);
-   static const char *vs =
-      "attribute vec4 a_pos;\nattribute vec2 a_uv;\nvarying vec2 v_uv;\n"
-      "void main() { v_uv = a_uv; gl_Position = a_pos; }\n";
-   static const char *fs =
-      "precision highp float;\nuniform sampler2D u_tex;\nvarying vec2 v_uv;\n"
-      "void main() { gl_FragColor = texture2D(u_tex, v_uv); }\n";
-   static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   GLuint prog = fp_gl_program(vs, fs, attr);
+   GLuint prog = e2e_texture_program();
    glClearColor(0, 0, 0, 1);
    glClear(GL_COLOR_BUFFER_BIT);
    glUseProgram(prog);

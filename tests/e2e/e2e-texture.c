@@ -147,14 +147,7 @@ int main(int argc, char **argv)
                               { gy[tri], gy[tri + 1], gy[tri + 2] } };
          ties += e2e_tri_ties(&t, size, mask);
       }
-      glBindBuffer(GL_ARRAY_BUFFER, 0);
-      glEnableVertexAttribArray(0);
-      glEnableVertexAttribArray(1);
-      glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, pos);
-      glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 0, uv);
-      glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-      glDisableVertexAttribArray(0);
-      glDisableVertexAttribArray(1);
+      e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, uv, 2);
       glDeleteTextures(1, &tex);
    }
    printf("stat: quads=%d tie_pixels=%ld\n", drawn, ties);

@@ -32,12 +32,7 @@ static void quad(int cx, int cy, const float *tc, int ncomp, int size)
       pos[k * 4 + 2] = 0;
       pos[k * 4 + 3] = 1;
    }
-   glBindBuffer(GL_ARRAY_BUFFER, 0);
-   glEnableVertexAttribArray(0);
-   glEnableVertexAttribArray(1);
-   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, pos);
-   glVertexAttribPointer(1, ncomp, GL_FLOAT, GL_FALSE, 0, tc);
-   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, tc, ncomp);
 }
 
 static void pattern(unsigned char *p, int w, int h, int seed)
@@ -122,12 +117,6 @@ int main(int argc, char **argv)
 
    struct fp_gl g;
    e2e_begin(&g, &a);
-   static const char *vs2 =
-      "attribute vec4 a_pos;\nattribute vec2 a_uv;\nvarying vec2 v_uv;\n"
-      "void main() { v_uv = a_uv; gl_Position = a_pos; }\n";
-   static const char *fs2 =
-      "precision highp float;\nuniform sampler2D u_tex;\nvarying vec2 v_uv;\n"
-      "void main() { gl_FragColor = texture2D(u_tex, v_uv); }\n";
    static const char *vsc =
       "attribute vec4 a_pos;\nattribute vec3 a_uv;\nvarying vec3 v_dir;\n"
       "void main() { v_dir = a_uv; gl_Position = a_pos; }\n";
@@ -135,7 +124,7 @@ int main(int argc, char **argv)
       "precision highp float;\nuniform samplerCube u_tex;\nvarying vec3 v_dir;\n"
       "void main() { gl_FragColor = textureCube(u_tex, v_dir); }\n";
    static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   GLuint p2 = fp_gl_program(vs2, fs2, attr), pc = fp_gl_program(vsc, fsc, attr);
+   GLuint p2 = e2e_texture_program(), pc = fp_gl_program(vsc, fsc, attr);
    glClearColor(0, 0, 0, 1);
    glClear(GL_COLOR_BUFFER_BIT);
 

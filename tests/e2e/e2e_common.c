@@ -95,6 +95,30 @@ GLuint e2e_color_program(void)
    return fp_gl_program(vs, fs, attr);
 }
 
+GLuint e2e_texture_program(void)
+{
+   static const char *vs =
+      "attribute vec4 a_pos;\nattribute vec2 a_uv;\nvarying vec2 v_uv;\n"
+      "void main() { v_uv = a_uv; gl_Position = a_pos; }\n";
+   static const char *fs =
+      "precision highp float;\nuniform sampler2D u_tex;\nvarying vec2 v_uv;\n"
+      "void main() { gl_FragColor = texture2D(u_tex, v_uv); }\n";
+   static const char *const attr[] = { "a_pos", "a_uv", NULL };
+   return fp_gl_program(vs, fs, attr);
+}
+
+void e2e_draw_uv(GLenum mode, int n, const float *pos, const float *uv, int ncomp)
+{
+   glBindBuffer(GL_ARRAY_BUFFER, 0);
+   glEnableVertexAttribArray(0);
+   glEnableVertexAttribArray(1);
+   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, pos);
+   glVertexAttribPointer(1, ncomp, GL_FLOAT, GL_FALSE, 0, uv);
+   glDrawArrays(mode, 0, n);
+   glDisableVertexAttribArray(0);
+   glDisableVertexAttribArray(1);
+}
+
 void e2e_draw(GLenum mode, int n, const float *pos, const float *color, const float rgba[4])
 {
    glBindBuffer(GL_ARRAY_BUFFER, 0);

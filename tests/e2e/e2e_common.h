@@ -46,6 +46,13 @@ GLuint e2e_color_program(void);
  * (color NULL: attribute 1 constant at rgba). */
 void e2e_draw(GLenum mode, int n, const float *pos, const float *color, const float rgba[4]);
 
+/* Program with a_pos (vec4, clip space) and a_uv (vec2) varying into
+ * texture2D(u_tex, v_uv) and nothing else (u_tex left at unit 0). */
+GLuint e2e_texture_program(void);
+/* Draws n vertices of mode from client arrays: pos 4 floats, attribute 1
+ * (a texture coordinate) ncomp floats. */
+void e2e_draw_uv(GLenum mode, int n, const float *pos, const float *uv, int ncomp);
+
 /* Sub-pixel grid unit -> clip-space x or y for a target of `size` pixels;
  * exact for power-of-two sizes. */
 float e2e_ndc(int32_t sub, int size);
