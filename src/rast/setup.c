@@ -157,31 +157,77 @@ void rast_setup_attribs(struct rast_context *rc, struct rast_front *fr,
    }
 }
 
-/* The rebase of a REPEAT (or MIRRORED_REPEAT) coordinate: the floor of
- * the primitive's smallest vertex value (an even floor for the mirror,
- * whose period is 2), so that each vertex keeps its place within the
- * period and the values start from [0, 1) (or [0, 2)).  Subtracting it is
- * exact wherever the vertex values are not much larger than their spread
- * (Sterbenz: within a factor 2 of R), which is the case it exists for;
+/* The rebase of a REPEAT (or MIRRORED_REPEAT) coordinate: an integer R
+ * (an even one for the mirror, whose period is 2) subtracted from every
+ * vertex value, so that a coordinate offset by whole periods reaches the
+ * planes as the same bits as without the offset.  Which integer matters
+ * for precision: the planes carry (a - R)/w, whose registers lose bits in
+ * proportion to their size, so R is the candidate that leaves the
+ * smallest largest |a - R|/w over the vertices.  The candidates are the
+ * integers nearest each vertex value and nearest the midpoint of the
+ * smallest and largest: the nearest vertex (largest 1/w) under strong
+ * perspective, where the texture is magnified and every bit shows; the
+ * midpoint when the w are equal.  Every candidate and every |a - R| moves
+ * with an offset by exactly the offset (they are exact in double), so the
+ * choice does too.  The subtraction is exact when the vertex values lie
+ * within a factor 2 of R (Sterbenz), which is the case it exists for;
  * elsewhere the difference rounds once, to the float nearest it. */
+static double rebase_round(double a, bool even)
+{
+   return even ? 2.0 * floor(a / 2.0 + 0.5) : floor(a + 0.5);
+}
+
+static double rebase_cost(const double *a, const double *oow, unsigned n, double r)
+{
+   double worst = 0.0;
+   for (unsigned k = 0; k < n; k++)
+      worst = fmax(worst, fabs(a[k] - r) * oow[k]);
+   return worst;
+}
+
+static double rebase_choose(const double *a, const double *oow, unsigned n, bool even)
+{
+   double lo = a[0], hi = a[0];
+   for (unsigned k = 1; k < n; k++) {
+      lo = fmin(lo, a[k]);
+      hi = fmax(hi, a[k]);
+   }
+   double best = rebase_round(lo / 2.0 + hi / 2.0, even);
+   double best_cost = rebase_cost(a, oow, n, best);
+   for (unsigned k = 0; k < n; k++) {
+      const double r = rebase_round(a[k], even);
+      const double cost = rebase_cost(a, oow, n, r);
+      if (cost < best_cost) {
+         best = r;
+         best_cost = cost;
+      }
+   }
+   return best;
+}
+
 void rast_setup_rebase(struct rast_context *rc, struct rast_front *fr,
                        const float (*const *v)[4], unsigned n)
 {
+   double oow[3] = { 0.0, 0.0, 0.0 };
+   bool finite_w = true;
+   for (unsigned k = 0; k < n; k++) {
+      oow[k] = fabs((double)v[k][rc->vl.pos_slot][3]);
+      finite_w &= isfinite(oow[k]);
+   }
    for (unsigned i = 0; i < fr->npersp; i++) {
       const struct fr_comp *c = &fr->persp[i];
       fr->rebase[i] = 0.0;
-      if (!c->rebase)
+      if (!c->rebase || !finite_w)
          continue;
-      double m = INFINITY;
+      double a[3] = { 0.0, 0.0, 0.0 };
+      bool finite = true;
       for (unsigned k = 0; k < n; k++) {
-         const float a = v[k][c->slot][c->chan];
-         if (!isfinite(a)) {
-            m = 0.0;                        /* nothing to keep: left as it is */
-            break;
-         }
-         m = fmin(m, (double)a);
+         a[k] = (double)v[k][c->slot][c->chan];
+         finite &= isfinite(a[k]);
       }
-      const double r = c->rebase == FR_REBASE_EVEN ? 2.0 * floor(m / 2.0) : floor(m);
+      if (!finite)
+         continue;                          /* nothing to keep: left as it is */
+      const double r = rebase_choose(a, oow, n, c->rebase == FR_REBASE_EVEN);
       if (r != 0.0) {
          fr->rebase[i] = r;
          rc->stats.tex_rebased++;
