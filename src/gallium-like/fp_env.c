@@ -62,15 +62,16 @@ static void fp_env_check_flags(const char *var, const char *value,
 
 static void fp_env_parse(void)
 {
+   /* FIXPIPE_PROFILE=NAME[:KEY=VALUE,...] (docs/profiles.md) */
    const char *p = getenv("FIXPIPE_PROFILE");
    env_profile = rast_profile_by_name("seed");
    if (p && *p) {
-      const struct rast_profile *prof = rast_profile_by_name(p);
-      if (prof)
-         env_profile = prof;
+      static struct rast_profile_buf custom;
+      char err[256];
+      if (rast_profile_parse(p, &custom, err, sizeof(err)))
+         env_profile = &custom.p;
       else
-         fprintf(stderr, "fixpipe: unknown FIXPIPE_PROFILE '%s' (accepted: %s); using seed\n",
-                 p, rast_profile_names());
+         fprintf(stderr, "fixpipe: bad FIXPIPE_PROFILE '%s': %s; using seed\n", p, err);
    }
 
    const char *s = getenv("FIXPIPE_STATS");

@@ -16,7 +16,7 @@ struct fp_screen {
    struct disk_cache *disk_cache;
    util_once_flag disk_cache_once;
    const struct rast_profile *profile;
-   char name[64];
+   char name[128];
 };
 
 static inline struct fp_screen *fp_screen(struct pipe_screen *s)

@@ -19,6 +19,7 @@
 #ifndef FIXPIPE_RAST_H
 #define FIXPIPE_RAST_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include <stdbool.h>
 #include "fixed/fx.h"
@@ -57,10 +58,25 @@ struct rast_profile {
    /* The weights of the per-pixel independent interpolators (seeds 001,
     * 002; docs/interp-modes.md): 8.24 in both profiles. */
    struct fx_format weight;
+   /* The seed's edge walk as Table 1 gives it: X_left, X_right step by the
+    * Δx/Δy register alone, without the remainder that makes the walk
+    * exact (docs/profiles.md, "Precision settings").  false in both. */
+   bool literal_walk;
 };
 
 /* NULL when the name is unknown. */
 const struct rast_profile *rast_profile_by_name(const char *name);
+/* A profile with its own storage: a named one with some fraction bits
+ * changed ("seed:xy=12.8,z=20.16,walk=literal"; docs/profiles.md). */
+struct rast_profile_buf {
+   struct rast_profile p;
+   char name[96];                  /* the setting, normalised */
+   char summary[256];
+};
+/* Parses NAME[:KEY=VALUE,...] into *out.  false on a bad setting, with one
+ * line in err that names the accepted keys and ranges. */
+bool rast_profile_parse(const char *spec, struct rast_profile_buf *out, char *err,
+                        size_t err_size);
 /* "seed, wide": for error messages and --help. */
 const char *rast_profile_names(void);
 /* The profiles in a NULL-terminated list, for docs and tests. */

@@ -33,6 +33,34 @@ static inline int64_t floor_div(int64_t n, int64_t d, int64_t *rem)
    return q;
 }
 
+/* The seed's walk as Table 1 has it (profile setting walk=literal): the
+ * Δx/Δy register is floor(Δx·2^Nd/Δy) in its own format (Nd fraction
+ * bits, saturating), added to X on X's grid (the adder drops what X
+ * cannot hold), and nothing carries the rest.  X starts at the edge's
+ * first scan line j0 with the exact intersection floored (the set-up's
+ * multiply-divide) and then only adds: at scan line j it holds
+ * start + (j - j0) slopes, which is what the walk from j0 would hold, so
+ * a clip, a tile or a thread that starts lower sees the same register. */
+static void literal_start(struct rast_context *rc, struct rast_front *fr, struct fr_edge *e,
+                          int64_t j, int64_t dx, bool steps)
+{
+   const struct rast_profile *prof = rc->profile;
+   const unsigned nxy = prof->xy.frac_bits, nd = prof->dxdy.frac_bits;
+   int64_t rem;
+   int64_t q = floor_div(dx * (INT64_C(1) << nd), e->dy, &rem);
+   const int64_t j0 = ceil_row(fr, prof->xy, e->ya);
+   if (q > fx_max(prof->dxdy) || q < fx_min(prof->dxdy)) {
+      struct fx_sat none = { 0, 0 };
+      /* counted where the slope is used, as the exact walk counts it */
+      q = fx_sat(prof->dxdy, q, steps || j > j0 ? &rc->stats.sat[RAST_REG_DXDY] : &none);
+   }
+   e->lit_step = nd >= nxy ? q >> (nd - nxy) : q * (INT64_C(1) << (nxy - nd));
+   const int64_t t0 = j0 * fr->S + fr->H - e->ya;
+   const int64_t x0 = e->xa + floor_div(dx * t0, e->dy, &rem);
+   e->x = fx_sat(prof->xy, x0 + (j - j0) * e->lit_step, &rc->stats.sat[RAST_REG_XY]);
+   e->rem = 0;
+}
+
 /* Load an edge's registers at scan line j: the subpixel start (one exact
  * multiply-divide, also used to jump over clipped scan lines), the slope
  * registers if the edge will be stepped, and for a left edge the attribute
@@ -47,12 +75,18 @@ static void edge_start(struct rast_context *rc, struct rast_front *fr,
    int64_t rem;
 
    e->dy = e->yb - e->ya;
-   e->x = fx_add(prof->xy, e->xa, floor_div(dx * t, e->dy, &rem), &rc->stats.sat[RAST_REG_XY]);
-   e->rem = rem;
-
    bool steps = e->j_end > j;
+   if (prof->literal_walk) {
+      literal_start(rc, fr, e, j, dx, steps);
+   } else {
+      e->x = fx_add(prof->xy, e->xa, floor_div(dx * t, e->dy, &rem), &rc->stats.sat[RAST_REG_XY]);
+      e->rem = rem;
+   }
+
    e->step = e->step_rem = 0;
-   if (steps) {
+   if (prof->literal_walk) {
+      e->step = e->lit_step;
+   } else if (steps) {
       int64_t q = floor_div(dx * S, e->dy, &rem);
       /* The dx/dy register; a clamped slope loses the exact walk. */
       if (q > fx_max(prof->dxdy) || q < fx_min(prof->dxdy)) {

@@ -51,11 +51,13 @@ static unsigned shade_record(void *ctx, const struct rast_quad *q, struct rast_s
 void t_init(struct tctx *t, const char *profile, int w, int h)
 {
    memset(t, 0, sizeof(*t));
-   t->prof = rast_profile_by_name(profile);
-   if (!t->prof) {
-      fprintf(stderr, "unknown profile %s\n", profile);
+   char err[256];
+   t->profile_buf = malloc(sizeof(*t->profile_buf));
+   if (!t->profile_buf || !rast_profile_parse(profile, t->profile_buf, err, sizeof(err))) {
+      fprintf(stderr, "profile %s: %s\n", profile, err);
       exit(1);
    }
+   t->prof = &t->profile_buf->p;
    t->rc = rast_create(t->prof);
    t->w = w;
    t->h = h;
@@ -101,6 +103,7 @@ void t_fini(struct tctx *t)
    rast_destroy(t->rc);
    free(t->stamp);
    free(t->hits);
+   free(t->profile_buf);
 }
 
 void t_begin(struct tctx *t)

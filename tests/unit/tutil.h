@@ -37,6 +37,7 @@ typedef void (*t_quad_hook)(struct tctx *t, const struct rast_quad *q);
 struct tctx {
    struct rast_context *rc;
    const struct rast_profile *prof;
+   struct rast_profile_buf *profile_buf;   /* prof's storage (t_init's spec) */
    int w, h;
    uint32_t *stamp;          /* last primitive id that covered each pixel */
    uint8_t *hits;            /* per-pixel count, when counting is on */
@@ -84,6 +85,18 @@ uint64_t t_ref_triangle(const int64_t X[3], const int64_t Y[3], int64_t S, int64
 static inline void t_tri(struct rast_context *rc, float (*a)[4], float (*b)[4], float (*c)[4])
 {
    rast_triangle(rc, T_V(a), T_V(b), T_V(c));
+}
+/* A triangle of one-slot vertices (position only) at z = 0.5, w = 1. */
+static inline void t_tri_xy(struct rast_context *rc, const float v[3][2])
+{
+   float vert[3][1][4];
+   for (int i = 0; i < 3; i++) {
+      vert[i][0][0] = v[i][0];
+      vert[i][0][1] = v[i][1];
+      vert[i][0][2] = 0.5f;
+      vert[i][0][3] = 1.0f;
+   }
+   t_tri(rc, vert[0], vert[1], vert[2]);
 }
 static inline void t_line(struct rast_context *rc, float (*a)[4], float (*b)[4])
 {
