@@ -39,6 +39,7 @@ typedef int (*region_fn)(double x, double y, const void *ctx);
  * holes and overlaps inside are counted and printed, not required to be
  * zero: that is what the setting exists to measure. */
 static double margin;
+static bool measured, measure_only;
 static uint64_t literal_holes, literal_twice, literal_inside;
 
 static int region_with_margin(region_fn region, const void *ctx, double x, double y)
@@ -64,9 +65,9 @@ static void verify(const char *what, region_fn region, const void *ctx, double h
          if (r > 0) { inside++; if (h != 1) bad_in++; }
          if (r < 0 && h != 0) bad_out++;
       }
-   if (t.prof->literal_walk) {
-      /* measured, not required: drifted edges cross near the vertices
-       * they converge on (docs/profiles.md) */
+   if (measured) {
+      /* not required: drifted edges cross near the vertices they
+       * converge on (docs/profiles.md) */
       literal_holes += bad_in + bad_out;
       literal_twice += multi;
       literal_inside += inside;
@@ -192,33 +193,57 @@ static void strip_mesh(double grid, double hc)
    verify("strip", in_strip, &s, hc);
 }
 
-int main(void)
+/* Every mesh kind on every grid the profile's X/Y holds, in both edge rules
+ * and pixel-centre conventions. */
+static void run_meshes(const char *spec)
+{
+   t_init(&t, spec, W, H);
+   t.counting = true;
+   const double finest = ldexp(1.0, -(int)t.prof->xy.frac_bits);
+   /* measured: the literal walk's drift over the meshes' 500 scan lines
+    * at most, and the snapping of a coarse grid, kept off the outline */
+   measured = measure_only || t.prof->literal_walk || finest > 1.0 / 64;
+   margin = !measured ? 0
+            : 1.0 + (t.prof->literal_walk ? 500.0 * ldexp(1.0, -(int)t.prof->dxdy.frac_bits) : 0);
+   for (int cfg = 0; cfg < 4; cfg++) {
+      bool half = cfg & 1, bottom = cfg >> 1;
+      t_raster(&t, half, bottom);
+      double hc = half ? 0.5 : 0.0;
+      const double grids[4] = { 0.5, 0.25, 1.0 / 64, 1.0 / 4096 };
+      for (int rep = 0; rep < 24; rep++) {
+         double g = fmax(grids[rep % 4], finest);
+         grid_mesh(g, hc);
+         fan_mesh(g, hc);
+         strip_mesh(g, hc);
+      }
+   }
+}
+
+/* With arguments (--measure SPEC...): each setting's holes and double hits
+ * as key=value, for ./fixpipe sweep; nothing checked. */
+int main(int argc, char **argv)
 {
    t_seed(777);
+   if (argc > 2 && !strcmp(argv[1], "--measure")) {
+      measure_only = true;
+      for (int i = 2; i < argc; i++) {
+         run_meshes(argv[i]);
+         printf("profile=%s inside=%llu holes=%llu twice=%llu\n", t.prof->name,
+                (unsigned long long)literal_inside, (unsigned long long)literal_holes,
+                (unsigned long long)literal_twice);
+         literal_holes = literal_twice = literal_inside = 0;
+         t_fini(&t);
+      }
+      return 0;
+   }
    /* the named profiles and X/Y on a 1/64 grid: watertight; the literal
     * walk with the seed's slope and with a 6-bit one: measured
     * (docs/profiles.md) */
    const char *profiles[] = { "seed", "wide", "seed:xy=12.6", "seed:walk=literal",
                               "seed:walk=literal,dxdy=12.6" };
    for (int pi = 0; pi < (int)(sizeof(profiles) / sizeof(profiles[0])); pi++) {
-      t_init(&t, profiles[pi], W, H);
-      t.counting = true;
-      /* the drift over the meshes' 500 scan lines, at most */
-      margin = t.prof->literal_walk ? 500.0 * ldexp(1.0, -(int)t.prof->dxdy.frac_bits) + 1.0 : 0;
-      const double finest = ldexp(1.0, -(int)t.prof->xy.frac_bits);
-      for (int cfg = 0; cfg < 4; cfg++) {
-         bool half = cfg & 1, bottom = cfg >> 1;
-         t_raster(&t, half, bottom);
-         double hc = half ? 0.5 : 0.0;
-         const double grids[4] = { 0.5, 0.25, 1.0 / 64, 1.0 / 4096 };
-         for (int rep = 0; rep < 24; rep++) {
-            double g = fmax(grids[rep % 4], finest);
-            grid_mesh(g, hc);
-            fan_mesh(g, hc);
-            strip_mesh(g, hc);
-         }
-      }
-      if (t.prof->literal_walk) {
+      run_meshes(profiles[pi]);
+      if (measured) {
          printf("watertight: %s: %llu pixels inside, %llu not covered once, %llu covered twice\n",
                 t.prof->name, (unsigned long long)literal_inside,
                 (unsigned long long)literal_holes, (unsigned long long)literal_twice);

@@ -1,0 +1,66 @@
+#!/bin/sh
+# ./fixpipe sweep's machinery on a small grid (tools/fp-sweep --grid quick: seed and
+# seed:xy=12.4) over one trace and the seed-003 scene.  Checks:
+#   it runs, and its CSV has the two references, the maximal-precision model and the
+#     two settings, each with every figure;
+#   llvmpipe against itself is 0, the maximal model against itself is identical;
+#   the measurement sees precision: seed:xy=12.4 is further from the maximal model
+#     than seed is;
+#   the two charts are PNG files.
+# One line per check, then "N passed, N failed"; exit 1 on a failure.
+checks=sweep
+. "$(dirname "$0")/checks.sh"
+
+if ! /usr/bin/python3 "$root/tools/fp-sweep" --grid quick --traces glmark2-build-vbo --no-docs \
+        --out "$out" --build "$build" > "$out/sweep.log" 2>&1; then
+    fail "fp-sweep --grid quick: $(tail -n 1 "$out/sweep.log")"
+    checks_end
+    exit
+fi
+pass "fp-sweep --grid quick ran"
+
+# field SETTING COLUMN: one figure of the CSV
+field() {
+    /usr/bin/python3 - "$out/sweep.csv" "$1" "$2" <<'PY'
+import csv, sys
+rows = {r["setting"]: r for r in csv.DictReader(open(sys.argv[1]))}
+print(rows.get(sys.argv[2], {}).get(sys.argv[3], "missing"))
+PY
+}
+
+rows=$(($(wc -l < "$out/sweep.csv") - 1))
+empty=$(/usr/bin/python3 - "$out/sweep.csv" <<'PY'
+import csv, sys
+keys = ("run_time_s", "llvm_mean", "llvm_psnr", "max_mean", "max_psnr", "persp_llvm_psnr",
+        "sat_xy", "tex_flush", "watertight_holes", "watertight_twice")
+print(sum(1 for r in csv.DictReader(open(sys.argv[1]))
+          if r["family"] != "reference" for k in keys if r[k] == ""))
+PY
+)
+if [ "$rows" = 5 ] && [ "$empty" = 0 ]; then
+    pass "sweep.csv: llvmpipe, softpipe, maximal, seed, xy=12.4, every figure present"
+else
+    fail "sweep.csv: $rows rows (want 5), $empty empty figures"
+fi
+
+if [ "$(field llvmpipe llvm_mean)" = 0.0 ] && [ "$(field maximal max_psnr)" = inf ]; then
+    pass "llvmpipe against itself 0, the maximal model against itself identical"
+else
+    fail "self-comparisons: llvmpipe $(field llvmpipe llvm_mean), maximal $(field maximal max_psnr) dB"
+fi
+
+s=$(field seed max_psnr) c=$(field xy=12.4 max_psnr)
+if awk -v s="$s" -v c="$c" 'BEGIN { if (s == "inf") s = 1e9; exit !(c + 1 < s) }'; then
+    pass "xy=12.4 is further from the maximal model ($c dB) than seed ($s dB)"
+else
+    fail "xy=12.4 ($c dB) is not further from the maximal model than seed ($s dB)"
+fi
+
+for f in pareto bits; do
+    if [ "$(head -c 8 "$out/$f.png" 2>/dev/null | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; then
+        pass "$f.png drawn"
+    else
+        fail "$f.png missing or not a PNG"
+    fi
+done
+checks_end
