@@ -4,7 +4,8 @@
  * filter, chosen at bind.
  *
  * Periodic modes (REPEAT, MIRRORED_REPEAT) wrap the normalized coordinate
- * first (its fraction: exact in every number system) and scale the result
+ * first (its fraction: exact in every number system, but in [-1, 0), see
+ * frac_of) and scale the result
  * (< 1) by the level size, so the texel address keeps its precision
  * whatever the coordinate's magnitude and whatever the size (NPOT needs no
  * divider: the index lies in [-1, size]).  Clamp modes clamp the
@@ -30,13 +31,18 @@ static inline int64_t floor_w(const struct tex_unit *u, ns_val a, uint32_t *w)
    return u->ns->floor_frac(u->ns, a, w, TEX_WEIGHT_BITS, u->stats);
 }
 
-/* The fraction c - floor(c) and the parity of floor(c). */
-static inline ns_val frac_of(const struct tex_unit *u, ns_val c, bool *odd)
+/* The fraction c - floor(c) and the parity of floor(c).  For c in [-1, 0)
+ * the fraction 1 + c lies where a floating register's grid is coarser than
+ * c's own (dfx24: 2^-19 near 1), so it would round across a texel boundary
+ * that c itself resolves: there c is returned unchanged and *below set, and
+ * the caller adds the period after scaling (a texel index: exact). */
+static inline ns_val frac_of(const struct tex_unit *u, ns_val c, bool *odd, bool *below)
 {
    uint32_t unused;
    int64_t fl = u->ns->floor_frac(u->ns, c, &unused, 0, u->stats);
    *odd = fl & 1;
-   return sub(u, c, tex_ns_int(u, fl));
+   *below = fl == -1;
+   return *below ? c : sub(u, c, tex_ns_int(u, fl));
 }
 
 /* ---- REPEAT ---- */
@@ -44,9 +50,11 @@ static inline ns_val frac_of(const struct tex_unit *u, ns_val c, bool *odd)
 static void repeat_nearest(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
                            struct tex_addr *a)
 {
-   bool odd;
+   bool odd, below;
    uint32_t w;
-   int64_t i = floor_w(u, mul(u, frac_of(u, c, &odd), ax->scale), &w);
+   int64_t i = floor_w(u, mul(u, frac_of(u, c, &odd, &below), ax->scale), &w);
+   if (below)
+      i += ax->size;
    a->i0 = tex_clampi(i, 0, ax->size - 1);   /* only a saturated register gets out */
    a->i1 = a->i0;
    a->w = 0;
@@ -55,9 +63,11 @@ static void repeat_nearest(const struct tex_unit *u, const struct tex_axis *ax, 
 static void repeat_linear(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
                           struct tex_addr *a)
 {
-   bool odd;
-   ns_val t = sub(u, mul(u, frac_of(u, c, &odd), ax->scale), u->k_texel_offset);
+   bool odd, below;
+   ns_val t = sub(u, mul(u, frac_of(u, c, &odd, &below), ax->scale), u->k_texel_offset);
    int64_t i = floor_w(u, t, &a->w);
+   if (below)
+      i += ax->size;
    i = tex_clampi(i, -1, ax->size - 1);
    a->i0 = i < 0 ? ax->size - 1 : (int32_t)i;
    a->i1 = i + 1 >= ax->size ? 0 : (int32_t)i + 1;
@@ -67,9 +77,10 @@ static void repeat_linear(const struct tex_unit *u, const struct tex_axis *ax, n
 
 static inline ns_val mirror(const struct tex_unit *u, ns_val c)
 {
-   bool odd;
-   ns_val f = frac_of(u, c, &odd);
-   return odd ? sub(u, u->k_one, f) : f;
+   bool odd, below;
+   ns_val f = frac_of(u, c, &odd, &below);
+   /* [-1, 0) mirrors to -c, exactly */
+   return below ? tex_ns_abs(u->kind, c) : odd ? sub(u, u->k_one, f) : f;
 }
 
 static void edge_nearest_of(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,

@@ -10,13 +10,16 @@
 
 #include "rast/tex_fast.h"
 
-/* c - floor(c) and the parity of floor(c). */
-TEX_FAST_INLINE ns_val frac_of(const enum tex_fk k, ns_val c, bool *odd, struct tex_fst *x)
+/* c - floor(c) and the parity of floor(c); c itself in [-1, 0), with
+ * *below set (tex_addr.c's frac_of). */
+TEX_FAST_INLINE ns_val frac_of(const enum tex_fk k, ns_val c, bool *odd, bool *below,
+                               struct tex_fst *x)
 {
    uint32_t unused;
    const int64_t fl = tex_ffloor(k, c, &unused, 0, x);
    *odd = fl & 1;
-   return tex_fsub(k, c, tex_fint(k, fl, x), x);
+   *below = fl == -1;
+   return *below ? c : tex_fsub(k, c, tex_fint(k, fl, x), x);
 }
 
 /* The clamping wrap modes (all but the two repeats): whether the
@@ -39,26 +42,28 @@ TEX_FAST_INLINE void addr(const struct tex_unit *u, const enum tex_fk k, const b
 {
    const int nk = tex_fk_ns(k);
    bool border = false;
-   bool odd;
+   bool odd, below;
    uint32_t w;
    switch (wrap) {
    case TEX_WRAP_REPEAT: {
-      const ns_val s = tex_fmul(k, frac_of(k, c, &odd, x), ax->scale, x);
+      const ns_val s = tex_fmul(k, frac_of(k, c, &odd, &below, x), ax->scale, x);
+      const int64_t period = below ? ax->size : 0;
       if (!linear) {
-         a->i0 = a->i1 = tex_clampi(tex_ffloor(k, s, &w, TEX_WEIGHT_BITS, x), 0, ax->size - 1);
+         a->i0 = a->i1 = tex_clampi(tex_ffloor(k, s, &w, TEX_WEIGHT_BITS, x) + period, 0,
+                                    ax->size - 1);
          a->w = 0;
          return;
       }
       int64_t i = tex_ffloor(k, tex_fsub(k, s, u->k_texel_offset, x), &a->w,
-                             TEX_WEIGHT_BITS, x);
+                             TEX_WEIGHT_BITS, x) + period;
       i = tex_clampi(i, -1, ax->size - 1);
       a->i0 = i < 0 ? ax->size - 1 : (int32_t)i;
       a->i1 = i + 1 >= ax->size ? 0 : (int32_t)i + 1;
       return;
    }
    case TEX_WRAP_MIRROR_REPEAT: {
-      const ns_val f = frac_of(k, c, &odd, x);
-      c = odd ? tex_fsub(k, u->k_one, f, x) : f;
+      const ns_val f = frac_of(k, c, &odd, &below, x);
+      c = below ? tex_ns_abs(nk, c) : odd ? tex_fsub(k, u->k_one, f, x) : f;
       break;
    }
    default: {

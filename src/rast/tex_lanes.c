@@ -119,19 +119,25 @@ floor_frac(struct dfxl a, const bool bounded, lanes_v4i *ip, lanes_v4i *frac,
 }
 
 /* frac_of: c - floor(c) (floor saturated to int32, through binary32 into
- * the register as tex_fint), and the parity of floor(c). */
+ * the register as tex_fint), and the parity of floor(c); c itself where
+ * c is in [-1, 0), those lanes in *below (tex_addr.c's frac_of; the
+ * difference c + 1 there raises no range event, so computing it on every
+ * lane counts what the scalar path counts). */
 static inline __attribute__((always_inline)) struct dfxl
-lanes_frac_of(struct dfxl c, dfxl_i *odd, struct dfxl_stats *st)
+lanes_frac_of(struct dfxl c, dfxl_i *odd, dfxl_i *below, struct dfxl_stats *st)
 {
    dfxl_i sat;
    const dfxl_d cl = floor_int32(c.v, &sat, st);
    const lanes_v4i i = __builtin_convertvector(cl, lanes_v4i);
    *odd = __builtin_convertvector(i & 1, dfxl_i) != 0;
+   *below = cl == (dfxl_d){ -1, -1, -1, -1 };
    /* 0 <= c < 2^16, nearly every coordinate: the difference itself */
    if (__builtin_expect(dfxl_sub_floor_direct(c.v), 1))
       return dfxl_sub_floor(c, cl, st);
    const dfxl_d asf = __builtin_convertvector(__builtin_convertvector(cl, lanes_v4f), dfxl_d);
-   return dfxl_sub(c, dfxl_from_int(asf, st), st);
+   struct dfxl f = dfxl_sub(c, dfxl_from_int(asf, st), st);
+   f.v = dfxl_seld(*below, c.v, f.v);
+   return f;
 }
 
 static inline __attribute__((always_inline)) struct dfxl
@@ -182,15 +188,18 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    const lanes_v4i zero = { 0, 0, 0, 0 };
    switch (wrap) {
    case TEX_WRAP_REPEAT: {
-      const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, st), splat(lax[0]), st);
+      dfxl_i below;
+      const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, &below, st), splat(lax[0]), st);
+      const lanes_v4i period = __builtin_convertvector(below, lanes_v4i) &
+                               (lanes_v4i){ size, size, size, size };
       if (!linear) {
          floor_frac(s, false, &i, &w, st);
-         a->i0 = a->i1 = clamp4i(i, 0, size - 1);
+         a->i0 = a->i1 = clamp4i(i + period, 0, size - 1);
          a->w = zero;
          return;
       }
       floor_frac(sub_texel_offset(s, st), false, &i, &w, st);
-      const lanes_v4i k = clamp4i(i, -1, size - 1);
+      const lanes_v4i k = clamp4i(i + period, -1, size - 1);
       const lanes_v4i last = { size - 1, size - 1, size - 1, size - 1 };
       const lanes_v4i sz = { size, size, size, size };
       a->i0 = sel4i(k < 0, last, k);
@@ -199,11 +208,13 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       return;
    }
    case TEX_WRAP_MIRROR_REPEAT: {
-      const struct dfxl f = lanes_frac_of(c, &odd, st);
+      dfxl_i below;
+      const struct dfxl f = lanes_frac_of(c, &odd, &below, st);
       struct dfxl_stats ev = DFXL_STATS(st->optimistic);
       const struct dfxl m = dfxl_sub(splat(u->lk_one), f, &ev);
-      dfxl_merge_where(st, &ev, odd);            /* the scalar path subtracts where odd */
-      c.v = dfxl_seld(odd, m.v, f.v);
+      /* the scalar path subtracts where odd and not below */
+      dfxl_merge_where(st, &ev, odd & ~below);
+      c.v = dfxl_seld(below, dfxl_abs(c.v), dfxl_seld(odd, m.v, f.v));
       break;
    }
    default: {

@@ -122,6 +122,17 @@ static bool address_matches(const struct tex_unit *u, const struct numsys *ns, e
    return false;
 }
 
+/* A unit on one 1D RGBA8 level of `size` texels, wrap w, filter f. */
+static void bind_1d(struct tex_unit *u, const struct numsys *ns, int size, enum tex_wrap w,
+                    enum tex_filter f)
+{
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, size, 1, 1);
+   samp_init(&s, w, f);
+   tex_unit_bind(u, ns, &v, &s, &st);
+}
+
 /* Every wrap mode x filter x size on coordinates up to 2^20.  On the value
  * the register holds, the unit must agree with the reference (asserted for
  * `strict` systems); against the coordinate the application gave, the
@@ -138,12 +149,8 @@ static void wrap_sweep(const char *name, bool strict, unsigned n)
    for (unsigned w = 0; w < TEX_WRAP_COUNT; w++)
       for (unsigned f = 0; f < 2; f++)
          for (unsigned si = 0; si < sizeof(sizes) / sizeof(sizes[0]); si++) {
-            struct tex_view_desc v;
-            struct tex_sampler_desc s;
             struct tex_unit u;
-            view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, sizes[si], 1, 1);
-            samp_init(&s, (enum tex_wrap)w, (enum tex_filter)f);
-            tex_unit_bind(&u, ns, &v, &s, &st);
+            bind_1d(&u, ns, sizes[si], (enum tex_wrap)w, (enum tex_filter)f);
             for (unsigned k = 0; k < n; k++) {
                const float c = (float)rand_coord();
                bool wrong_orig;
@@ -171,12 +178,8 @@ static void wrap_exact_dfx24(void)
    for (unsigned w = 0; w < TEX_WRAP_COUNT; w++)
       for (unsigned f = 0; f < 2; f++)
          for (unsigned si = 0; si < 5; si++) {
-            struct tex_view_desc v;
-            struct tex_sampler_desc s;
             struct tex_unit u;
-            view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, sizes[si], 1, 1);
-            samp_init(&s, (enum tex_wrap)w, (enum tex_filter)f);
-            tex_unit_bind(&u, ns, &v, &s, &st);
+            bind_1d(&u, ns, sizes[si], (enum tex_wrap)w, (enum tex_filter)f);
             for (int e = -8; e <= 20; e++)
                for (unsigned k = 0; k < 40; k++) {
                   /* 15 significant bits fit any digit alignment of a
@@ -785,12 +788,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
       memcpy(&c, &word[0], sizeof(c));
       if (!isfinite(c) || fabsf(c) >= 0x1p24f)
          return 0;
-      struct tex_view_desc v;
-      struct tex_sampler_desc s;
       struct tex_unit u;
-      view_1level(&v, TEX_TARGET_1D, TEX_FMT_RGBA8, NULL, texels, 1, 1);
-      samp_init(&s, w, (enum tex_filter)f);
-      tex_unit_bind(&u, ns, &v, &s, &st);
+      bind_1d(&u, ns, texels, w, (enum tex_filter)f);
       bool wrong_orig;
       address_matches(&u, ns, w, f, texels, c, true, &wrong_orig);
    }
@@ -799,9 +798,54 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
    return 0;
 }
 #else
+/* Coordinates in [-1, 0) a hair below and above each texel boundary, under
+ * REPEAT and MIRRORED_REPEAT: the fraction 1 + c would round to the
+ * register's coarser grid near 1 and cross the boundary (a libFuzzer
+ * finding: dfx24, 64 texels, c = -0.0156265628 sampled texel 63, not 62;
+ * tests/fuzz/corpus/tex/repeat-negative-fraction).  Both number systems
+ * must agree with the reference on every one. */
+static void negative_fractions(void)
+{
+   static const int sizes[] = { 3, 64, 100, 4096 };
+   static const enum tex_wrap wraps[] = { TEX_WRAP_REPEAT, TEX_WRAP_MIRROR_REPEAT };
+   static const char *const systems[] = { "dfx24", "float" };
+   unsigned long checked = 0, bad = 0;
+   for (unsigned n = 0; n < 2; n++) {
+      const struct numsys *ns = numsys_by_name(systems[n]);
+      for (unsigned w = 0; w < 2; w++)
+         for (unsigned f = 0; f < 2; f++)
+            for (unsigned si = 0; si < sizeof(sizes) / sizeof(sizes[0]); si++) {
+               struct tex_unit u;
+               bind_1d(&u, ns, sizes[si], wraps[w], (enum tex_filter)f);
+               for (int k = 1; k <= sizes[si]; k++) {
+                  const float b = (float)(-(double)k / sizes[si]) - (f ? 0.5f / sizes[si] : 0);
+                  /* below the boundary by 0.55 to 0.95 of dfx24's grid near 1 (2^-19):
+                   * beyond the reference's tie allowance (2^-14 texel) where the
+                   * texture has more than about 60 texels */
+                  float near[6];
+                  for (unsigned j = 0; j < 5; j++)
+                     near[j] = (float)(b - (0.55 + 0.1 * j) * 0x1p-19);
+                  near[5] = nextafterf(b, 0);
+                  for (unsigned j = 0; j < 6; j++) {
+                     if (!(near[j] >= -1 && near[j] < 0))
+                        continue;
+                     bool wrong_orig;
+                     bad += !address_matches(&u, ns, wraps[w], f, sizes[si], near[j], true,
+                                             &wrong_orig);
+                     checked++;
+                  }
+               }
+            }
+   }
+   printf("  coordinates in [-1, 0) beside texel boundaries: %lu checked, %lu wrong\n",
+          checked, bad);
+   CHECK(checked > 30000, "only %lu checked", checked);
+}
+
 int main(void)
 {
    wrap_exact_dfx24();
+   negative_fractions();
    printf("address sweep, 8 wraps x 2 filters x 8 sizes x 2000 coordinates in [-2^20, 2^20]:\n");
    wrap_sweep("dfx24", true, 2000);
    wrap_sweep("float", true, 2000);
