@@ -99,7 +99,7 @@ ratio() {   # a / b with two decimals, or n/a
         i=$((i + 1))
     done
 } > "$out/chart.txt"
-"$bin/fp-chart" "$out/chart.txt" "$out/time-vs-error.png" --size 640x400 || echo "bench: no chart (fp-chart failed)" >&2
+"$root/tools/fp-plot" "$out/chart.txt" "$out/time-vs-error.png" --size 640x400 || echo "bench: no chart (fp-plot failed)" >&2
 
 if [ $doc = 1 ]; then
     mkdir -p "$root/docs/img"

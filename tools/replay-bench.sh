@@ -207,7 +207,7 @@ if [ "$nscenes" -gt 0 ]; then
 fi
 
 # the chart: replay time (log) against mean error, one point per configuration
-chart=$root/build/std/tools/fp-chart
+chart=$root/tools/fp-plot
 if [ -x "$chart" ]; then
     {
         echo "title replay time against error"

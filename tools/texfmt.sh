@@ -58,7 +58,7 @@ case $scale in ''|*[!0-9.]*) echo "texfmt.sh: bad --repeat-scale '$scale'" >&2; 
 persp=$build/tools/fp-persp
 compare=$build/tools/fp-compare
 thumb=$build/tools/fp-thumb
-chart=$build/tools/fp-chart
+chart=$root/tools/fp-plot        # matplotlib
 for b in "$persp" "$compare" "$thumb" "$chart"; do
     [ -x "$b" ] || { echo "texfmt.sh: $b is not built (meson in $build, or --build-dir)" >&2; exit 2; }
 done
