@@ -52,8 +52,7 @@ struct fr_edge {
    int64_t j_end;              /* last scan line this edge is stepped to */
 
    int64_t x, rem, dy;         /* X register and Bresenham error term */
-   int64_t step, step_rem;     /* dx/dy register and its remainder */
-   int64_t lit_step;           /* walk=literal: the dx/dy register on X's grid */
+   int64_t step, step_rem;     /* dx/dy register (on X's grid) and its remainder */
 
    int64_t fix[FR_MAX_FIX], fix_step[FR_MAX_FIX];
    float flt[FR_MAX_FLT], flt_step[FR_MAX_FLT];

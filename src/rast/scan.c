@@ -54,10 +54,11 @@ static void literal_start(struct rast_context *rc, struct rast_front *fr, struct
       /* counted where the slope is used, as the exact walk counts it */
       q = fx_sat(prof->dxdy, q, steps || j > j0 ? &rc->stats.sat[RAST_REG_DXDY] : &none);
    }
-   e->lit_step = nd >= nxy ? q >> (nd - nxy) : q * (INT64_C(1) << (nxy - nd));
+   e->step = nd >= nxy ? q >> (nd - nxy) : q * (INT64_C(1) << (nxy - nd));
+   e->step_rem = 0;
    const int64_t t0 = j0 * fr->S + fr->H - e->ya;
    const int64_t x0 = e->xa + floor_div(dx * t0, e->dy, &rem);
-   e->x = fx_sat(prof->xy, x0 + (j - j0) * e->lit_step, &rc->stats.sat[RAST_REG_XY]);
+   e->x = fx_sat(prof->xy, x0 + (j - j0) * e->step, &rc->stats.sat[RAST_REG_XY]);
    e->rem = 0;
 }
 
@@ -81,12 +82,9 @@ static void edge_start(struct rast_context *rc, struct rast_front *fr,
    } else {
       e->x = fx_add(prof->xy, e->xa, floor_div(dx * t, e->dy, &rem), &rc->stats.sat[RAST_REG_XY]);
       e->rem = rem;
+      e->step = e->step_rem = 0;
    }
-
-   e->step = e->step_rem = 0;
-   if (prof->literal_walk) {
-      e->step = e->lit_step;
-   } else if (steps) {
+   if (steps && !prof->literal_walk) {
       int64_t q = floor_div(dx * S, e->dy, &rem);
       /* The dx/dy register; a clamped slope loses the exact walk. */
       if (q > fx_max(prof->dxdy) || q < fx_min(prof->dxdy)) {
