@@ -7,11 +7,17 @@
 #   FIXPIPE_GALLIUM_DRIVERS  default swrast,fixpipe ("swrast" alone warms ccache before
 #                            the driver exists)
 #   FIXPIPE_MESA_BUILDTYPE   default release
+#   FIXPIPE_SANITIZE         e.g. address,undefined: a second build (mesa-build-asan, installed
+#                            in prefix-asan) whose fixpipe sources (driver and model) are
+#                            compiled with -fsanitize=...; Mesa's own stay as they are, so
+#                            ccache serves them from the first build (./fixpipe run --sanitize)
 set -eu
 REPO=$(cd "$(dirname "$0")/.." && pwd)
 WORK=${FIXPIPE_WORK:-$REPO/.fixpipe}
-BUILD=$WORK/mesa-build
-PREFIX=$WORK/prefix
+SANITIZE=${FIXPIPE_SANITIZE:-}
+TAG=${SANITIZE:+-asan}
+BUILD=$WORK/mesa-build$TAG
+PREFIX=$WORK/prefix$TAG
 DRIVERS=${FIXPIPE_GALLIUM_DRIVERS:-swrast,fixpipe}
 BUILDTYPE=${FIXPIPE_MESA_BUILDTYPE:-release}
 
@@ -49,9 +55,10 @@ esac
 # their table shrinks from 2.6 MB, read by every process that loads the driver, to kilobytes.
 # mesa/llvm-ctors.ld keeps LLVM's static constructors out of .init_array: gallivm runs them
 # at the first compiled shader (mesa/patches/0006), not the loader in every process.
+NATIVE=$WORK/llvm$TAG.ini
 LINK_ARGS=-Wl,-z,pack-relative-relocs,-T,$REPO/mesa/llvm-ctors.ld
 OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true
- --native-file=$WORK/llvm.ini -Dllvm=enabled -Dshared-llvm=disabled -Dshader-cache=enabled
+ --native-file=$NATIVE -Dllvm=enabled -Dshared-llvm=disabled -Dshader-cache=enabled
  -Dc_link_args=$LINK_ARGS -Dcpp_link_args=$LINK_ARGS
  -Dplatforms=x11 -Dgallium-drivers=$DRIVERS -Dvulkan-drivers=
  -Dglx=dri -Dosmesa=true -Degl=enabled -Dgles1=disabled -Dgles2=enabled
@@ -60,8 +67,10 @@ OPTIONS="--prefix=$PREFIX --libdir=lib --buildtype=$BUILDTYPE -Db_ndebug=true
  -Dgallium-omx=disabled -Dgallium-opencl=disabled -Dgallium-nine=false
  -Dbuild-tests=false -Dvalgrind=disabled -Dlibunwind=disabled -Dlmsensors=disabled"
 # shellcheck disable=SC2086,SC2116  # one line of words
-sed "s#@REPO@#$REPO#g" "$REPO/mesa/llvm.ini" > "$WORK/llvm.ini"
-stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS) $(cat "$WORK/llvm.ini" "$REPO/mesa/llvm-config" "$REPO/mesa/llvm-ctors.ld")"
+sed "s#@REPO@#$REPO#g" "$REPO/mesa/llvm.ini" > "$NATIVE"
+# src/meson.build reads it with meson.get_external_property(): Mesa has no option of ours
+[ -z "$SANITIZE" ] || printf "[properties]\nfixpipe_sanitize = '%s'\n" "$SANITIZE" >> "$NATIVE"
+stamp="$(cat "$SRC/.fixpipe-stamp") $(echo $OPTIONS) $(cat "$NATIVE" "$REPO/mesa/llvm-config" "$REPO/mesa/llvm-ctors.ld")"
 
 if [ ! -f "$BUILD/.fixpipe-stamp" ] || [ "$(cat "$BUILD/.fixpipe-stamp")" != "$stamp" ]; then
     rm -f "$BUILD/.fixpipe-stamp"
@@ -69,9 +78,9 @@ if [ ! -f "$BUILD/.fixpipe-stamp" ] || [ "$(cat "$BUILD/.fixpipe-stamp")" != "$s
     [ -f "$BUILD/build.ninja" ] && wipe=--wipe
     echo "fixpipe: configuring Mesa in $BUILD" >&2
     # shellcheck disable=SC2086  # OPTIONS is a word list
-    if ! meson setup $wipe "$BUILD" "$SRC" $OPTIONS > "$WORK/mesa-configure.log" 2>&1; then
-        tail -n 30 "$WORK/mesa-configure.log" >&2
-        echo "fixpipe: Mesa configure failed, full log: $WORK/mesa-configure.log" >&2
+    if ! meson setup $wipe "$BUILD" "$SRC" $OPTIONS > "$WORK/mesa-configure$TAG.log" 2>&1; then
+        tail -n 30 "$WORK/mesa-configure$TAG.log" >&2
+        echo "fixpipe: Mesa configure failed, full log: $WORK/mesa-configure$TAG.log" >&2
         exit 1
     fi
     echo "$stamp" > "$BUILD/.fixpipe-stamp"
@@ -81,22 +90,24 @@ fi
 start=$(date +%s)
 if [ -t 1 ]; then
     ninja -C "$BUILD" || { echo "fixpipe: Mesa build failed" >&2; exit 1; }
-elif ! ninja -C "$BUILD" > "$WORK/mesa-build.log" 2>&1; then
+elif ! ninja -C "$BUILD" > "$WORK/mesa-build$TAG.log" 2>&1; then
     # the error messages, without ninja's one-line compiler commands
-    grep -A25 -m3 '^FAILED' "$WORK/mesa-build.log" | grep -Ev '^(ccache )?(cc|gcc|c\+\+|g\+\+) ' >&2 \
-        || tail -n 40 "$WORK/mesa-build.log" >&2
-    echo "fixpipe: Mesa build failed, full log: $WORK/mesa-build.log" >&2
+    grep -A25 -m3 '^FAILED' "$WORK/mesa-build$TAG.log" | grep -Ev '^(ccache )?(cc|gcc|c\+\+|g\+\+) ' >&2 \
+        || tail -n 40 "$WORK/mesa-build$TAG.log" >&2
+    echo "fixpipe: Mesa build failed, full log: $WORK/mesa-build$TAG.log" >&2
     exit 1
 fi
-if ! meson install -C "$BUILD" --no-rebuild --only-changed --quiet > "$WORK/mesa-install.log" 2>&1; then
-    tail -n 20 "$WORK/mesa-install.log" >&2
-    echo "fixpipe: Mesa install failed, full log: $WORK/mesa-install.log" >&2
+if ! meson install -C "$BUILD" --no-rebuild --only-changed --quiet > "$WORK/mesa-install$TAG.log" 2>&1; then
+    tail -n 20 "$WORK/mesa-install$TAG.log" >&2
+    echo "fixpipe: Mesa install failed, full log: $WORK/mesa-install$TAG.log" >&2
     exit 1
 fi
 # `./fixpipe run --driver llvmpipe` keeps Debian's Mesa but has no libOSMesa there:
 # a directory with ours alone (its llvmpipe is Debian's, same version and LLVM).
-mkdir -p "$WORK/osmesa-only"
-ln -sfn "$PREFIX/lib/libOSMesa.so.8" "$WORK/osmesa-only/libOSMesa.so.8"
+if [ -z "$SANITIZE" ]; then
+    mkdir -p "$WORK/osmesa-only"
+    ln -sfn "$PREFIX/lib/libOSMesa.so.8" "$WORK/osmesa-only/libOSMesa.so.8"
+fi
 # (ninja always re-runs git_sha1.h and the devenv links: cheap, and nothing follows from them)
-echo "fixpipe: Mesa ($DRIVERS) ready in $(( $(date +%s) - start )) s:" \
+echo "fixpipe: Mesa ($DRIVERS${SANITIZE:+, fixpipe with -fsanitize=$SANITIZE}) ready in $(( $(date +%s) - start )) s:" \
      "libs in $PREFIX/lib, DRI driver in $PREFIX/lib/dri" >&2

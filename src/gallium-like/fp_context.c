@@ -91,7 +91,8 @@ static void fp_print_stats(const struct fp_context *fp)
       fprintf(stderr, "  saturation %-5s high %" PRIu64 " low %" PRIu64 "\n",
               class_names[i], st->sat[i].high, st->sat[i].low);
    fprintf(stderr, "  triangles %" PRIu64 " culled %" PRIu64 " lines %" PRIu64
-           " points %" PRIu64 "\n", st->triangles, st->culled, st->lines, st->points);
+           " points %" PRIu64 " dropped for a non-finite position %" PRIu64 "\n",
+           st->triangles, st->culled, st->lines, st->points, st->nonfinite);
    fprintf(stderr, "  quads %" PRIu64 " pixels covered %" PRIu64 " shaded %" PRIu64
            " samples passed %" PRIu64 "\n", st->quads, st->pixels_covered,
            st->pixels_shaded, st->samples_passed);

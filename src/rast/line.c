@@ -51,6 +51,10 @@ bool rast_line_counted(struct rast_context *rc, float dx, float dy)
 
 void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
+   if (!rast_position_finite(rc, v1) || !rast_position_finite(rc, v2)) {
+      rc->stats.nonfinite++;
+      return;
+   }
    if (!rast_queue(rc, RAST_PRIM_LINE, v1, v2, NULL))
       rast_draw_line(rc, v1, v2);
 }

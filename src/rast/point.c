@@ -46,6 +46,10 @@ static inline int64_t grid_to_xy(struct rast_context *rc, const struct rast_fron
 
 void rast_point(struct rast_context *rc, const float (*v)[4])
 {
+   if (!rast_position_finite(rc, v)) {
+      rc->stats.nonfinite++;
+      return;
+   }
    if (!rast_queue(rc, RAST_PRIM_POINT, v, NULL, NULL))
       rast_draw_point(rc, v);
 }
@@ -68,7 +72,11 @@ void rast_point_pass(struct rast_context *rc, const float (*v)[4])
 
    float size = rs->point_size_per_vertex && rc->vl.has_psize ? v[rc->vl.psize_slot][0]
                                                               : rs->point_size;
-   if (size > RAST_MAX_POINT_SIZE)
+   /* GL's range [1, max]; a NaN size (the shader's gl_PointSize) is the
+    * smallest, as llvmpipe draws it, and +inf the largest */
+   if (!(size >= 1.0f))
+      size = 1.0f;
+   else if (size > RAST_MAX_POINT_SIZE)
       size = RAST_MAX_POINT_SIZE;
    rc->stats.points++;
 

@@ -313,6 +313,7 @@ struct rast_shader {
 struct rast_stats {
    struct fx_sat sat[RAST_REG_COUNT];
    uint64_t triangles, culled, lines, points;
+   uint64_t nonfinite;               /* primitives dropped for a NaN or infinite position */
    uint64_t quads, pixels_covered, pixels_shaded;
    uint64_t samples_passed;          /* for occlusion queries */
    /* Range events of the texture path's number system (rast_set_texfmt):
@@ -404,7 +405,9 @@ void rast_line(struct rast_context *rc, const float (*v0)[4], const float (*v1)[
 /* A point: the square (or, without point_quad_rasterization, GL 2.1's
  * whole-pixel point) of the vertex's or the state's size, as llvmpipe
  * builds it, every input constant except the point_coord_mask varyings.  Sizes
- * above RAST_MAX_POINT_SIZE draw at that size. */
+ * above RAST_MAX_POINT_SIZE draw at that size, below 1 (and NaN) at 1.
+ * Primitives with a non-finite position (NaN, inf in x, y, z, 1/w) are dropped
+ * and counted in rast_stats.nonfinite. */
 #define RAST_MAX_POINT_SIZE 255.0f
 void rast_point(struct rast_context *rc, const float (*v0)[4]);
 

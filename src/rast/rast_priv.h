@@ -86,6 +86,19 @@ static inline int64_t rast_det(const int64_t *X, const int64_t *Y)
    return (X[0] - X[2]) * (Y[1] - Y[2]) - (Y[0] - Y[2]) * (X[1] - X[2]);
 }
 
+/* Seed 004 leaves input that is not a number open; the model's rule, as D3D's
+ * clipper has it: a primitive with a vertex whose position after the divide
+ * (window x, y, z or 1/w) is NaN or infinite is dropped before the cull stage
+ * and counted in rast_stats.nonfinite.  Past the divide an infinity is no
+ * longer a limit but an overflow, and a NaN has no place on the grid: any
+ * picture drawn from either would be the conversion's, not the primitive's.
+ * (A clip-space w of +inf divides to a finite 0 and is drawn.) */
+static inline bool rast_position_finite(const struct rast_context *rc, const float (*v)[4])
+{
+   const float *p = v[rc->vl.pos_slot];
+   return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]) && isfinite(p[3]);
+}
+
 /* A primitive's counters: culled (edge-on, zero length, or its face
  * culled) or drawn; false when culled.  setup.c, line.c. */
 bool rast_triangle_counted(struct rast_context *rc, int64_t det, bool *front);

@@ -316,6 +316,11 @@ static void tri_sections(struct rast_front *fr)
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],
                    const float (*v1)[4], const float (*v2)[4])
 {
+   if (!rast_position_finite(rc, v0) || !rast_position_finite(rc, v1) ||
+       !rast_position_finite(rc, v2)) {
+      rc->stats.nonfinite++;
+      return;
+   }
    if (!rast_queue(rc, RAST_PRIM_TRIANGLE, v0, v1, v2))
       rast_draw_triangle(rc, v0, v1, v2);
 }

@@ -121,15 +121,16 @@ static void point(float x, float y, float size)
    rast_point(t.rc, T_V(vert));
 }
 
-/* Coverage of one point against the reference; returns the mismatches. */
-static unsigned check_cover(float x, float y, float size)
+/* Coverage of one point of the given size against the reference's point
+ * of ref_size; returns the mismatches. */
+static unsigned check_cover_as(float x, float y, float size, float ref_size)
 {
    unsigned bad = 0;
    uint64_t n = 0;
    point(x, y, size);
    for (int j = (int)y - 140; j <= (int)y + 140; j++) {
       for (int i = (int)x - 140; i <= (int)x + 140; i++) {
-         bool ref = ref_covered(i, j, x, y, rs.point_size_per_vertex ? size : rs.point_size,
+         bool ref = ref_covered(i, j, x, y, rs.point_size_per_vertex ? ref_size : rs.point_size,
                                 rs.point_quad_rasterization, rs.half_pixel_center,
                                 rs.bottom_edge_rule);
          bool got = i >= 0 && j >= 0 && i < W && j < H &&
@@ -141,6 +142,11 @@ static unsigned check_cover(float x, float y, float size)
    bad += t.count != n;
    CHECK(t.dups == 0 && t.badquad == 0 && t.outside == 0, "point emitted a bad quad");
    return bad;
+}
+
+static unsigned check_cover(float x, float y, float size)
+{
+   return check_cover_as(x, y, size, size);
 }
 
 static void layout(void)
@@ -186,6 +192,20 @@ static unsigned coverage_run(const char *profile)
             fprintf(stderr, "%s cfg %u point (%.9g, %.9g) size %g: %u pixels differ\n",
                     profile, cfg, x, y, size, b);
          bad += b;
+         points++;
+      }
+   }
+   /* sizes outside GL's range [1, max] (gl_PointSize is the shader's): NaN
+    * and below 1 drawn as 1, +inf and beyond as the largest */
+   static const float odd[] = { NAN, -INFINITY, -1.0f, 1e-30f, INFINITY, 1e30f };
+   for (unsigned cfg = 0; cfg < 2; cfg++) {
+      set_raster(cfg == 0, true, false, false, 1.0f, true);
+      for (unsigned i = 0; i < 6; i++) {
+         float x = (float)(t_rand() * W), y = (float)(t_rand() * H);
+         float as = isnan(odd[i]) || odd[i] < 1.0f ? 1.0f : (float)RAST_MAX_POINT_SIZE;
+         unsigned b = check_cover_as(x, y, odd[i], as);
+         CHECK(b == 0, "%s point of size %g: %u pixels differ from one of size %g", profile,
+               (double)odd[i], b, (double)as);
          points++;
       }
    }

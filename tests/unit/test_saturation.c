@@ -4,6 +4,7 @@
  * nothing wraps around (a huge positive X never turns into a small or
  * negative one, a Z above full scale never reads as a small depth).
  */
+#include <math.h>
 #include <string.h>
 #include "tutil.h"
 #include "fixed/fx.h"
@@ -131,6 +132,42 @@ int main(void)
       t_tri(t.rc, v[0], v[1], v[2]);
       /* inside, colour runs from 1 down to -1: no saturation needed */
       CHECK(cmax <= 1.0f + 1e-5f && cmin >= -1.0f - 1e-5f, "colour walk %g..%g", cmin, cmax);
+   }
+
+   /* A position that is not finite (NaN, an infinity in x, y, z or 1/w) is
+    * no overflow to saturate but a primitive to drop, counted apart from
+    * the saturations: triangles, lines and points (rast_position_finite). */
+   {
+      const float bad[] = { NAN, INFINITY, -INFINITY };
+      uint64_t dropped = 0;
+      for (unsigned b = 0; b < 3; b++)
+         for (unsigned k = 0; k < 3; k++)
+            for (unsigned c = 0; c < 4; c++) {
+               float v[3][2][4] = {
+                  { { 10, 10, 0.5f, 1 }, { 0.5f, 0.5f, 0.5f, 1 } },
+                  { { 300, 20, 0.5f, 1 }, { 0.5f, 0.5f, 0.5f, 1 } },
+                  { { 40, 250, 0.5f, 1 }, { 0.5f, 0.5f, 0.5f, 1 } },
+               };
+               v[k][0][c] = bad[b];
+               const uint64_t n0 = rast_get_stats(t.rc)->nonfinite;
+               const uint64_t s0 = t_sat_total(rast_get_stats(t.rc));
+               reset_box();
+               t_begin(&t);
+               t_tri(t.rc, v[0], v[1], v[2]);
+               t_line(t.rc, v[k], v[(k + 1) % 3]);
+               rast_point(t.rc, T_V(v[k]));
+               CHECK(t.count == 0, "%g in coordinate %u of vertex %u: %llu pixels drawn",
+                     (double)bad[b], c, k, (unsigned long long)t.count);
+               CHECK(rast_get_stats(t.rc)->nonfinite == n0 + 3 &&
+                     t_sat_total(rast_get_stats(t.rc)) == s0,
+                     "%g in coordinate %u of vertex %u: dropped %llu of 3, saturations %llu",
+                     (double)bad[b], c, k,
+                     (unsigned long long)(rast_get_stats(t.rc)->nonfinite - n0),
+                     (unsigned long long)(t_sat_total(rast_get_stats(t.rc)) - s0));
+               dropped += rast_get_stats(t.rc)->nonfinite - n0;
+            }
+      CHECK(dropped == 3 * 3 * 4 * 3, "non-finite primitives dropped: %llu",
+            (unsigned long long)dropped);
    }
    t_fini(&t);
 
