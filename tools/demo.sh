@@ -46,7 +46,8 @@ status=0
 rendered=""
 echo "fixpipe demo: scene '$scene', $size, $frames frames per driver; output in $out"
 echo
-printf '%-10s %-40s %12s %12s\n' driver renderer "first frame" "per frame"
+printf '%-10s %-40s %12s %12s   %s\n' driver renderer "first frame" "per frame" \
+    "modeled chip (docs/cycles.md)"
 for d in $drivers; do
     log=$out/$d.log
     if fp_run_driver "$d" "$demo" --scene "$scene" --size "$size" --frames "$frames" \
@@ -60,7 +61,8 @@ for d in $drivers; do
             status=1
             continue
         fi
-        printf '%-10s %-40.40s %9s ms %9s ms\n' "$d" "$r" "$first" "${per:--}"
+        modeled=$(sed -n 's/^modeled_cycles_per_frame: \([0-9]*\) modeled_ms_per_frame: \([0-9.]*\) clock_mhz: \([0-9]*\)/\2 ms a frame (\1 cycles at \3 MHz)/p' "$log")
+        printf '%-10s %-40.40s %9s ms %9s ms   %s\n' "$d" "$r" "$first" "${per:--}" "${modeled:--}"
         rendered="$rendered $d"
     else
         printf '%-10s FAILED: %s\n' "$d" "$(tail -n 1 "$log")"

@@ -7,6 +7,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "fp_gl.h"
+#include "fp_perfmon.h"
 #include "fp_png.h"
 #include "fp_scenes.h"
 
@@ -75,6 +76,29 @@ static void draw_demo_frame(void *ctx)
    draw_frame(f->s, f->which, f->w, f->h);
 }
 
+/* One more frame, measured by the modeled chip's cycle model through
+ * GL_AMD_performance_monitor (fixpipe's driver queries, docs/cycles.md):
+ * the time the chip would take at its clock, beside the host's. */
+static void modeled_frame(struct demo_frame *df)
+{
+   static const char *const names[] = { "fp-cycles", "fp-modeled-us" };
+   const char *why = "";
+   struct fp_perfmon *m = fp_perfmon_open(names, 2, &why);
+   if (!m) {
+      printf("modeled: none (%s)\n", why);
+      return;
+   }
+   double v[2];
+   fp_perfmon_begin(m);
+   draw_demo_frame(df);
+   if (fp_perfmon_end(m, v) && v[1] > 0)
+      printf("modeled_cycles_per_frame: %.0f modeled_ms_per_frame: %.3f clock_mhz: %.0f\n",
+             v[0], v[1] / 1000.0, v[0] / v[1]);
+   else
+      printf("modeled: no result\n");
+   fp_perfmon_close(m);
+}
+
 int main(int argc, char **argv)
 {
    enum scene which = SCENE_ALL;
@@ -127,6 +151,7 @@ int main(int argc, char **argv)
    fp_gl_check("drawing");
    printf("scene: %s %dx%d\n", scene_names[which], w, h);
    fp_print_frame_times(&times);
+   modeled_frame(&df);
 
    if (out) {
       fp_gl_write_png(&g, out);

@@ -3,8 +3,12 @@
  * (vertex shading, clipping, divide, viewport, smooth points and lines) and
  * the tgsi_exec machine that runs fragment shaders for the model's quads.
  */
+#include <errno.h>
+#include <stdatomic.h>
 #include <stdio.h>
+#include <string.h>
 #include <inttypes.h>
+#include <sys/stat.h>
 
 #include "util/u_memory.h"
 #include "util/u_inlines.h"
@@ -19,6 +23,7 @@
 
 #include "fp_context.h"
 #include "fixed/numsys.h"
+#include "rast/cycles.h"
 #include "rast/lanes.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
@@ -35,6 +40,30 @@ static const struct rast_stats *fp_stats(const struct fp_context *fp)
    for (unsigned t = 1; t < fp->num_threads; t++)
       fp_tgsi_sampler_flush_stats(fp->fs_thread[t].sampler, fp->rast);
    return rast_get_stats(fp->rast);
+}
+
+/* FIXPIPE_VECTORS=DIR: the first context of the process to draw writes the
+ * scan-converter unit's vectors (docs/vectors.md; programs often make a
+ * context only to ask it questions); DIR is made if missing. */
+void fp_vectors_start(struct fp_context *fp)
+{
+   static atomic_flag taken = ATOMIC_FLAG_INIT;
+   const struct fp_env_vectors *v = fp_env_vectors();
+   fp->vectors_pending = false;
+   if (!v->dir[0] || atomic_flag_test_and_set(&taken))
+      return;
+   char err[640];
+   if (mkdir(v->dir, 0777) != 0 && errno != EEXIST)
+      fprintf(stderr, "fixpipe: FIXPIPE_VECTORS: cannot make %s: %s\n", v->dir, strerror(errno));
+   else if (!rast_vectors_open(fp->rast, v->dir, v->first, v->last, err, sizeof(err)))
+      fprintf(stderr, "fixpipe: FIXPIPE_VECTORS: %s; no vectors written\n", err);
+   else
+      rast_vectors_frame(fp->rast, fp->frames);
+}
+
+const struct rast_stats *fp_context_stats(struct fp_context *fp)
+{
+   return fp_stats(fp);
 }
 
 LLVMContextRef fp_llvm_context(struct fp_context *fp)
@@ -64,6 +93,7 @@ static void fp_print_interp_error(const struct rast_stats *st, const char *inden
 void fp_context_frame_presented(struct fp_context *fp)
 {
    fp->frames++;
+   rast_vectors_frame(fp->rast, fp->frames);
    if (!fp->stats_every || fp->frames % fp->stats_every || !fp->rast)
       return;
    const struct rast_stats *st = fp_stats(fp);
@@ -73,6 +103,29 @@ void fp_context_frame_presented(struct fp_context *fp)
            st->quads, st->persp_quads, st->skip_persp_w, st->persp_comp_quads,
            st->skip_persp_comp, st->tex_lod_quads, st->skip_tex_lod, st->tex_quads,
            st->skip_tex_axes);
+}
+
+/* The cycle model's estimate of the work so far (docs/cycles.md): the line
+ * ./fixpipe demo shows beside the host's time. */
+static void fp_print_cycles(const struct fp_context *fp, const struct rast_stats *st)
+{
+   const struct rast_cycle_params *p = fp_env_cycles();
+   struct rast_cycles c;
+   char params[160];
+   rast_cycles_estimate(p, st, &c);
+   rast_cycle_params_format(p, params, sizeof(params));
+   fprintf(stderr, "  cycles (%s): set-up and scan %" PRIu64 ", interpolators %" PRIu64
+           ", texture %" PRIu64 ", back end %" PRIu64 "\n", params, c.setup + c.scan, c.interp,
+           c.texture, c.backend);
+   const double secs = (double)c.total / (p->clock_mhz * 1e6);
+   if (fp->frames)
+      fprintf(stderr, "  modeled chip: %" PRIu64 " cycles over %lu frames, %.0f a frame: "
+              "%.1f frames/s at %g MHz\n", c.total, fp->frames,
+              (double)c.total / (double)fp->frames,
+              c.total ? (double)fp->frames / secs : 0.0, p->clock_mhz);
+   else
+      fprintf(stderr, "  modeled chip: %" PRIu64 " cycles, %.3f ms at %g MHz\n", c.total,
+              secs * 1e3, p->clock_mhz);
 }
 
 static void fp_print_stats(const struct fp_context *fp)
@@ -93,9 +146,13 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  triangles %" PRIu64 " culled %" PRIu64 " lines %" PRIu64
            " points %" PRIu64 " dropped for a non-finite position %" PRIu64 "\n",
            st->triangles, st->culled, st->lines, st->points, st->nonfinite);
+   fprintf(stderr, "  triangles of type 0 %" PRIu64 ", type 1 %" PRIu64 ", type 2 %" PRIu64
+           "; spans %" PRIu64 "; texels read %" PRIu64 "\n", st->tri_type[0], st->tri_type[1],
+           st->tri_type[2], st->spans, st->texels);
    fprintf(stderr, "  quads %" PRIu64 " pixels covered %" PRIu64 " shaded %" PRIu64
            " samples passed %" PRIu64 "\n", st->quads, st->pixels_covered,
            st->pixels_shaded, st->samples_passed);
+   fp_print_cycles(fp, st);
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64
            "; coordinates rebased (component-primitives) %" PRIu64 "\n",
            fp_env_texfmt()->name, st->tex_sat, st->tex_flush, st->tex_rebased);
@@ -280,6 +337,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    rast_set_texfmt(fp->rast, fp_env_texfmt());
    rast_set_options(fp->rast, fp_env_rast_options());
    rast_set_interp(fp->rast, fp_env_interp());
+   fp->vectors_pending = fp_env_vectors()->dir[0] != '\0';
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
    if (!fp->pipe.stream_uploader)

@@ -151,6 +151,7 @@ struct fp_context {
    bool print_stats;
    struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
+   bool vectors_pending;                /* FIXPIPE_VECTORS: opened at the first draw */
 };
 
 static inline struct fp_context *fp_context(struct pipe_context *p)
@@ -167,6 +168,18 @@ void fp_init_fb_functions(struct fp_context *fp);        /* fp_state_fb.c */
 void fp_init_clear_functions(struct fp_context *fp);     /* fp_clear.c */
 void fp_init_blit_functions(struct fp_context *fp);      /* fp_blit.c */
 void fp_init_query_functions(struct fp_context *fp);     /* fp_query.c */
+/* The model's counters as driver queries (fp_query_driver.c). */
+void fp_init_screen_query_functions(struct pipe_screen *screen);
+bool fp_is_driver_query(unsigned type);
+struct fp_counter_query;
+struct fp_counter_query *fp_counter_query_create(unsigned type);
+void fp_counter_query_begin(struct fp_context *fp, struct fp_counter_query *q);
+void fp_counter_query_end(struct fp_context *fp, struct fp_counter_query *q);
+void fp_counter_query_result(const struct fp_counter_query *q, union pipe_query_result *result);
+/* FIXPIPE_VECTORS (docs/vectors.md): at a context's first draw. */
+void fp_vectors_start(struct fp_context *fp);
+/* Every counter of the model, up to date with what it has drawn. */
+const struct rast_stats *fp_context_stats(struct fp_context *fp);
 void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
 
 /* fp_context.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */

@@ -32,6 +32,8 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
    if (!fp_check_render_cond(fp))
       return;
 
+   if (unlikely(fp->vectors_pending))
+      fp_vectors_start(fp);
    fp_vs_count(fp, (uint64_t)draws[0].count * info->instance_count);
    if (fp->fs_dirty) {
       fp_fs_validate(fp);

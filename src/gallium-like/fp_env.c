@@ -13,6 +13,7 @@
 #include "pipe/p_format.h"
 #include "fp_screen.h"
 #include "fixed/numsys.h"
+#include "rast/cycles.h"
 
 static const struct rast_profile *env_profile;
 static bool env_stats;
@@ -21,6 +22,8 @@ static const struct numsys *env_texfmt;
 static unsigned env_debug;
 static unsigned env_threads;
 static unsigned env_interp;
+static struct rast_cycle_params env_cycles;
+static struct fp_env_vectors env_vectors;
 
 static const struct debug_named_value fp_debug_flags[] = {
    { "nojit", FP_DEBUG_NOJIT,
@@ -131,6 +134,48 @@ static void fp_env_parse(void)
                  "vector, each optionally with :error); using scanline\n", im);
    }
 
+   /* FIXPIPE_VECTORS=DIR[,frames=A-B] (docs/vectors.md) */
+   const char *vec = getenv("FIXPIPE_VECTORS");
+   if (vec && *vec) {
+      char buf[sizeof(env_vectors.dir)];
+      unsigned long a = 0, b = ~0ul;
+      bool ok = strlen(vec) < sizeof(buf);
+      if (ok) {
+         strcpy(buf, vec);
+         char *opt = strchr(buf, ',');
+         if (opt) {
+            *opt++ = '\0';
+            char *end;
+            ok = !strncmp(opt, "frames=", 7);
+            if (ok) {
+               a = strtoul(opt + 7, &end, 10);
+               ok = end != opt + 7 && *end == '-';
+               if (ok) {
+                  const char *bs = end + 1;
+                  b = strtoul(bs, &end, 10);
+                  ok = end != bs && !*end && a <= b;
+               }
+            }
+         }
+         ok = ok && buf[0];
+      }
+      if (ok) {
+         strcpy(env_vectors.dir, buf);
+         env_vectors.first = a;
+         env_vectors.last = b;
+      } else {
+         fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s' (accepted: DIR or "
+                 "DIR,frames=A-B with A <= B, frames counted from 0 by presents); "
+                 "no vectors written\n", vec);
+      }
+   }
+
+   /* FIXPIPE_CYCLES=KEY=VALUE,... over the cycle model's defaults (docs/cycles.md) */
+   const char *cy = getenv("FIXPIPE_CYCLES");
+   char cerr[256];
+   if (!rast_cycle_params_parse(cy, &env_cycles, cerr, sizeof(cerr)))
+      fprintf(stderr, "fixpipe: bad FIXPIPE_CYCLES '%s': %s; using the defaults\n", cy, cerr);
+
    const char *t = getenv("FIXPIPE_TEXFMT");
    env_texfmt = numsys_default();
    if (t && *t) {
@@ -172,7 +217,15 @@ unsigned fp_env_debug(void)
 unsigned fp_env_threads(void)
 {
    util_call_once(&env_once, fp_env_parse);
-   return env_debug & FP_DEBUG_NOTHREADS ? 1 : env_threads;
+   /* vectors are written in the unit's order: one thread */
+   return env_debug & FP_DEBUG_NOTHREADS || env_vectors.dir[0] ? 1 : env_threads;
+}
+
+/* FIXPIPE_VECTORS: its directory ("" when unset or bad) and frame range. */
+const struct fp_env_vectors *fp_env_vectors(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return &env_vectors;
 }
 
 unsigned fp_env_rast_options(void)
@@ -187,6 +240,13 @@ unsigned fp_env_interp(void)
 {
    util_call_once(&env_once, fp_env_parse);
    return env_interp;
+}
+
+/* The cycle model's parameters (rast/cycles.h). */
+const struct rast_cycle_params *fp_env_cycles(void)
+{
+   util_call_once(&env_once, fp_env_parse);
+   return &env_cycles;
 }
 
 /* The texture path's number system: the unit (fp_sampler.c) and the

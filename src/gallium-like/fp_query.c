@@ -1,6 +1,7 @@
 /*
  * Queries: occlusion from the model's samples_passed counter, time from
- * the OS clock.  Rendering is synchronous, so every result is ready.
+ * the OS clock, the model's counters (fp_query_driver.c).  Rendering is
+ * synchronous, so every result is ready.
  */
 #include "util/u_memory.h"
 #include "util/os_time.h"
@@ -12,6 +13,7 @@ struct fp_query {
    unsigned type;
    uint64_t start, end;
    bool active;
+   struct fp_counter_query *counter;   /* a driver query: the model's counters */
 };
 
 static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned type,
@@ -27,17 +29,25 @@ static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned ty
    case PIPE_QUERY_TIME_ELAPSED:
       break;
    default:
-      return NULL;
+      if (!fp_is_driver_query(type))
+         return NULL;
    }
    struct fp_query *q = CALLOC_STRUCT(fp_query);
-   if (q)
-      q->type = type;
+   if (!q)
+      return NULL;
+   q->type = type;
+   if (fp_is_driver_query(type) && !(q->counter = fp_counter_query_create(type))) {
+      FREE(q);
+      return NULL;
+   }
    return (struct pipe_query *)q;
 }
 
 static void fp_destroy_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
    (void)pipe;
+   if (pq)
+      FREE(((struct fp_query *)pq)->counter);
    FREE(pq);
 }
 
@@ -58,10 +68,14 @@ static bool fp_begin_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
    struct fp_context *fp = fp_context(pipe);
    struct fp_query *q = (struct fp_query *)pq;
+   q->active = true;
+   if (q->counter) {
+      fp_counter_query_begin(fp, q->counter);
+      return true;
+   }
    draw_flush(fp->draw);
    q->start = fp_query_now(fp, q->type);
    q->end = q->start;
-   q->active = true;
    return true;
 }
 
@@ -69,9 +83,13 @@ static bool fp_end_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
    struct fp_context *fp = fp_context(pipe);
    struct fp_query *q = (struct fp_query *)pq;
+   q->active = false;
+   if (q->counter) {
+      fp_counter_query_end(fp, q->counter);
+      return true;
+   }
    draw_flush(fp->draw);
    q->end = fp_query_now(fp, q->type);
-   q->active = false;
    return true;
 }
 
@@ -80,6 +98,10 @@ static bool fp_get_query_result(struct pipe_context *pipe, struct pipe_query *pq
 {
    struct fp_query *q = (struct fp_query *)pq;
    (void)pipe; (void)wait;
+   if (q->counter) {
+      fp_counter_query_result(q->counter, result);
+      return true;
+   }
    switch (q->type) {
    case PIPE_QUERY_OCCLUSION_COUNTER:
    case PIPE_QUERY_TIME_ELAPSED:

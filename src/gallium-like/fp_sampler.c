@@ -56,6 +56,7 @@ struct fp_tgsi_sampler {
    uint64_t lod_quads;            /* quads with an implicit or biased LOD */
    uint64_t quads;                /* every quad sampled */
    uint64_t skip_axes;            /* quads addressed per axis (tex_unit.axes_shared) */
+   uint64_t texels;               /* texel reads of the filters (tex_unit.taps) */
    /* made at the unit's first binding: 3.7 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
@@ -295,9 +296,9 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts, struct rast_context *rc)
 {
    tex_stats_to_rast(rc, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads,
-                     ts->skip_axes, ts->quads);
+                     ts->skip_axes, ts->quads, ts->texels);
    ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
-   ts->skip_axes = ts->quads = 0;
+   ts->skip_axes = ts->quads = ts->texels = 0;
 }
 
 /* Range events at once (rare); the LOD counts, one per sample, in batches:
@@ -336,6 +337,7 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
    const bool lod_from_diffs = ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
    ts->lod_quads += n * lod_from_diffs;
    ts->quads += n;
+   ts->texels += n * 4 * u->taps;
    ts->skip_lod += n * (u->lod_skipped && lod_from_diffs);
    if (n == 2)
       tex_unit_sample2(u, q, ctl, rgba);

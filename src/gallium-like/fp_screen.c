@@ -362,6 +362,7 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
    s->base.get_shader_param = fp_get_shader_param;
    s->base.get_paramf = fp_get_paramf;
    s->base.get_timestamp = fp_get_timestamp;
+   fp_init_screen_query_functions(&s->base);
    s->base.is_format_supported = fp_is_format_supported;
    s->base.context_create = fp_create_context;
    s->base.flush_frontbuffer = fp_flush_frontbuffer;

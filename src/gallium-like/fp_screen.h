@@ -35,6 +35,13 @@ bool fp_env_stats(void);
 unsigned long fp_env_stats_frames(void);
 struct numsys;
 const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
+struct rast_cycle_params;
+struct fp_env_vectors {
+   char dir[480];
+   unsigned long first, last;     /* frames presented before, inclusive */
+};
+const struct fp_env_vectors *fp_env_vectors(void);   /* FIXPIPE_VECTORS */
+const struct rast_cycle_params *fp_env_cycles(void);   /* FIXPIPE_CYCLES */
 /* FIXPIPE_DEBUG: flags in Mesa's style (FIXPIPE_DEBUG=help lists them) */
 #define FP_DEBUG_NOJIT   (1u << 0)   /* interpret every shader: tgsi_exec, draw without LLVM */
 #define FP_DEBUG_JITALL  (1u << 1)   /* compile shaders at first use, not once hot */

@@ -14,6 +14,7 @@
  */
 #include <stdlib.h>
 #include "rast/backend_priv.h"
+#include "rast/vectors.h"
 
 static inline struct rast_backend *backend(struct rast_context *rc)
 {
@@ -200,7 +201,16 @@ static void pair_late(struct rast_context *rc, struct rast_quad *q0, struct rast
       late_zs_color(rc, be, q1, &be->out2, kept >> 4);
 }
 
+static void backend_choose(struct rast_context *rc);
+
 void rast_backend_validate(struct rast_context *rc)
+{
+   backend_choose(rc);
+   if (rc->vec)
+      rast_vec_wrap_backend(rc);
+}
+
+static void backend_choose(struct rast_context *rc)
 {
    struct rast_backend *be = backend(rc);
    rc->quad2 = NULL;

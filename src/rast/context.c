@@ -41,6 +41,7 @@ void rast_destroy(struct rast_context *rc)
    if (!rc)
       return;
    rast_set_threads(rc, 1);
+   rast_vectors_close(rc);
    rast_front_destroy(rc);
    rast_backend_destroy(rc);
    free(rc);

@@ -22,6 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include "fixed/fx.h"
 
 #define RAST_MAX_VARYINGS 32
@@ -314,6 +315,13 @@ struct rast_stats {
    struct fx_sat sat[RAST_REG_COUNT];
    uint64_t triangles, culled, lines, points;
    uint64_t nonfinite;               /* primitives dropped for a NaN or infinite position */
+   /* triangles drawn by seed 000's type: 0 flat top or bottom, 1 the middle
+    * vertex left of the long edge, 2 right of it; spans (a primitive's scan
+    * lines with pixels) through the span processor */
+   uint64_t tri_type[3], spans;
+   /* texel reads of the texture unit's filters: 4 pixels a quad times the
+    * taps of the minification filter (1, 2^dims; twice between mip levels) */
+   uint64_t texels;
    uint64_t quads, pixels_covered, pixels_shaded;
    uint64_t samples_passed;          /* for occlusion queries */
    /* Range events of the texture path's number system (rast_set_texfmt):
@@ -395,6 +403,22 @@ enum { RAST_INTERP_MEASURE = 1u << 4 };
 void rast_set_interp(struct rast_context *rc, unsigned mode);
 /* "scanline", "barycentric", "vector"; NULL for another value. */
 const char *rast_interp_name(enum rast_interp_mode mode);
+
+/* RTL test vectors of the scan-converter unit (docs/vectors.md): from now
+ * on, every triangle the unit draws while frames_presented is in
+ * [first, last] (rast_vectors_frame) is written to DIR/scan.in.hex, its
+ * quads to DIR/scan.out.hex, the profile and counts to DIR/scan.txt.  One
+ * thread: the records are in the unit's order.  false with a message if a
+ * file cannot be written.  rast_destroy closes them. */
+bool rast_vectors_open(struct rast_context *rc, const char *dir, unsigned long first,
+                       unsigned long last, char *err, size_t errlen);
+void rast_vectors_frame(struct rast_context *rc, unsigned long frames_presented);
+void rast_vectors_close(struct rast_context *rc);
+/* Replays DIR's vectors through a new context: every quad's bits compared
+ * with the recorded ones; the first differences described on log.  Returns
+ * the mismatches (0: every output bit equal), -1 if the vectors cannot be
+ * read; the triangles and quads replayed in *ntri, *nquads. */
+long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *nquads);
 
 /* Primitives: each vertex is vertex_size float[4] slots. */
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],

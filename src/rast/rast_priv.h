@@ -57,6 +57,11 @@ struct rast_context {
    int64_t org_x, org_y;
    rast_quad_func quad;             /* back end */
    rast_quad2_func quad2;           /* the same on two quads of a primitive; NULL: one by one */
+   /* RTL test vectors (vectors.c): recording or replaying; the quads of the
+    * triangle being scanned go through the wrapper to vec_next_quad */
+   struct rast_vectors *vec;
+   bool vec_tri;
+   rast_quad_func vec_next_quad;
    void *front_priv;                /* setup/scan's own specialised state */
    void *back_priv;                 /* back end's own specialised state */
 };

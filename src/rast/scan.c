@@ -218,6 +218,7 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
             if (fr->sec[cur].r != R) { R = fr->sec[cur].r; edge_start(rc, fr, R, j); }
          }
          record_row(rc, fr, row, L, R);
+         rc->stats.spans += row->xs <= row->xe;
          if (j < L->j_end) edge_step(rc, fr, L);
          if (j < R->j_end) edge_step(rc, fr, R);
       }

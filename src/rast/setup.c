@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "rast/front.h"
+#include "rast/vectors.h"
 
 static void add_comp(struct fr_comp *list, unsigned *n, unsigned var, unsigned chan,
                      unsigned slot)
@@ -285,8 +286,9 @@ static void set_edge(struct rast_front *fr, struct fr_edge *e, unsigned a, unsig
 
 /* Sort by y, classify and split (seed 000, Fig. 4).  The long edge top->bot
  * is one register set used by both halves: at the split it still holds the
- * long edge's x for the first scan line of B (the seed's X_next). */
-static void tri_sections(struct rast_front *fr)
+ * long edge's x for the first scan line of B (the seed's X_next).  Returns
+ * the type: 0 flat top or bottom, 1 middle vertex left, 2 right. */
+static unsigned tri_sections(struct rast_front *fr)
 {
    unsigned top = 0, mid = 1, bot = 2, t;
    if (fr->Y[mid] < fr->Y[top]) { t = top; top = mid; mid = t; }
@@ -311,6 +313,9 @@ static void tri_sections(struct rast_front *fr)
    A->l = mid_left ? ea : lng;  A->r = mid_left ? lng : ea;
    B->l = mid_left ? eb : lng;  B->r = mid_left ? lng : eb;
    fr->nsec = 2;
+   if (fr->Y[top] == fr->Y[mid] || fr->Y[mid] == fr->Y[bot])
+      return 0;
+   return mid_left ? 1 : 2;
 }
 
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],
@@ -382,11 +387,44 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
    rast_setup_rebase(rc, fr, v, 3);
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);
+   if (rc->vec)
+      rast_vec_triangle(rc, fr, front);
    rast_interp_modes_setup(rc, fr, 0, 1, 2);
    tri_gradients(fr);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 2);
    rast_setup_constants(fr, rc->rs.flatshade_first ? v0 : v2);
-   tri_sections(fr);
+   rc->stats.tri_type[tri_sections(fr)]++;
    rast_scan_sections(rc, fr);
+   rc->vec_tri = false;
+}
+
+void rast_vec_replay_triangle(struct rast_context *rc, const struct rast_vec_tri *t)
+{
+   struct rast_front *fr = rast_front_begin(rc, false);
+   /* the recorded pass: its origin and clip (tiles), after validation */
+   rc->org_x = t->org_x;
+   rc->org_y = t->org_y;
+   rc->clip = t->clip;
+   fr->nverts = 3;
+   for (unsigned k = 0; k < 3; k++) {
+      fr->X[k] = t->X[k];
+      fr->Y[k] = t->Y[k];
+   }
+   bool front;
+   if (!rast_triangle_counted(rc, rast_det(fr->X, fr->Y), &front))
+      return;
+   fr->quad[0].front_facing = fr->quad[1].front_facing = front;
+   for (unsigned k = 0; k < 3; k++) {
+      fr->vfix[k][0] = t->Z[k];
+      for (unsigned i = 0; i < fr->ncolor; i++)
+         fr->vfix[k][1 + i] = t->color[i][k];
+      fr->vflt[k][0] = t->oow[k];
+   }
+   rc->vec_tri = true;
+   rast_interp_modes_setup(rc, fr, 0, 1, 2);
+   tri_gradients(fr);
+   rc->stats.tri_type[tri_sections(fr)]++;
+   rast_scan_sections(rc, fr);
+   rc->vec_tri = false;
 }

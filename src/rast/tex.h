@@ -163,6 +163,9 @@ struct tex_unit {
     * specialised quads); NULL: quad twice */
    tex_quad2_fn quad2;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
+   /* texel reads a pixel, for the counters: the minification filter's taps
+    * (1 or 2^dims), twice when it blends two mip levels */
+   unsigned taps;
    /* quad-axes of pairs addressed once per column or row (the lanes' pair
     * functions: s that follows the screen's x, t that follows y), counted
     * here when not NULL; NULL after bind */
@@ -235,7 +238,7 @@ unsigned tex_format_bytes(enum tex_format f);
  * the two axes of all quads it sampled (skip_tex_axes, tex_quads). */
 struct rast_context;
 void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
-                       uint64_t lod_quads, uint64_t skip_axes, uint64_t quads);
+                       uint64_t lod_quads, uint64_t skip_axes, uint64_t quads, uint64_t texels);
 
 /* Pieces of the data path, for tests. */
 int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */

@@ -144,6 +144,8 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
             u->samp.wrap[a] = TEX_WRAP_CLAMP_TO_EDGE;
    }
    u->dims = target_dims(v->target);
+   u->taps = (s->min_filter == TEX_FILTER_LINEAR ? 1u << u->dims : 1u) *
+             (s->mip == TEX_MIP_LINEAR ? 2u : 1u);
 
    for (unsigned f = 0; f < 2; f++) {
       for (unsigned a = 0; a < 3; a++)

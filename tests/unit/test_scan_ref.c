@@ -244,7 +244,7 @@ int main(int argc, char **argv)
       struct tctx t;
       t_init(&t, profiles[pi], TW, TH);
       const bool wide = t.prof->xy.int_bits > 12;
-      const uint64_t n_tris = pi < 2 ? per_cfg : per_cfg / 4;
+      const uint64_t n_tris = pi < 2 ? per_cfg : (per_cfg + 3) / 4;
       for (unsigned cfg = 0; cfg < 8; cfg++) {
          bool half = cfg & 1, bottom = (cfg >> 1) & 1, scissor = (cfg >> 2) & 1;
          struct rast_raster_state rs;

@@ -1,0 +1,95 @@
+#!/bin/sh
+# Inside the modeled hardware (docs/cycles.md, docs/vectors.md), through real programs:
+#   GALLIUM_HUD=help lists every fixpipe query (32);
+#   GALLIUM_HUD with two of them runs glmark2-es2 under Xvfb without error;
+#   fp-demo's modeled frame, read through GL_AMD_performance_monitor, is exactly half the
+#     cycles FIXPIPE_STATS counts for its two identical frames;
+#   piglit's amd_performance_monitor_api and _measure pass on fixpipe;
+#   tools/demo.sh prints the modeled chip's time beside the host's for fixpipe;
+#   FIXPIPE_VECTORS=DIR,frames=1-2 on a trace replay writes vectors that fp-vectors
+#     replays bit-exactly, and with one output bit flipped it fails.
+# One line per check, then "N passed, N failed"; exit 1 on a failure.
+checks=observability
+. "$(dirname "$0")/checks.sh"
+
+run() { "$root/fixpipe" run "$@"; }
+piglit_bin=/usr/lib/x86_64-linux-gnu/piglit/bin
+
+# 1. the HUD's list
+run --xvfb -- env GALLIUM_HUD=help glmark2-es2 -b build:duration=0.2 -s 160x120 \
+    > "$out/hud-help.log" 2>&1
+n=$(grep -oE '^ +fp-[a-z0-9-]+$' "$out/hud-help.log" | sort -u | wc -l)
+if [ "$n" = 32 ] && grep -q '^ *fp-cycles$' "$out/hud-help.log"; then
+    pass "GALLIUM_HUD=help lists the $n fixpipe queries"
+else
+    fail "GALLIUM_HUD=help lists $n fixpipe queries, not 32 (log: $out/hud-help.log)"
+fi
+
+# 2. two queries on the HUD over a real program
+if run --xvfb -- env GALLIUM_HUD=fp-triangles,fp-cycles glmark2-es2 -s 320x240 \
+        -b build:duration=1 -b jellyfish:duration=1 > "$out/hud-run.log" 2>&1 &&
+   grep -q 'glmark2 Score' "$out/hud-run.log" && ! grep -qi 'gallium_hud' "$out/hud-run.log"; then
+    pass "GALLIUM_HUD=fp-triangles,fp-cycles: glmark2-es2 build and jellyfish ran"
+else
+    fail "GALLIUM_HUD=fp-triangles,fp-cycles: $(grep -i 'hud\|error' "$out/hud-run.log" | head -n 1)"
+fi
+
+# 3. the performance monitor against FIXPIPE_STATS
+FIXPIPE_STATS=1 run --no-xvfb -- "$build/tools/fp-demo" --frames 1 --size 128x128 \
+    > "$out/perfmon.log" 2>&1
+frame=$(sed -n 's/^modeled_cycles_per_frame: \([0-9]*\) .*/\1/p' "$out/perfmon.log")
+total=$(sed -n 's/^ *modeled chip: \([0-9]*\) cycles.*/\1/p' "$out/perfmon.log")
+if [ -n "$frame" ] && [ -n "$total" ] && [ "$frame" -gt 0 ] && [ $((2 * frame)) = "$total" ]; then
+    pass "GL_AMD_performance_monitor: fp-cycles $frame a frame, FIXPIPE_STATS $total for two"
+else
+    fail "GL_AMD_performance_monitor: fp-cycles '$frame' a frame, FIXPIPE_STATS '$total' for two"
+fi
+
+# 4. piglit's tests of the extension
+for t in amd_performance_monitor_api amd_performance_monitor_measure; do
+    if timeout 300 env PIGLIT_PLATFORM=surfaceless_egl "$root/fixpipe" run --no-xvfb -- \
+            "$piglit_bin/$t" -auto -fbo > "$out/$t.log" 2>&1 &&
+       grep -q '"result": "pass"' "$out/$t.log"; then
+        pass "piglit $t"
+    else
+        fail "piglit $t: $(tail -n 1 "$out/$t.log")"
+    fi
+done
+
+# 5. the demo's modeled time
+"$root/tools/demo.sh" "$out/demo" --frames 2 --size 128x128 --drivers "fixpipe llvmpipe" \
+    > "$out/demo.log" 2>&1
+line=$(grep -E '^fixpipe {2,}' "$out/demo.log" | head -n 1)
+case $line in
+*"ms a frame ("*" cycles at "*" MHz)"*) pass "demo: $(echo "$line" | tr -s ' ')" ;;
+*) fail "demo prints no modeled time: '$line'" ;;
+esac
+
+# 6. vectors from a trace replay, and a flipped bit
+trace=$root/traces/recorded/glmark2-build-vbo.trace
+rm -rf "$out/vec"
+replayed=no
+if FIXPIPE_VECTORS="$out/vec,frames=1-2" run --xvfb -- eglretrace "$trace" \
+        > "$out/vec-record.log" 2>&1 &&
+   "$build/tools/fp-vectors" "$out/vec" > "$out/vec-replay.log" 2>&1; then
+    pass "vectors of $(basename "$trace") frames 1-2: $(sed 's/^fp-vectors: [^:]*: //' "$out/vec-replay.log")"
+    replayed=yes
+else
+    fail "vectors of $(basename "$trace"): $(tail -n 2 "$out/vec-record.log" "$out/vec-replay.log" | tr '\n' ' ')"
+fi
+if [ $replayed = yes ]; then
+    # bit 0 of the first Z word of quad 100
+    awk '/^\/\/ quad 100$/ { q = NR } q && NR == q + 3 { c = substr($0, 16, 1);
+            n = index("0123456789abcdef", c) - 1; n = n % 2 ? n - 1 : n + 1;
+            $0 = substr($0, 1, 15) substr("0123456789abcdef", n + 1, 1) } { print }' \
+        "$out/vec/scan.out.hex" > "$out/vec/flipped" && mv "$out/vec/flipped" "$out/vec/scan.out.hex"
+    "$build/tools/fp-vectors" "$out/vec" > "$out/vec-flipped.log" 2>&1
+    if grep -q ' 1 differ$' "$out/vec-flipped.log"; then
+        pass "vectors with one output bit flipped: the replay finds that quad"
+    else
+        fail "vectors with one output bit flipped: $(tail -n 1 "$out/vec-flipped.log")"
+    fi
+else
+    fail "no vectors to flip a bit of"
+fi
+checks_end
