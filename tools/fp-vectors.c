@@ -20,20 +20,21 @@ int main(int argc, char **argv)
       fprintf(stderr, "usage: fp-vectors DIR   (the vectors FIXPIPE_VECTORS=DIR wrote)\n");
       return 2;
    }
-   uint64_t tris = 0, quads = 0;
-   long bad = rast_vectors_replay(argv[1], stderr, &tris, &quads);
+   struct rast_vectors_counts n;
+   long bad = rast_vectors_replay(argv[1], stderr, &n);
    if (bad < 0)
       return 2;
-   if (tris == 0) {
+   if (n.triangles == 0) {
       fprintf(stderr, "fp-vectors: %s: no triangle recorded\n", argv[1]);
       return 1;
    }
+   printf("fp-vectors: %s: %" PRIu64 " triangles, %" PRIu64 " quads; texture unit: %" PRIu64
+          " bindings, %" PRIu64 " quads; ", argv[1], n.triangles, n.quads, n.tex_bindings,
+          n.tex_quads);
    if (bad) {
-      printf("fp-vectors: %s: %" PRIu64 " triangles, %" PRIu64 " quads, %ld differ\n", argv[1],
-             tris, quads, bad);
+      printf("%ld differ\n", bad);
       return 1;
    }
-   printf("fp-vectors: %s: %" PRIu64 " triangles, %" PRIu64 " quads, every output bit equal\n",
-          argv[1], tris, quads);
+   printf("every output bit equal\n");
    return 0;
 }

@@ -57,8 +57,10 @@ void fp_vectors_start(struct fp_context *fp)
       fprintf(stderr, "fixpipe: FIXPIPE_VECTORS: cannot make %s: %s\n", v->dir, strerror(errno));
    else if (!rast_vectors_open(fp->rast, v->dir, v->first, v->last, err, sizeof(err)))
       fprintf(stderr, "fixpipe: FIXPIPE_VECTORS: %s; no vectors written\n", err);
-   else
+   else {
       rast_vectors_frame(fp->rast, fp->frames);
+      fp->vectors_on = true;
+   }
 }
 
 const struct rast_stats *fp_context_stats(struct fp_context *fp)

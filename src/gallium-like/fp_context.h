@@ -152,6 +152,7 @@ struct fp_context {
    struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
    bool vectors_pending;                /* FIXPIPE_VECTORS: opened at the first draw */
+   bool vectors_on;                     /* and written by this context */
 };
 
 static inline struct fp_context *fp_context(struct pipe_context *p)

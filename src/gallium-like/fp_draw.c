@@ -34,6 +34,8 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
 
    if (unlikely(fp->vectors_pending))
       fp_vectors_start(fp);
+   if (unlikely(fp->vectors_on))
+      rast_vectors_draw(fp->rast);
    fp_vs_count(fp, (uint64_t)draws[0].count * info->instance_count);
    if (fp->fs_dirty) {
       fp_fs_validate(fp);

@@ -343,6 +343,8 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
       tex_unit_sample2(u, q, ctl, rgba);
    else
       tex_unit_sample(u, q, ctl, rgba[0]);
+   if (unlikely(ts->fp->vectors_on))
+      rast_vectors_tex(ts->rast, u, q, n, ctl, (const float (*)[4][4])rgba);
    fp_tex_stats(ts);
 }
 

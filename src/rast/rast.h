@@ -413,12 +413,26 @@ const char *rast_interp_name(enum rast_interp_mode mode);
 bool rast_vectors_open(struct rast_context *rc, const char *dir, unsigned long first,
                        unsigned long last, char *err, size_t errlen);
 void rast_vectors_frame(struct rast_context *rc, unsigned long frames_presented);
+/* A new draw: the textures it samples are written again at their first use
+ * (their texels may have changed: uploads, render to texture). */
+void rast_vectors_draw(struct rast_context *rc);
+bool rast_vectors_on(const struct rast_context *rc);
+/* The texture unit's inputs and outputs of n quads (1 or 2) sampled with u
+ * (tex.h) while vectors are on: DIR/tex.bind.hex, tex.in.hex, tex.out.hex. */
+struct tex_unit;
+struct tex_quad;
+void rast_vectors_tex(struct rast_context *rc, const struct tex_unit *u,
+                      const struct tex_quad *q, unsigned n, unsigned lod_control,
+                      const float (*rgba)[4][4]);
 void rast_vectors_close(struct rast_context *rc);
-/* Replays DIR's vectors through a new context: every quad's bits compared
- * with the recorded ones; the first differences described on log.  Returns
- * the mismatches (0: every output bit equal), -1 if the vectors cannot be
- * read; the triangles and quads replayed in *ntri, *nquads. */
-long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *nquads);
+/* Replays DIR's vectors through a new context and texture units: every
+ * quad's bits compared with the recorded ones; the first differences
+ * described on log.  Returns the mismatches (0: every output bit equal), -1
+ * if the vectors cannot be read; what was replayed in *counts. */
+struct rast_vectors_counts {
+   uint64_t triangles, quads, tex_bindings, tex_quads;
+};
+long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts *counts);
 
 /* Primitives: each vertex is vertex_size float[4] slots. */
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],

@@ -415,15 +415,21 @@ void rast_vec_replay_triangle(struct rast_context *rc, const struct rast_vec_tri
    if (!rast_triangle_counted(rc, rast_det(fr->X, fr->Y), &front))
       return;
    fr->quad[0].front_facing = fr->quad[1].front_facing = front;
+   /* the layout (replay_state) has no LINEAR component: vflt[] is 1/w, then
+    * the PERSPECTIVE components' A/w */
    for (unsigned k = 0; k < 3; k++) {
       fr->vfix[k][0] = t->Z[k];
       for (unsigned i = 0; i < fr->ncolor; i++)
          fr->vfix[k][1 + i] = t->color[i][k];
       fr->vflt[k][0] = t->oow[k];
+      for (unsigned j = 0; j < fr->npersp; j++)
+         fr->vflt[k][1 + j] = t->aw[j][k];
    }
    rc->vec_tri = true;
    rast_interp_modes_setup(rc, fr, 0, 1, 2);
    tri_gradients(fr);
+   if (fr->npersp)
+      rast_interp_perspective_setup(rc, fr, 0, 1, 2);
    rc->stats.tri_type[tri_sections(fr)]++;
    rast_scan_sections(rc, fr);
    rc->vec_tri = false;

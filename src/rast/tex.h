@@ -163,6 +163,7 @@ struct tex_unit {
     * specialised quads); NULL: quad twice */
    tex_quad2_fn quad2;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
+   uint32_t bind_serial;          /* which binding: RTL vectors dump a binding once */
    /* texel reads a pixel, for the counters: the minification filter's taps
     * (1 or 2^dims), twice when it blends two mip levels */
    unsigned taps;

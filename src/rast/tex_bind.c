@@ -3,6 +3,7 @@
  * chosen once per (view, sampler) pair so that sampling never branches on
  * state.
  */
+#include <stdatomic.h>
 #include <string.h>
 #include "rast/tex_priv.h"
 #include "fixed/dfx_lanes.h"
@@ -107,7 +108,9 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
     * bound again per thread and whenever its state comes back, which would
     * make such counts depend on the threads and the binding order). */
    struct ns_stats loads = { 0, 0 };
+   static _Atomic uint32_t serials;
    memset(u, 0, sizeof(*u));
+   u->bind_serial = atomic_fetch_add(&serials, 1) + 1;
    u->ns = ns;
    u->stats = &loads;
    u->view = *v;

@@ -22,8 +22,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fixed/numsys.h"
 #include "rast/front.h"
+#include "rast/tex.h"
 #include "rast/vectors.h"
+
+#define VEC_TEX_IN_WORDS 25     /* binding and control, then 48 binary32 inputs */
+#define VEC_TEX_OUT_WORDS 8     /* 16 binary32 outputs */
+#define VEC_TEX_DUMPED 64       /* bindings written in the current draw */
 
 struct rast_vectors {
    /* recording */
@@ -37,6 +43,11 @@ struct rast_vectors {
    uint64_t nexpect, seen, mismatches;
    FILE *log;
    uint64_t tri_index;
+   /* the texture unit's: bindings written in this draw (serial -> index) */
+   FILE *tbind, *tin, *tout;
+   uint32_t dumped_serial[VEC_TEX_DUMPED], dumped_index[VEC_TEX_DUMPED];
+   unsigned ndumped;
+   uint64_t tex_binds, tex_quads, tex_skipped;
 };
 
 static uint32_t fbits(float f)
@@ -62,11 +73,15 @@ static void write_header(const struct rast_context *rc, const struct rast_vector
    FILE *f = fopen(path, "w");
    if (!f)
       return;
-   fprintf(f, "unit scan\nprofile %s\ninterp %s\nin_words %u\nout_words %u\n"
-           "color_components_max %u\ntriangles %" PRIu64 "\nquads %" PRIu64 "\n"
-           "triangles_not_recorded %" PRIu64 "\n", rc->profile->name,
-           rast_interp_name((enum rast_interp_mode)(rc->interp & 3u)), VEC_IN_WORDS,
-           VEC_OUT_WORDS, VEC_MAX_COLOR, v->triangles, v->quads, v->skipped);
+   fprintf(f, "units scan persp\nprofile %s\ninterp %s\ntexfmt %s\nin_words %u\n"
+           "out_words %u\ncolor_components_max %u\nperspective_components_max %u\ntriangles %" PRIu64 "\nquads %" PRIu64 "\n"
+           "triangles_not_recorded %" PRIu64 "\ntex_in_words %u\ntex_out_words %u\n"
+           "tex_bindings %" PRIu64 "\ntex_quads %" PRIu64 "\ntex_quads_not_recorded %" PRIu64
+           "\n", rc->profile->name,
+           rast_interp_name((enum rast_interp_mode)(rc->interp & 3u)), rc->texfmt->name,
+           VEC_IN_WORDS, VEC_OUT_WORDS, VEC_MAX_COLOR, VEC_MAX_PERSP, v->triangles, v->quads,
+           v->skipped, VEC_TEX_IN_WORDS, VEC_TEX_OUT_WORDS, v->tex_binds, v->tex_quads,
+           v->tex_skipped);
    if (v->last == ~0ul)
       fprintf(f, "frames %lu-\n", v->first);
    else
@@ -89,13 +104,27 @@ bool rast_vectors_open(struct rast_context *rc, const char *dir, unsigned long f
    v->in = fopen(path, "w");
    snprintf(path, sizeof(path), "%s/scan.out.hex", dir);
    v->out = v->in ? fopen(path, "w") : NULL;
-   if (!v->in || !v->out) {
+   snprintf(path, sizeof(path), "%s/tex.bind.hex", dir);
+   v->tbind = v->out ? fopen(path, "w") : NULL;
+   snprintf(path, sizeof(path), "%s/tex.in.hex", dir);
+   v->tin = v->tbind ? fopen(path, "w") : NULL;
+   snprintf(path, sizeof(path), "%s/tex.out.hex", dir);
+   v->tout = v->tin ? fopen(path, "w") : NULL;
+   if (!v->tout) {
       snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
-      if (v->in)
-         fclose(v->in);
+      FILE *fs[] = { v->in, v->out, v->tbind, v->tin };
+      for (unsigned i = 0; i < 4; i++)
+         if (fs[i])
+            fclose(fs[i]);
       free(v);
       return false;
    }
+   fprintf(v->tbind, "// fixpipe texture-unit bindings: 8 words, then each level's 3 words "
+           "and texels (docs/vectors.md)\n");
+   fprintf(v->tin, "// fixpipe texture-unit inputs, %u words a quad (docs/vectors.md)\n",
+           VEC_TEX_IN_WORDS);
+   fprintf(v->tout, "// fixpipe texture-unit outputs, %u words a quad (docs/vectors.md)\n",
+           VEC_TEX_OUT_WORDS);
    v->first = first;
    v->last = last;
    v->active = first == 0;
@@ -118,6 +147,9 @@ void rast_vectors_frame(struct rast_context *rc, unsigned long frames)
    v->active = frames >= v->first && frames <= v->last;
    fflush(v->in);
    fflush(v->out);
+   fflush(v->tbind);
+   fflush(v->tin);
+   fflush(v->tout);
    write_header(rc, v);
 }
 
@@ -130,6 +162,9 @@ void rast_vectors_close(struct rast_context *rc)
       write_header(rc, v);
       fclose(v->in);
       fclose(v->out);
+      fclose(v->tbind);
+      fclose(v->tin);
+      fclose(v->tout);
    }
    free(v);
    rc->vec = NULL;
@@ -157,14 +192,15 @@ void rast_vec_triangle(struct rast_context *rc, const struct rast_front *fr, boo
    uint64_t map;
    if (!v->in || !v->active)
       return;
-   if (!color_map(fr, &map) || rc->vl.num_varyings > 32) {
+   if (!color_map(fr, &map) || fr->npersp > VEC_MAX_PERSP || rc->vl.num_varyings > 32) {
       v->skipped++;
       return;
    }
    FILE *f = v->in;
    fprintf(f, "// triangle %" PRIu64 "\n", v->triangles);
    put(f, (uint64_t)rc->rs.half_pixel_center | (uint64_t)rc->rs.bottom_edge_rule << 1 |
-          (uint64_t)rc->rs.front_ccw << 2 | (uint64_t)front << 3 | (uint64_t)fr->ncolor << 8);
+          (uint64_t)rc->rs.front_ccw << 2 | (uint64_t)front << 3 | (uint64_t)fr->ncolor << 8 |
+          (uint64_t)fr->npersp << 16);
    put(f, (uint32_t)rc->org_x | (uint64_t)(uint32_t)rc->org_y << 32);
    put(f, (uint64_t)(uint16_t)rc->clip.minx | (uint64_t)(uint16_t)rc->clip.maxx << 16 |
           (uint64_t)(uint16_t)rc->clip.miny << 32 | (uint64_t)(uint16_t)rc->clip.maxy << 48);
@@ -180,6 +216,17 @@ void rast_vec_triangle(struct rast_context *rc, const struct rast_front *fr, boo
    for (unsigned i = 0; i < VEC_MAX_COLOR; i++)
       for (unsigned k = 0; k < 3; k++)
          put(f, i < fr->ncolor ? (uint64_t)fr->vfix[k][1 + i] : 0);
+   /* the perspective division's: its components, then A/w at each vertex */
+   uint64_t pmap[2] = { 0, 0 };
+   for (unsigned j = 0; j < fr->npersp; j++)
+      pmap[j / 8] |= (uint64_t)((fr->persp[j].var & 0x1fu) << 2 | (fr->persp[j].chan & 3u) |
+                                (unsigned)fr->tex.is_color[j] << 7) << (8 * (j % 8));
+   put(f, pmap[0]);
+   put(f, pmap[1]);
+   const unsigned p0 = 1 + fr->nlin;          /* vflt[]: 1/w, LINEAR, PERSPECTIVE */
+   for (unsigned j = 0; j < VEC_MAX_PERSP; j++)
+      for (unsigned k = 0; k < 3; k++)
+         put(f, j < fr->npersp ? fbits(fr->vflt[k][p0 + j]) : 0);
    v->tri_index = v->triangles++;
    rc->vec_tri = true;
 }
@@ -205,6 +252,9 @@ static void vec_quad(struct rast_context *rc, struct rast_quad *q)
       for (unsigned c = 0; c < fr->ncolor && c < VEC_MAX_COLOR; c++)
          for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
             r.color[c][i] = fbits(q->in[fr->color[c].var][fr->color[c].chan][i]);
+      for (unsigned j = 0; j < fr->npersp && j < VEC_MAX_PERSP; j++)
+         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+            r.persp[j][i] = fbits(q->in[fr->persp[j].var][fr->persp[j].chan][i]);
       if (v->in) {
          FILE *f = v->out;
          fprintf(f, "// quad %" PRIu64 "\n", v->quads);
@@ -217,6 +267,10 @@ static void vec_quad(struct rast_context *rc, struct rast_quad *q)
          for (unsigned c = 0; c < VEC_MAX_COLOR; c++) {
             put(f, r.color[c][0] | (uint64_t)r.color[c][1] << 32);
             put(f, r.color[c][2] | (uint64_t)r.color[c][3] << 32);
+         }
+         for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
+            put(f, r.persp[j][0] | (uint64_t)r.persp[j][1] << 32);
+            put(f, r.persp[j][2] | (uint64_t)r.persp[j][3] << 32);
          }
          v->quads++;
       } else if (v->seen >= v->nexpect) {
@@ -239,6 +293,111 @@ void rast_vec_wrap_backend(struct rast_context *rc)
    rc->vec_next_quad = rc->quad;
    rc->quad = vec_quad;
    rc->quad2 = NULL;     /* one quad at a time: the order the unit emits them */
+}
+
+/* ---- the texture unit ---- */
+
+bool rast_vectors_on(const struct rast_context *rc)
+{
+   return rc->vec && rc->vec->in && rc->vec->active;
+}
+
+void rast_vectors_draw(struct rast_context *rc)
+{
+   if (rc->vec)
+      rc->vec->ndumped = 0;
+}
+
+static uint64_t two(float a, float b)
+{
+   return fbits(a) | (uint64_t)fbits(b) << 32;
+}
+
+/* The bytes of a level the unit can read. */
+static uint64_t level_bytes(const struct tex_view_desc *d, const struct tex_level *lv)
+{
+   const int64_t images = d->target == TEX_TARGET_3D ? lv->d : d->layers > 1 ? d->layers : 1;
+   return images > 1 ? (uint64_t)lv->img_stride * (uint64_t)images
+                     : (uint64_t)lv->row_stride * (uint64_t)lv->h;
+}
+
+/* The binding's record: its descriptors, then every level's texels. */
+static void write_binding(struct rast_vectors *v, const struct tex_unit *u, uint32_t index)
+{
+   FILE *f = v->tbind;
+   const struct tex_view_desc *d = &u->view;
+   const struct tex_sampler_desc *s = &u->samp;
+   fprintf(f, "// binding %u\n", index);
+   put(f, index);
+   put(f, (uint64_t)d->target | (uint64_t)d->format << 8 | (uint64_t)d->depth << 16 |
+          (uint64_t)d->num_levels << 24);
+   put(f, (uint32_t)d->layers | (uint64_t)d->swizzle[0] << 32 | (uint64_t)d->swizzle[1] << 40 |
+          (uint64_t)d->swizzle[2] << 48 | (uint64_t)d->swizzle[3] << 56);
+   put(f, (uint64_t)s->wrap[0] | (uint64_t)s->wrap[1] << 8 | (uint64_t)s->wrap[2] << 16 |
+          (uint64_t)s->min_filter << 24 | (uint64_t)s->mag_filter << 32 |
+          (uint64_t)s->mip << 40 | (uint64_t)s->normalized << 48 |
+          (uint64_t)s->compare << 49 | (uint64_t)s->func << 52);
+   put(f, two(s->lod_bias, s->min_lod));
+   put(f, fbits(s->max_lod));
+   put(f, two(s->border[0], s->border[1]));
+   put(f, two(s->border[2], s->border[3]));
+   for (unsigned l = 0; l < d->num_levels; l++) {
+      const struct tex_level *lv = &d->level[l];
+      const uint64_t bytes = level_bytes(d, lv);
+      put(f, (uint32_t)lv->w | (uint64_t)(uint32_t)lv->h << 32);
+      put(f, (uint32_t)lv->d | bytes << 32);
+      put(f, lv->row_stride | (uint64_t)lv->img_stride << 32);
+      for (uint64_t b = 0; b < bytes; b += 8) {
+         uint64_t w = 0;
+         const uint64_t n = bytes - b < 8 ? bytes - b : 8;
+         memcpy(&w, lv->data + b, n);          /* little-endian: byte 0 in bits 7:0 */
+         put(f, w);
+      }
+   }
+}
+
+void rast_vectors_tex(struct rast_context *rc, const struct tex_unit *u,
+                      const struct tex_quad *q, unsigned n, unsigned ctl,
+                      const float (*rgba)[4][4])
+{
+   struct rast_vectors *v = rc->vec;
+   if (!rast_vectors_on(rc))
+      return;
+   /* formats the driver decodes (callbacks: depth, compressed) are not the unit's */
+   if (u->view.format == TEX_FMT_CALLBACK) {
+      v->tex_skipped += n;
+      return;
+   }
+   unsigned k = 0;
+   while (k < v->ndumped && v->dumped_serial[k] != u->bind_serial)
+      k++;
+   if (k == v->ndumped) {
+      if (k == VEC_TEX_DUMPED) {
+         v->tex_skipped += n;
+         return;
+      }
+      v->dumped_serial[k] = u->bind_serial;
+      v->dumped_index[k] = (uint32_t)v->tex_binds++;
+      v->ndumped++;
+      write_binding(v, u, v->dumped_index[k]);
+   }
+   for (unsigned i = 0; i < n; i++) {
+      const struct tex_quad *t = &q[i];
+      fprintf(v->tin, "// quad %" PRIu64 "\n", v->tex_quads);
+      put(v->tin, v->dumped_index[k] | (uint64_t)ctl << 32);
+      const float *in[12] = { t->s, t->t, t->r, t->layer, t->ref, t->lod, t->ddx[0], t->ddx[1],
+                              t->ddx[2], t->ddy[0], t->ddy[1], t->ddy[2] };
+      for (unsigned a = 0; a < 12; a++) {
+         put(v->tin, two(in[a][0], in[a][1]));
+         put(v->tin, two(in[a][2], in[a][3]));
+      }
+      fprintf(v->tout, "// quad %" PRIu64 "\n", v->tex_quads);
+      for (unsigned c = 0; c < 4; c++) {
+         put(v->tout, two(rgba[i][c][0], rgba[i][c][1]));
+         put(v->tout, two(rgba[i][c][2], rgba[i][c][3]));
+      }
+      v->tex_quads++;
+   }
 }
 
 /* ---- replaying ---- */
@@ -287,6 +446,13 @@ static bool read_quad(FILE *f, struct rast_vec_quad *r)
       r->color[c][2] = (uint32_t)w[9 + 2 * c];
       r->color[c][3] = (uint32_t)(w[9 + 2 * c] >> 32);
    }
+   for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
+      const uint64_t a = w[VEC_OUT_SCAN + 2 * j], b = w[VEC_OUT_SCAN + 2 * j + 1];
+      r->persp[j][0] = (uint32_t)a;
+      r->persp[j][1] = (uint32_t)(a >> 32);
+      r->persp[j][2] = (uint32_t)b;
+      r->persp[j][3] = (uint32_t)(b >> 32);
+   }
    return true;
 }
 
@@ -301,6 +467,7 @@ static bool read_triangle(FILE *f, struct rast_vec_tri *t)
    t->bottom_rule = (w[0] >> 1) & 1u;
    t->front_ccw = (w[0] >> 2) & 1u;
    t->ncolor = (unsigned)(w[0] >> 8) & 0xffu;
+   t->npersp = (unsigned)(w[0] >> 16) & 0xffu;
    t->org_x = (int32_t)(uint32_t)w[1];
    t->org_y = (int32_t)(uint32_t)(w[1] >> 32);
    t->clip.minx = (int16_t)(uint16_t)(w[2] & 0xffffu);
@@ -319,7 +486,15 @@ static bool read_triangle(FILE *f, struct rast_vec_tri *t)
       for (unsigned k = 0; k < 3; k++)
          t->color[i][k] = (int64_t)w[16 + 3 * i + k];
    }
-   return t->ncolor <= VEC_MAX_COLOR;
+   for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
+      const unsigned m = (unsigned)(w[VEC_IN_SCAN + j / 8] >> (8 * (j % 8))) & 0xffu;
+      t->pvar[j] = (uint8_t)((m >> 2) & 0x1fu);
+      t->pchan[j] = (uint8_t)(m & 3u);
+      t->pcolor[j] = (m >> 7) & 1u;
+      for (unsigned k = 0; k < 3; k++)
+         t->aw[j][k] = bitsf((uint32_t)w[VEC_IN_SCAN + 2 + 3 * j + k]);
+   }
+   return t->ncolor <= VEC_MAX_COLOR && t->npersp <= VEC_MAX_PERSP;
 }
 
 static unsigned shade_nothing(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
@@ -349,6 +524,8 @@ static void replay_state(struct rast_context *rc, const struct rast_vec_tri *t)
    unsigned maxvar = 0;
    for (unsigned i = 0; i < t->ncolor; i++)
       maxvar = t->var[i] + 1u > maxvar ? t->var[i] + 1u : maxvar;
+   for (unsigned j = 0; j < t->npersp; j++)
+      maxvar = t->pvar[j] + 1u > maxvar ? t->pvar[j] + 1u : maxvar;
    vl.num_varyings = maxvar;
    vl.vertex_size = 1 + maxvar;
    for (unsigned j = 0; j < maxvar; j++) {
@@ -359,13 +536,189 @@ static void replay_state(struct rast_context *rc, const struct rast_vec_tri *t)
       vl.varying[t->var[i]].interp = RAST_INTERP_COLOR;
       vl.varying[t->var[i]].usage_mask |= (uint8_t)(1u << t->chan[i]);
    }
+   /* divided COLOR components are the wide profile's perspective colour */
+   for (unsigned j = 0; j < t->npersp; j++) {
+      vl.varying[t->pvar[j]].interp = t->pcolor[j] ? RAST_INTERP_COLOR
+                                                   : RAST_INTERP_PERSPECTIVE;
+      vl.varying[t->pvar[j]].usage_mask |= (uint8_t)(1u << t->pchan[j]);
+   }
    if (memcmp(&vl, &rc->vl, sizeof(vl)))
       rast_set_vertex_layout(rc, &vl);
 }
 
-long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *nquads)
+/* One binding of tex.bind.hex, bound again for the replay. */
+struct replay_binding {
+   struct tex_unit unit;
+   struct ns_stats stats;
+   uint8_t *texels[TEX_MAX_LEVELS];
+};
+
+static bool read_words(FILE *f, uint64_t *w, unsigned n)
 {
-   char path[600], line[256], profile[200] = "", interp[32] = "scanline";
+   for (unsigned i = 0; i < n; i++)
+      if (!get(f, &w[i]))
+         return false;
+   return true;
+}
+
+static void split(uint64_t w, float *a, float *b)
+{
+   *a = bitsf((uint32_t)w);
+   *b = bitsf((uint32_t)(w >> 32));
+}
+
+/* Reads the next binding: false at the end (or on a malformed record, said on log). */
+static bool read_binding(FILE *f, const struct numsys *ns, uint64_t index,
+                         struct replay_binding *b, FILE *log)
+{
+   uint64_t w[8];
+   if (!read_words(f, w, 8))
+      return false;
+   if (w[0] != index) {
+      fprintf(log, "tex.bind.hex: binding %" PRIu64 " where %" PRIu64 " was due\n", w[0], index);
+      return false;
+   }
+   struct tex_view_desc d;
+   struct tex_sampler_desc s;
+   memset(&d, 0, sizeof(d));
+   memset(&s, 0, sizeof(s));
+   memset(b, 0, sizeof(*b));
+   d.target = (enum tex_target)(w[1] & 0xffu);
+   d.format = (enum tex_format)((w[1] >> 8) & 0xffu);
+   d.depth = (w[1] >> 16) & 1u;
+   d.num_levels = (unsigned)(w[1] >> 24) & 0xffu;
+   d.layers = (int32_t)(uint32_t)w[2];
+   for (unsigned c = 0; c < 4; c++)
+      d.swizzle[c] = (uint8_t)(w[2] >> (32 + 8 * c));
+   for (unsigned a = 0; a < 3; a++)
+      s.wrap[a] = (enum tex_wrap)((w[3] >> (8 * a)) & 0xffu);
+   s.min_filter = (enum tex_filter)((w[3] >> 24) & 0xffu);
+   s.mag_filter = (enum tex_filter)((w[3] >> 32) & 0xffu);
+   s.mip = (enum tex_mip)((w[3] >> 40) & 0xffu);
+   s.normalized = (w[3] >> 48) & 1u;
+   s.compare = (w[3] >> 49) & 1u;
+   s.func = (enum tex_func)((w[3] >> 52) & 0xfu);
+   split(w[4], &s.lod_bias, &s.min_lod);
+   s.max_lod = bitsf((uint32_t)w[5]);
+   split(w[6], &s.border[0], &s.border[1]);
+   split(w[7], &s.border[2], &s.border[3]);
+   if (d.num_levels > TEX_MAX_LEVELS || d.format == TEX_FMT_CALLBACK ||
+       d.format >= TEX_FMT_COUNT) {
+      fprintf(log, "tex.bind.hex: binding %" PRIu64 " is malformed\n", index);
+      return false;
+   }
+   for (unsigned l = 0; l < d.num_levels; l++) {
+      uint64_t lw[3];
+      if (!read_words(f, lw, 3))
+         return false;
+      struct tex_level *lv = &d.level[l];
+      lv->w = (int32_t)(uint32_t)lw[0];
+      lv->h = (int32_t)(uint32_t)(lw[0] >> 32);
+      lv->d = (int32_t)(uint32_t)lw[1];
+      const uint64_t bytes = lw[1] >> 32;
+      lv->row_stride = (uint32_t)lw[2];
+      lv->img_stride = (uint32_t)(lw[2] >> 32);
+      b->texels[l] = malloc(bytes + 8);
+      if (!b->texels[l])
+         return false;
+      for (uint64_t o = 0; o < bytes; o += 8) {
+         uint64_t x;
+         if (!get(f, &x))
+            return false;
+         memcpy(b->texels[l] + o, &x, 8);
+      }
+      lv->data = b->texels[l];
+   }
+   tex_unit_bind(&b->unit, ns, &d, &s, &b->stats);
+   return true;
+}
+
+static void free_binding(struct replay_binding *b)
+{
+   for (unsigned l = 0; l < TEX_MAX_LEVELS; l++)
+      free(b->texels[l]);
+}
+
+/* The texture unit's records: every quad sampled again with its binding,
+ * its 16 outputs compared bit for bit. */
+static long replay_tex(const char *dir, const struct numsys *ns, FILE *log,
+                       struct rast_vectors_counts *n)
+{
+   char path[600];
+   FILE *f[3] = { NULL, NULL, NULL };
+   const char *names[3] = { "tex.bind.hex", "tex.in.hex", "tex.out.hex" };
+   for (unsigned i = 0; i < 3; i++) {
+      snprintf(path, sizeof(path), "%s/%s", dir, names[i]);
+      f[i] = fopen(path, "r");
+   }
+   if (!f[0] || !f[1] || !f[2]) {
+      fprintf(log, "cannot read the texture unit's vectors in %s\n", dir);
+      for (unsigned i = 0; i < 3; i++)
+         if (f[i])
+            fclose(f[i]);
+      return -1;
+   }
+   struct replay_binding *b = NULL;
+   size_t nb = 0, cap = 0;
+   long bad = 0;
+   uint64_t w[VEC_TEX_IN_WORDS], o[VEC_TEX_OUT_WORDS];
+   while (read_words(f[1], w, VEC_TEX_IN_WORDS)) {
+      if (!read_words(f[2], o, VEC_TEX_OUT_WORDS)) {
+         fprintf(log, "tex.out.hex ends before tex.in.hex\n");
+         bad = -1;
+         break;
+      }
+      const uint64_t index = (uint32_t)w[0];
+      while (index >= nb) {
+         if (nb == cap) {
+            size_t c = cap ? 2 * cap : 8;
+            struct replay_binding *nbp = realloc(b, c * sizeof(*b));
+            if (!nbp) {
+               bad = -1;
+               break;
+            }
+            b = nbp;
+            cap = c;
+         }
+         if (bad < 0 || !read_binding(f[0], ns, nb, &b[nb], log)) {
+            bad = -1;
+            break;
+         }
+         nb++;
+      }
+      if (bad < 0)
+         break;
+      struct tex_quad q;
+      memset(&q, 0, sizeof(q));
+      float *in[12] = { q.s, q.t, q.r, q.layer, q.ref, q.lod, q.ddx[0], q.ddx[1], q.ddx[2],
+                        q.ddy[0], q.ddy[1], q.ddy[2] };
+      for (unsigned a = 0; a < 12; a++) {
+         split(w[1 + 2 * a], &in[a][0], &in[a][1]);
+         split(w[2 + 2 * a], &in[a][2], &in[a][3]);
+      }
+      float rgba[4][TEX_QUAD];
+      tex_unit_sample(&b[index].unit, &q, (enum tex_lod_control)(w[0] >> 32), rgba);
+      bool same = true;
+      for (unsigned c = 0; c < 4; c++)
+         same &= two(rgba[c][0], rgba[c][1]) == o[2 * c] &&
+                 two(rgba[c][2], rgba[c][3]) == o[2 * c + 1];
+      if (!same && bad++ < 10)
+         fprintf(log, "texture quad %" PRIu64 " (binding %" PRIu64 "): red at pixel 0 %08x, "
+                 "recorded %08x\n", n->tex_quads, index, fbits(rgba[0][0]), (uint32_t)o[0]);
+      n->tex_quads++;
+   }
+   n->tex_bindings = nb;
+   for (size_t i = 0; i < nb; i++)
+      free_binding(&b[i]);
+   free(b);
+   for (unsigned i = 0; i < 3; i++)
+      fclose(f[i]);
+   return bad;
+}
+
+long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts *counts)
+{
+   char path[600], line[256], profile[200] = "", interp[32] = "scanline", texfmt[32] = "";
    snprintf(path, sizeof(path), "%s/scan.txt", dir);
    FILE *h = fopen(path, "r");
    if (!h) {
@@ -376,6 +729,7 @@ long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *n
    while (fgets(line, sizeof(line), h)) {
       sscanf(line, "profile %199s", profile);
       sscanf(line, "interp %31s", interp);
+      sscanf(line, "texfmt %31s", texfmt);
       sscanf(line, "in_words %u", &in_words);
       sscanf(line, "out_words %u", &out_words);
    }
@@ -389,6 +743,11 @@ long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *n
    char err[256];
    if (!rast_profile_parse(profile, &buf, err, sizeof(err))) {
       fprintf(log, "%s: profile '%s': %s\n", path, profile, err);
+      return -1;
+   }
+   const struct numsys *ns = numsys_by_name(texfmt);
+   if (!ns) {
+      fprintf(log, "%s: unknown texfmt '%s'\n", path, texfmt);
       return -1;
    }
    unsigned mode = 0;
@@ -424,6 +783,7 @@ long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *n
       return -1;
    }
    rast_set_interp(rc, mode);
+   rast_set_texfmt(rc, ns);
    struct rast_framebuffer fb;
    memset(&fb, 0, sizeof(fb));
    fb.width = fb.height = buf.p.max_target;
@@ -476,8 +836,13 @@ long rast_vectors_replay(const char *dir, FILE *log, uint64_t *ntri, uint64_t *n
       fprintf(log, "quads recorded for triangle %u, after the last one\n", next.tri);
    if (result == 0)
       result = (long)v->mismatches;
-   *ntri = tri;
-   *nquads = quads;
+   memset(counts, 0, sizeof(*counts));
+   counts->triangles = tri;
+   counts->quads = quads;
+   if (result >= 0) {
+      long tb = replay_tex(dir, ns, log, counts);
+      result = tb < 0 ? tb : result + tb;
+   }
    rc->vec = NULL;
    rast_destroy(rc);
    free(v);

@@ -10,9 +10,14 @@
 
 struct rast_front;
 
-#define VEC_MAX_COLOR 8                         /* colour components a record holds */
-#define VEC_IN_WORDS (16 + 3 * VEC_MAX_COLOR)   /* 64-bit words a triangle */
-#define VEC_OUT_WORDS (8 + 2 * VEC_MAX_COLOR)   /* 64-bit words a quad */
+#define VEC_MAX_COLOR 8        /* colour components a record holds */
+#define VEC_MAX_PERSP 16       /* perspective components (the division's) */
+/* 64-bit words a triangle: the scan converter's, then the division's */
+#define VEC_IN_SCAN (16 + 3 * VEC_MAX_COLOR)
+#define VEC_IN_WORDS (VEC_IN_SCAN + 2 + 3 * VEC_MAX_PERSP)
+/* and a quad */
+#define VEC_OUT_SCAN (8 + 2 * VEC_MAX_COLOR)
+#define VEC_OUT_WORDS (VEC_OUT_SCAN + 2 * VEC_MAX_PERSP)
 
 /* A triangle entering the unit: its flags, its pass's origin and clip, and
  * the registers of its three vertices. */
@@ -25,6 +30,11 @@ struct rast_vec_tri {
    float oow[3];
    uint8_t var[VEC_MAX_COLOR], chan[VEC_MAX_COLOR];
    int64_t color[VEC_MAX_COLOR][3];
+   /* the perspective division's: A/w of each component at each vertex */
+   unsigned npersp;
+   uint8_t pvar[VEC_MAX_PERSP], pchan[VEC_MAX_PERSP];
+   bool pcolor[VEC_MAX_PERSP];        /* a COLOR component divided (wide profile) */
+   float aw[VEC_MAX_PERSP][3];
 };
 
 /* A quad leaving it (compared byte for byte: built zeroed). */
@@ -36,6 +46,7 @@ struct rast_vec_quad {
    int64_t z[RAST_QUAD_SIZE];
    uint32_t w[RAST_QUAD_SIZE];                       /* 1/w, binary32 bits */
    uint32_t color[VEC_MAX_COLOR][RAST_QUAD_SIZE];    /* as the shader gets them */
+   uint32_t persp[VEC_MAX_PERSP][RAST_QUAD_SIZE];    /* divided, as the shader gets them */
 };
 
 /* setup.c, in rast_triangle_pass: the triangle's input registers, once set

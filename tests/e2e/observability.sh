@@ -6,8 +6,10 @@
 #     cycles FIXPIPE_STATS counts for its two identical frames;
 #   piglit's amd_performance_monitor_api and _measure pass on fixpipe;
 #   tools/demo.sh prints the modeled chip's time beside the host's for fixpipe;
-#   FIXPIPE_VECTORS=DIR,frames=1-2 on a trace replay writes vectors that fp-vectors
-#     replays bit-exactly, and with one output bit flipped it fails.
+#   FIXPIPE_VECTORS=DIR,frames=A-B on two trace replays (glmark2-es2's build scene: the
+#     scan converter and the perspective division; its mipmapped texture scene: the
+#     texture unit) writes vectors that fp-vectors replays bit-exactly, and with one
+#     output bit flipped (a Z word, a filtered texel) it fails.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=observability
 . "$(dirname "$0")/checks.sh"
@@ -65,31 +67,34 @@ case $line in
 *) fail "demo prints no modeled time: '$line'" ;;
 esac
 
-# 6. vectors from a trace replay, and a flipped bit
-trace=$root/traces/recorded/glmark2-build-vbo.trace
-rm -rf "$out/vec"
-replayed=no
-if FIXPIPE_VECTORS="$out/vec,frames=1-2" run --xvfb -- eglretrace "$trace" \
-        > "$out/vec-record.log" 2>&1 &&
-   "$build/tools/fp-vectors" "$out/vec" > "$out/vec-replay.log" 2>&1; then
-    pass "vectors of $(basename "$trace") frames 1-2: $(sed 's/^fp-vectors: [^:]*: //' "$out/vec-replay.log")"
-    replayed=yes
-else
-    fail "vectors of $(basename "$trace"): $(tail -n 2 "$out/vec-record.log" "$out/vec-replay.log" | tr '\n' ' ')"
-fi
-if [ $replayed = yes ]; then
-    # bit 0 of the first Z word of quad 100
-    awk '/^\/\/ quad 100$/ { q = NR } q && NR == q + 3 { c = substr($0, 16, 1);
-            n = index("0123456789abcdef", c) - 1; n = n % 2 ? n - 1 : n + 1;
-            $0 = substr($0, 1, 15) substr("0123456789abcdef", n + 1, 1) } { print }' \
-        "$out/vec/scan.out.hex" > "$out/vec/flipped" && mv "$out/vec/flipped" "$out/vec/scan.out.hex"
-    "$build/tools/fp-vectors" "$out/vec" > "$out/vec-flipped.log" 2>&1
-    if grep -q ' 1 differ$' "$out/vec-flipped.log"; then
-        pass "vectors with one output bit flipped: the replay finds that quad"
+# 6. vectors from trace replays, and a flipped bit in each
+# flip FILE QUAD WORD: bit 0 of word WORD of record QUAD of FILE
+flip() {
+    awk -v q="// quad $2" -v w="$3" '$0 == q { at = NR + 1 + w } NR == at {
+            c = substr($0, 16, 1); n = index("0123456789abcdef", c) - 1;
+            n = n % 2 ? n - 1 : n + 1; $0 = substr($0, 1, 15) substr("0123456789abcdef", n + 1, 1) }
+        { print }' "$1" > "$1.flipped" && mv "$1.flipped" "$1"
+}
+# vectors NAME TRACE FRAMES FILE QUAD WORD: record, replay, flip one output bit, replay
+vectors() {
+    name=$1 trace=$root/traces/recorded/$2.trace
+    rm -rf "$out/$name"
+    if FIXPIPE_VECTORS="$out/$name,frames=$3" run --xvfb -- eglretrace "$trace" \
+            > "$out/$name-record.log" 2>&1 &&
+       "$build/tools/fp-vectors" "$out/$name" > "$out/$name-replay.log" 2>&1; then
+        pass "vectors of $2 frames $3: $(sed 's/^fp-vectors: [^:]*: //' "$out/$name-replay.log")"
     else
-        fail "vectors with one output bit flipped: $(tail -n 1 "$out/vec-flipped.log")"
+        fail "vectors of $2: $(tail -n 2 "$out/$name-record.log" "$out/$name-replay.log" | tr '\n' ' ')"
+        return
     fi
-else
-    fail "no vectors to flip a bit of"
-fi
+    flip "$out/$name/$4" "$5" "$6"
+    "$build/tools/fp-vectors" "$out/$name" > "$out/$name-flipped.log" 2>&1
+    if grep -q ' 1 differ$' "$out/$name-flipped.log"; then
+        pass "vectors of $2 with bit 0 of word $6 of $4's quad $5 flipped: the replay finds it"
+    else
+        fail "vectors of $2 with one bit flipped: $(tail -n 1 "$out/$name-flipped.log")"
+    fi
+}
+vectors vec-build glmark2-build-vbo 1-2 scan.out.hex 100 2
+vectors vec-texture glmark2-texture-mipmap 1-1 tex.out.hex 100 0
 checks_end

@@ -2,8 +2,10 @@
  * The scan-converter unit's RTL test vectors (vectors.c, docs/vectors.md):
  * random triangles with Z and four colour registers (and a perspective
  * varying, which is not the unit's) recorded on a target of 4096 x 4096,
- * which the seed profile draws in tiles; the replay must reproduce every
- * output bit, and must fail once one bit of the outputs is flipped.
+ * which the seed profile draws in tiles, and quads through two texture
+ * units (REPEAT and LINEAR; MIRRORED_REPEAT and two mip levels); the replay
+ * must reproduce every output bit, and must fail once one bit of the outputs
+ * is flipped.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
@@ -11,6 +13,8 @@
 #include <string.h>
 #include <unistd.h>
 #include "tutil.h"
+#include "fixed/numsys.h"
+#include "rast/tex.h"
 
 #define W 4096
 #define H 4096
@@ -39,8 +43,54 @@ static void draw_some(struct tctx *t, int n)
    }
 }
 
-/* Flips bit 0 of the first Z word of the n-th quad record. */
-static bool flip_one_bit(const char *path, int n)
+/* 500 quads through each of two texture units, recorded as the driver does
+ * after sampling. */
+static void sample_some(struct rast_context *rc)
+{
+   static uint8_t level0[64 * 64 * 4], level1[32 * 32 * 4];
+   for (size_t i = 0; i < sizeof(level0); i++)
+      level0[i] = (uint8_t)(t_rand() * 256.0);
+   for (size_t i = 0; i < sizeof(level1); i++)
+      level1[i] = (uint8_t)(t_rand() * 256.0);
+   for (int b = 0; b < 2; b++) {
+      struct tex_view_desc d;
+      struct tex_sampler_desc s;
+      memset(&d, 0, sizeof(d));
+      memset(&s, 0, sizeof(s));
+      d.target = TEX_TARGET_2D;
+      d.format = TEX_FMT_RGBA8;
+      d.num_levels = b ? 2 : 1;
+      d.level[0] = (struct tex_level){ level0, 64 * 4, 64 * 64 * 4, 64, 64, 1 };
+      d.level[1] = (struct tex_level){ level1, 32 * 4, 32 * 32 * 4, 32, 32, 1 };
+      d.layers = 1;
+      for (int c = 0; c < 4; c++)
+         d.swizzle[c] = (uint8_t)c;
+      s.wrap[0] = s.wrap[1] = s.wrap[2] = b ? TEX_WRAP_MIRROR_REPEAT : TEX_WRAP_REPEAT;
+      s.min_filter = s.mag_filter = TEX_FILTER_LINEAR;
+      s.mip = b ? TEX_MIP_LINEAR : TEX_MIP_NONE;
+      s.normalized = true;
+      s.max_lod = 1000.0f;
+      struct tex_unit u;
+      struct ns_stats st = { 0, 0 };
+      tex_unit_bind(&u, numsys_default(), &d, &s, &st);
+      for (int n = 0; n < 500; n++) {
+         struct tex_quad q;
+         memset(&q, 0, sizeof(q));
+         const float s0 = (float)(t_rand() * 6.0 - 3.0), t0 = (float)(t_rand() * 6.0 - 3.0);
+         const float ds = (float)(t_rand() * 0.05), dt = (float)(t_rand() * 0.05);
+         for (int i = 0; i < 4; i++) {
+            q.s[i] = s0 + (float)(i & 1) * ds;
+            q.t[i] = t0 + (float)(i >> 1) * dt;
+         }
+         float rgba[4][TEX_QUAD];
+         tex_unit_sample(&u, &q, TEX_LOD_IMPLICIT, rgba);
+         rast_vectors_tex(rc, &u, &q, 1, TEX_LOD_IMPLICIT, (const float (*)[4][4])rgba);
+      }
+   }
+}
+
+/* Flips bit 0 of word `word` of the n-th quad record. */
+static bool flip_one_bit(const char *path, int n, int word)
 {
    FILE *f = fopen(path, "r+");
    if (!f)
@@ -51,8 +101,7 @@ static bool flip_one_bit(const char *path, int n)
    for (long pos = 0; fgets(line, sizeof(line), f); pos = ftell(f)) {
       if (strcmp(line, tag))
          continue;
-      /* the record's words: 0 (triangle, mask), 1 (x, y), 2 (Z of pixel 0) */
-      for (int w = 0; w < 3; w++) {
+      for (int w = 0; w <= word; w++) {
          pos = ftell(f);
          if (!fgets(line, sizeof(line), f))
             break;
@@ -87,17 +136,22 @@ int main(void)
    CHECK(rast_vectors_open(t.rc, dir, 0, ~0ul, err, sizeof(err)), "open: %s", err);
    t_seed(99);
    draw_some(&t, 300);
+   sample_some(t.rc);
    const uint64_t drawn = rast_get_stats(t.rc)->triangles;
    const uint64_t passes = rast_get_stats(t.rc)->tile_passes;
    rast_vectors_close(t.rc);
    t_fini(&t);
 
-   uint64_t tris = 0, quads = 0;
-   long bad = rast_vectors_replay(dir, stderr, &tris, &quads);
+   struct rast_vectors_counts n;
+   long bad = rast_vectors_replay(dir, stderr, &n);
+   const uint64_t tris = n.triangles, quads = n.quads;
    printf("vectors: %llu triangles drawn in %llu tile passes, %llu recorded, %llu quads; "
           "replay: %ld differ\n", (unsigned long long)drawn, (unsigned long long)passes,
           (unsigned long long)tris, (unsigned long long)quads, bad);
    CHECK(bad == 0, "the replay differs in %ld quads", bad);
+   CHECK(n.tex_bindings == 2 && n.tex_quads == 1000, "texture unit: %llu bindings, %llu quads "
+         "replayed, not 2 and 1000", (unsigned long long)n.tex_bindings,
+         (unsigned long long)n.tex_quads);
    CHECK(drawn > 250 && quads > 5000, "too little drawn: %llu triangles, %llu quads",
          (unsigned long long)drawn, (unsigned long long)quads);
    /* a record a pass: the triangles across tiles count once a tile */
@@ -117,15 +171,27 @@ int main(void)
    }
    CHECK(((strtoull(line, NULL, 16) >> 8) & 0xff) == 4, "triangle 0 records %llu colour "
          "components, not 4", (strtoull(line, NULL, 16) >> 8) & 0xff);
+   CHECK(((strtoull(line, NULL, 16) >> 16) & 0xff) == 2, "triangle 0 records %llu "
+         "perspective components, not 2", (strtoull(line, NULL, 16) >> 16) & 0xff);
 
-   snprintf(path, sizeof(path), "%s/scan.out.hex", dir);
-   CHECK(flip_one_bit(path, 1234), "cannot flip a bit of quad 1234");
-   fprintf(stderr, "vectors: the replay with bit 0 of quad 1234's first Z flipped:\n");
-   bad = rast_vectors_replay(dir, stderr, &tris, &quads);
-   CHECK(bad == 1, "with one output bit flipped the replay finds %ld differences", bad);
+   /* one bit of the scan converter's output (Z, word 2), of the division's
+    * (its first component at pixel 0, word VEC_OUT_SCAN = 24), of the
+    * texture unit's (red at pixel 0 of quad 700, word 0) */
+   const char *files[3] = { "scan.out.hex", "scan.out.hex", "tex.out.hex" };
+   const int words[3] = { 2, 24, 0 }, quad[3] = { 1234, 1235, 700 };
+   for (int i = 0; i < 3; i++) {
+      snprintf(path, sizeof(path), "%s/%s", dir, files[i]);
+      CHECK(flip_one_bit(path, quad[i], words[i]), "cannot flip a bit of quad %d", quad[i]);
+      fprintf(stderr, "vectors: the replay with bit 0 of word %d of %s's quad %d flipped:\n",
+              words[i], files[i], quad[i]);
+      bad = rast_vectors_replay(dir, stderr, &n);
+      CHECK(bad == i + 1, "with %d output bits flipped the replay finds %ld differences",
+            i + 1, bad);
+   }
 
-   for (const char *n = "scan.in.hex\0scan.out.hex\0scan.txt\0"; *n; n += strlen(n) + 1) {
-      snprintf(path, sizeof(path), "%s/%s", dir, n);
+   for (const char *name = "scan.in.hex\0scan.out.hex\0scan.txt\0tex.bind.hex\0tex.in.hex\0"
+                        "tex.out.hex\0"; *name; name += strlen(name) + 1) {
+      snprintf(path, sizeof(path), "%s/%s", dir, name);
       unlink(path);
    }
    rmdir(dir);
