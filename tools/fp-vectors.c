@@ -24,8 +24,8 @@ int main(int argc, char **argv)
    long bad = rast_vectors_replay(argv[1], stderr, &n);
    if (bad < 0)
       return 2;
-   if (n.triangles == 0) {
-      fprintf(stderr, "fp-vectors: %s: no triangle recorded\n", argv[1]);
+   if (n.triangles == 0 && n.tex_quads == 0) {
+      fprintf(stderr, "fp-vectors: %s: nothing recorded\n", argv[1]);
       return 1;
    }
    printf("fp-vectors: %s: %" PRIu64 " triangles, %" PRIu64 " quads; texture unit: %" PRIu64

@@ -55,7 +55,8 @@ void fp_vectors_start(struct fp_context *fp)
    char err[640];
    if (mkdir(v->dir, 0777) != 0 && errno != EEXIST)
       fprintf(stderr, "fixpipe: FIXPIPE_VECTORS: cannot make %s: %s\n", v->dir, strerror(errno));
-   else if (!rast_vectors_open(fp->rast, v->dir, v->first, v->last, err, sizeof(err)))
+   else if (!rast_vectors_open(fp->rast, v->dir, v->first, v->last, v->units, err,
+                               sizeof(err)))
       fprintf(stderr, "fixpipe: FIXPIPE_VECTORS: %s; no vectors written\n", err);
    else {
       rast_vectors_frame(fp->rast, fp->frames);

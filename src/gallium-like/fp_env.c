@@ -134,20 +134,21 @@ static void fp_env_parse(void)
                  "vector, each optionally with :error); using scanline\n", im);
    }
 
-   /* FIXPIPE_VECTORS=DIR[,frames=A-B] (docs/vectors.md) */
+   /* FIXPIPE_VECTORS=DIR[,frames=A-B][,units=scan+tex] (docs/vectors.md) */
    const char *vec = getenv("FIXPIPE_VECTORS");
    if (vec && *vec) {
       char buf[sizeof(env_vectors.dir)];
       unsigned long a = 0, b = ~0ul;
+      unsigned units = RAST_VEC_SCAN | RAST_VEC_TEX;
       bool ok = strlen(vec) < sizeof(buf);
       if (ok) {
          strcpy(buf, vec);
-         char *opt = strchr(buf, ',');
-         if (opt) {
-            *opt++ = '\0';
+         char *save = NULL, *dir = strtok_r(buf, ",", &save);
+         ok = dir && vec[0] != ',';
+         for (char *opt = strtok_r(NULL, ",", &save); ok && opt;
+              opt = strtok_r(NULL, ",", &save)) {
             char *end;
-            ok = !strncmp(opt, "frames=", 7);
-            if (ok) {
+            if (!strncmp(opt, "frames=", 7)) {
                a = strtoul(opt + 7, &end, 10);
                ok = end != opt + 7 && *end == '-';
                if (ok) {
@@ -155,18 +156,34 @@ static void fp_env_parse(void)
                   b = strtoul(bs, &end, 10);
                   ok = end != bs && !*end && a <= b;
                }
+            } else if (!strncmp(opt, "units=", 6)) {
+               units = 0;
+               char *usave = NULL;
+               for (char *u = strtok_r(opt + 6, "+", &usave); ok && u;
+                    u = strtok_r(NULL, "+", &usave))
+                  if (!strcmp(u, "scan"))
+                     units |= RAST_VEC_SCAN;
+                  else if (!strcmp(u, "tex"))
+                     units |= RAST_VEC_TEX;
+                  else
+                     ok = false;
+               ok = ok && units;
+            } else {
+               ok = false;
             }
          }
-         ok = ok && buf[0];
+         if (ok)
+            strcpy(env_vectors.dir, dir);
       }
       if (ok) {
-         strcpy(env_vectors.dir, buf);
          env_vectors.first = a;
          env_vectors.last = b;
+         env_vectors.units = units;
       } else {
-         fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s' (accepted: DIR or "
-                 "DIR,frames=A-B with A <= B, frames counted from 0 by presents); "
-                 "no vectors written\n", vec);
+         env_vectors.dir[0] = '\0';
+         fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s' (accepted: DIR, then optionally "
+                 ",frames=A-B with A <= B, frames counted from 0 by presents, and "
+                 ",units=scan, tex or scan+tex); no vectors written\n", vec);
       }
    }
 

@@ -39,6 +39,7 @@ struct rast_cycle_params;
 struct fp_env_vectors {
    char dir[480];
    unsigned long first, last;     /* frames presented before, inclusive */
+   unsigned units;                /* RAST_VEC_* */
 };
 const struct fp_env_vectors *fp_env_vectors(void);   /* FIXPIPE_VECTORS */
 const struct rast_cycle_params *fp_env_cycles(void);   /* FIXPIPE_CYCLES */

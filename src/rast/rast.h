@@ -410,8 +410,10 @@ const char *rast_interp_name(enum rast_interp_mode mode);
  * quads to DIR/scan.out.hex, the profile and counts to DIR/scan.txt.  One
  * thread: the records are in the unit's order.  false with a message if a
  * file cannot be written.  rast_destroy closes them. */
+enum { RAST_VEC_SCAN = 1u << 0,      /* the scan converter and the division */
+       RAST_VEC_TEX = 1u << 1 };      /* the texture unit */
 bool rast_vectors_open(struct rast_context *rc, const char *dir, unsigned long first,
-                       unsigned long last, char *err, size_t errlen);
+                       unsigned long last, unsigned units, char *err, size_t errlen);
 void rast_vectors_frame(struct rast_context *rc, unsigned long frames_presented);
 /* A new draw: the textures it samples are written again at their first use
  * (their texels may have changed: uploads, render to texture). */

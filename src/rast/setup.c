@@ -387,13 +387,13 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
    rast_setup_rebase(rc, fr, v, 3);
    for (unsigned k = 0; k < 3; k++)
       rast_setup_attribs(rc, fr, k, v[k]);
-   if (rc->vec)
-      rast_vec_triangle(rc, fr, front);
    rast_interp_modes_setup(rc, fr, 0, 1, 2);
    tri_gradients(fr);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 2);
    rast_setup_constants(fr, rc->rs.flatshade_first ? v0 : v2);
+   if (rc->vec)
+      rast_vec_triangle(rc, fr, front);
    rc->stats.tri_type[tri_sections(fr)]++;
    rast_scan_sections(rc, fr);
    rc->vec_tri = false;

@@ -36,6 +36,7 @@ struct rast_vectors {
    char dir[512];
    FILE *in, *out;
    unsigned long first, last, frame;
+   unsigned units;                 /* RAST_VEC_* */
    bool active;
    uint64_t triangles, quads, skipped;
    /* replaying: the quads the current triangle must produce */
@@ -90,7 +91,7 @@ static void write_header(const struct rast_context *rc, const struct rast_vector
 }
 
 bool rast_vectors_open(struct rast_context *rc, const char *dir, unsigned long first,
-                       unsigned long last, char *err, size_t errlen)
+                       unsigned long last, unsigned units, char *err, size_t errlen)
 {
    struct rast_vectors *v = calloc(1, sizeof(*v));
    if (!v || strlen(dir) >= sizeof(v->dir)) {
@@ -127,6 +128,7 @@ bool rast_vectors_open(struct rast_context *rc, const char *dir, unsigned long f
            VEC_TEX_OUT_WORDS);
    v->first = first;
    v->last = last;
+   v->units = units;
    v->active = first == 0;
    fprintf(v->in, "// fixpipe scan-unit inputs, %u words a triangle (docs/vectors.md)\n",
            VEC_IN_WORDS);
@@ -175,6 +177,29 @@ static void put(FILE *f, uint64_t w)
    fprintf(f, "%016" PRIx64 "\n", w);
 }
 
+/* A value of the number system as its register holds it: a dfx word
+ * ([23] sign, [22:19] L, [18:0] M for dfx24), an M.N value in two's
+ * complement, binary32 bits. */
+static uint64_t ns_word(const struct numsys *ns, ns_val a)
+{
+   switch (ns->family) {
+   case NUMSYS_DFX: return dfx_pack(ns->dfx, a.d);
+   case NUMSYS_FIXED: return (uint64_t)a.x;
+   default: return fbits(a.f);
+   }
+}
+
+/* A divided value as the division's register held it: the shader's float
+ * converted back, exact in a dfx system (a mantissa of at most 24 bits);
+ * 0 in the others, whose results binary32 cannot always hold. */
+static uint32_t divided_word(const struct numsys *ns, bool color, float f)
+{
+   struct ns_stats st = { 0, 0 };
+   if (color || ns->family != NUMSYS_DFX)
+      return 0;
+   return (uint32_t)ns_word(ns, ns->from_float(ns, f, &st));
+}
+
 /* The triangle's colour components, at most VEC_MAX_COLOR; false if more. */
 static bool color_map(const struct rast_front *fr, uint64_t *map)
 {
@@ -190,7 +215,7 @@ void rast_vec_triangle(struct rast_context *rc, const struct rast_front *fr, boo
 {
    struct rast_vectors *v = rc->vec;
    uint64_t map;
-   if (!v->in || !v->active)
+   if (!v->in || !v->active || !(v->units & RAST_VEC_SCAN))
       return;
    if (!color_map(fr, &map) || fr->npersp > VEC_MAX_PERSP || rc->vl.num_varyings > 32) {
       v->skipped++;
@@ -227,6 +252,18 @@ void rast_vec_triangle(struct rast_context *rc, const struct rast_front *fr, boo
    for (unsigned j = 0; j < VEC_MAX_PERSP; j++)
       for (unsigned k = 0; k < 3; k++)
          put(f, j < fr->npersp ? fbits(fr->vflt[k][p0 + j]) : 0);
+   /* the division's set-up: 1/det and k (det·2^-k in [1/2, 1)), the planes */
+   const struct fr_tex *t = &fr->tex;
+   const bool div = fr->npersp > 0;
+   put(f, div ? (ns_word(t->ns, t->rdet) & ((UINT64_C(1) << 56) - 1)) | (uint64_t)t->k << 56
+              : 0);
+   for (unsigned p = 0; p < 1 + VEC_MAX_PERSP; p++) {
+      const bool on = div && p <= fr->npersp;
+      const struct numsys *ns = p && on && t->is_color[p - 1] ? t->fns : t->ns;
+      put(f, on ? ns_word(ns, t->pl[p].v0) : 0);
+      put(f, on ? ns_word(ns, t->pl[p].d1) : 0);
+      put(f, on ? ns_word(ns, t->pl[p].d2) : 0);
+   }
    v->tri_index = v->triangles++;
    rc->vec_tri = true;
 }
@@ -253,8 +290,11 @@ static void vec_quad(struct rast_context *rc, struct rast_quad *q)
          for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
             r.color[c][i] = fbits(q->in[fr->color[c].var][fr->color[c].chan][i]);
       for (unsigned j = 0; j < fr->npersp && j < VEC_MAX_PERSP; j++)
-         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-            r.persp[j][i] = fbits(q->in[fr->persp[j].var][fr->persp[j].chan][i]);
+         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+            const float d = q->in[fr->persp[j].var][fr->persp[j].chan][i];
+            r.persp[j][i] = fbits(d);
+            r.pword[j][i] = divided_word(fr->tex.ns, fr->tex.is_color[j], d);
+         }
       if (v->in) {
          FILE *f = v->out;
          fprintf(f, "// quad %" PRIu64 "\n", v->quads);
@@ -271,6 +311,10 @@ static void vec_quad(struct rast_context *rc, struct rast_quad *q)
          for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
             put(f, r.persp[j][0] | (uint64_t)r.persp[j][1] << 32);
             put(f, r.persp[j][2] | (uint64_t)r.persp[j][3] << 32);
+         }
+         for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
+            put(f, r.pword[j][0] | (uint64_t)r.pword[j][1] << 32);
+            put(f, r.pword[j][2] | (uint64_t)r.pword[j][3] << 32);
          }
          v->quads++;
       } else if (v->seen >= v->nexpect) {
@@ -361,7 +405,7 @@ void rast_vectors_tex(struct rast_context *rc, const struct tex_unit *u,
                       const float (*rgba)[4][4])
 {
    struct rast_vectors *v = rc->vec;
-   if (!rast_vectors_on(rc))
+   if (!rast_vectors_on(rc) || !(v->units & RAST_VEC_TEX))
       return;
    /* formats the driver decodes (callbacks: depth, compressed) are not the unit's */
    if (u->view.format == TEX_FMT_CALLBACK) {
@@ -452,6 +496,11 @@ static bool read_quad(FILE *f, struct rast_vec_quad *r)
       r->persp[j][1] = (uint32_t)(a >> 32);
       r->persp[j][2] = (uint32_t)b;
       r->persp[j][3] = (uint32_t)(b >> 32);
+      const unsigned o = VEC_OUT_SCAN + 2 * VEC_MAX_PERSP + 2 * j;
+      r->pword[j][0] = (uint32_t)w[o];
+      r->pword[j][1] = (uint32_t)(w[o] >> 32);
+      r->pword[j][2] = (uint32_t)w[o + 1];
+      r->pword[j][3] = (uint32_t)(w[o + 1] >> 32);
    }
    return true;
 }

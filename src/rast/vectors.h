@@ -12,12 +12,16 @@ struct rast_front;
 
 #define VEC_MAX_COLOR 8        /* colour components a record holds */
 #define VEC_MAX_PERSP 16       /* perspective components (the division's) */
-/* 64-bit words a triangle: the scan converter's, then the division's */
+/* 64-bit words a triangle: the scan converter's, then the division's (its
+ * map, A/w at the vertices, then its set-up's registers: the reciprocal of
+ * the determinant and the planes of 1/w and of each component) */
 #define VEC_IN_SCAN (16 + 3 * VEC_MAX_COLOR)
-#define VEC_IN_WORDS (VEC_IN_SCAN + 2 + 3 * VEC_MAX_PERSP)
-/* and a quad */
+#define VEC_IN_PLANES (VEC_IN_SCAN + 2 + 3 * VEC_MAX_PERSP)
+#define VEC_IN_WORDS (VEC_IN_PLANES + 1 + 3 * (1 + VEC_MAX_PERSP))
+/* and a quad: the scan converter's, the divided values as binary32, then
+ * as the number system's words */
 #define VEC_OUT_SCAN (8 + 2 * VEC_MAX_COLOR)
-#define VEC_OUT_WORDS (VEC_OUT_SCAN + 2 * VEC_MAX_PERSP)
+#define VEC_OUT_WORDS (VEC_OUT_SCAN + 4 * VEC_MAX_PERSP)
 
 /* A triangle entering the unit: its flags, its pass's origin and clip, and
  * the registers of its three vertices. */
@@ -47,6 +51,7 @@ struct rast_vec_quad {
    uint32_t w[RAST_QUAD_SIZE];                       /* 1/w, binary32 bits */
    uint32_t color[VEC_MAX_COLOR][RAST_QUAD_SIZE];    /* as the shader gets them */
    uint32_t persp[VEC_MAX_PERSP][RAST_QUAD_SIZE];    /* divided, as the shader gets them */
+   uint32_t pword[VEC_MAX_PERSP][RAST_QUAD_SIZE];    /* the same as dfx words (dfx systems) */
 };
 
 /* setup.c, in rast_triangle_pass: the triangle's input registers, once set

@@ -9,7 +9,8 @@
 #   FIXPIPE_VECTORS=DIR,frames=A-B on two trace replays (glmark2-es2's build scene: the
 #     scan converter and the perspective division; its mipmapped texture scene: the
 #     texture unit) writes vectors that fp-vectors replays bit-exactly, and with one
-#     output bit flipped (a Z word, a filtered texel) it fails.
+#     output bit flipped (a Z word, a filtered texel) it fails; units=tex writes the
+#     texture unit's alone.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=observability
 . "$(dirname "$0")/checks.sh"
@@ -97,4 +98,16 @@ vectors() {
 }
 vectors vec-build glmark2-build-vbo 1-2 scan.out.hex 100 2
 vectors vec-texture glmark2-texture-mipmap 1-1 tex.out.hex 100 0
+# units=tex: the texture unit alone
+rm -rf "$out/vec-units"
+FIXPIPE_VECTORS="$out/vec-units,frames=1-1,units=tex" run --xvfb -- eglretrace \
+    "$root/traces/recorded/glmark2-texture-mipmap.trace" > "$out/vec-units.log" 2>&1
+tq=$(sed -n 's/^tex_quads //p' "$out/vec-units/scan.txt" 2>/dev/null)
+tr=$(sed -n 's/^triangles //p' "$out/vec-units/scan.txt" 2>/dev/null)
+if [ "$tr" = 0 ] && [ "${tq:-0}" -gt 0 ] && "$build/tools/fp-vectors" "$out/vec-units" \
+        > "$out/vec-units-replay.log" 2>&1; then
+    pass "vectors with units=tex: $tq texture quads, no triangle, replayed bit-exactly"
+else
+    fail "vectors with units=tex: triangles '$tr', texture quads '$tq' ($(tail -n 1 "$out/vec-units-replay.log" 2>/dev/null))"
+fi
 checks_end

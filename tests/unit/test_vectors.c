@@ -133,7 +133,8 @@ int main(void)
                                           .usage_mask = 0x3 };
    rast_set_vertex_layout(t.rc, &vl);
    char err[256];
-   CHECK(rast_vectors_open(t.rc, dir, 0, ~0ul, err, sizeof(err)), "open: %s", err);
+   CHECK(rast_vectors_open(t.rc, dir, 0, ~0ul, RAST_VEC_SCAN | RAST_VEC_TEX, err, sizeof(err)),
+         "open: %s", err);
    t_seed(99);
    draw_some(&t, 300);
    sample_some(t.rc);
@@ -175,11 +176,11 @@ int main(void)
          "perspective components, not 2", (strtoull(line, NULL, 16) >> 16) & 0xff);
 
    /* one bit of the scan converter's output (Z, word 2), of the division's
-    * (its first component at pixel 0, word VEC_OUT_SCAN = 24), of the
-    * texture unit's (red at pixel 0 of quad 700, word 0) */
-   const char *files[3] = { "scan.out.hex", "scan.out.hex", "tex.out.hex" };
-   const int words[3] = { 2, 24, 0 }, quad[3] = { 1234, 1235, 700 };
-   for (int i = 0; i < 3; i++) {
+    * (its first component at pixel 0, word 24, and the same as a dfx word,
+    * word 56), of the texture unit's (red at pixel 0 of quad 700, word 0) */
+   const char *files[4] = { "scan.out.hex", "scan.out.hex", "scan.out.hex", "tex.out.hex" };
+   const int words[4] = { 2, 24, 56, 0 }, quad[4] = { 1234, 1235, 1236, 700 };
+   for (int i = 0; i < 4; i++) {
       snprintf(path, sizeof(path), "%s/%s", dir, files[i]);
       CHECK(flip_one_bit(path, quad[i], words[i]), "cannot flip a bit of quad %d", quad[i]);
       fprintf(stderr, "vectors: the replay with bit 0 of word %d of %s's quad %d flipped:\n",
