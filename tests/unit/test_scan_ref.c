@@ -159,7 +159,12 @@ static void gen(enum kind k, bool half, float v[3][2], bool wide)
  * and 2 are near vertex 0 (within 64 pixels: slivers and small triangles)
  * or anywhere, and whether anywhere is the whole 2048x2048 target or its
  * first 128x128; then six int32, each a coordinate on the 1/4096 grid of
- * the XY registers, from 32 pixels before that.  A difference aborts. */
+ * the XY registers, from 32 pixels before that.  On the whole target,
+ * unless bit 5 of byte 0 is set, the scan converter and the reference see
+ * a 64x64 window of it (a scissor placed by the next two bytes, or by
+ * bytes 1 and 5): triangles anywhere at the cost of 4,096 pixels, and the
+ * edge walk's jump to the window's first scan line checked; the unit suite
+ * draws whole large triangles.  A difference aborts. */
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -190,8 +195,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
    rs.half_pixel_center = half;
    rs.bottom_edge_rule = bottom;
    rs.line_width = 1;
+   struct rast_scissor clip = { 0, 0, TW, TH };
+   if (whole && !(flags & 32)) {
+      const bool placed = size >= 1 + 6 * 4 + 2;
+      const int wx = (placed ? data[1 + 6 * 4] : data[1]) * (TW - 64) / 255;
+      const int wy = (placed ? data[2 + 6 * 4] : data[5]) * (TH - 64) / 255;
+      clip = (struct rast_scissor){ wx, wy, wx + 64, wy + 64 };
+      rs.scissor = true;
+   }
    rast_set_raster_state(tc->rc, &rs);
-   const struct rast_scissor clip = { 0, 0, TW, TH };
+   rast_set_scissor(tc->rc, &clip);
    struct outcome o = draw_and_compare(tc, v, half, bottom, clip);
    if (!o.same && !o.dsat) {
       fprintf(stderr, "scan_ref fuzz: %s half=%d bottom=%d: model %llu px, reference %llu, "
