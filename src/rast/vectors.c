@@ -25,9 +25,12 @@
 #include "fixed/numsys.h"
 #include "rast/front.h"
 #include "rast/tex.h"
+#include "rast/tex_ns.h"
 #include "rast/vectors.h"
 
-#define VEC_TEX_IN_WORDS 25     /* binding and control, then 48 binary32 inputs */
+/* binding and control, 48 binary32 inputs, then s, t, r as the unit's
+ * coordinate registers hold them */
+#define VEC_TEX_IN_WORDS 31
 #define VEC_TEX_OUT_WORDS 8     /* 16 binary32 outputs */
 #define VEC_TEX_DUMPED 64       /* bindings written in the current draw */
 
@@ -357,6 +360,19 @@ static uint64_t two(float a, float b)
    return fbits(a) | (uint64_t)fbits(b) << 32;
 }
 
+/* Pixels 0, 1 (word a) and 2, 3 (word b) of a coordinate as the unit's
+ * register: binary32 rounded toward -inf into the number system (a dfx
+ * word, an M.N value's low 32 bits, binary32 bits). */
+static void coord_words(const struct tex_unit *u, const float c[4], uint64_t *a, uint64_t *b)
+{
+   struct ns_stats st = { 0, 0 };
+   uint32_t w[4];
+   for (unsigned i = 0; i < 4; i++)
+      w[i] = (uint32_t)ns_word(u->ns, tex_ns_coord(u->ns, tex_ns_kind(u->ns), c[i], &st));
+   *a = w[0] | (uint64_t)w[1] << 32;
+   *b = w[2] | (uint64_t)w[3] << 32;
+}
+
 /* The bytes of a level the unit can read. */
 static uint64_t level_bytes(const struct tex_view_desc *d, const struct tex_level *lv)
 {
@@ -434,6 +450,12 @@ void rast_vectors_tex(struct rast_context *rc, const struct tex_unit *u,
       for (unsigned a = 0; a < 12; a++) {
          put(v->tin, two(in[a][0], in[a][1]));
          put(v->tin, two(in[a][2], in[a][3]));
+      }
+      for (unsigned a = 0; a < 3; a++) {
+         uint64_t w0, w1;
+         coord_words(u, in[a], &w0, &w1);
+         put(v->tin, w0);
+         put(v->tin, w1);
       }
       fprintf(v->tout, "// quad %" PRIu64 "\n", v->tex_quads);
       for (unsigned c = 0; c < 4; c++) {
@@ -747,7 +769,13 @@ static long replay_tex(const char *dir, const struct numsys *ns, FILE *log,
       }
       float rgba[4][TEX_QUAD];
       tex_unit_sample(&b[index].unit, &q, (enum tex_lod_control)(w[0] >> 32), rgba);
+      /* the coordinate registers: the unit's own conversion of the inputs */
       bool same = true;
+      for (unsigned a = 0; a < 3; a++) {
+         uint64_t w0, w1;
+         coord_words(&b[index].unit, in[a], &w0, &w1);
+         same &= w0 == w[25 + 2 * a] && w1 == w[26 + 2 * a];
+      }
       for (unsigned c = 0; c < 4; c++)
          same &= two(rgba[c][0], rgba[c][1]) == o[2 * c] &&
                  two(rgba[c][2], rgba[c][3]) == o[2 * c + 1];
@@ -774,18 +802,22 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
       fprintf(log, "cannot read %s: %s\n", path, strerror(errno));
       return -1;
    }
-   unsigned in_words = 0, out_words = 0;
+   unsigned in_words = 0, out_words = 0, tex_in = 0, tex_out = 0;
    while (fgets(line, sizeof(line), h)) {
       sscanf(line, "profile %199s", profile);
       sscanf(line, "interp %31s", interp);
       sscanf(line, "texfmt %31s", texfmt);
       sscanf(line, "in_words %u", &in_words);
       sscanf(line, "out_words %u", &out_words);
+      sscanf(line, "tex_in_words %u", &tex_in);
+      sscanf(line, "tex_out_words %u", &tex_out);
    }
    fclose(h);
-   if (in_words != VEC_IN_WORDS || out_words != VEC_OUT_WORDS) {
-      fprintf(log, "%s: records of %u and %u words, this replay reads %u and %u\n", path,
-              in_words, out_words, VEC_IN_WORDS, VEC_OUT_WORDS);
+   if (in_words != VEC_IN_WORDS || out_words != VEC_OUT_WORDS ||
+       tex_in != VEC_TEX_IN_WORDS || tex_out != VEC_TEX_OUT_WORDS) {
+      fprintf(log, "%s: records of %u, %u, %u and %u words, this replay reads %u, %u, %u and "
+              "%u\n", path, in_words, out_words, tex_in, tex_out, VEC_IN_WORDS, VEC_OUT_WORDS,
+              VEC_TEX_IN_WORDS, VEC_TEX_OUT_WORDS);
       return -1;
    }
    static struct rast_profile_buf buf;

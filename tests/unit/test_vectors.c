@@ -177,10 +177,13 @@ int main(void)
 
    /* one bit of the scan converter's output (Z, word 2), of the division's
     * (its first component at pixel 0, word 24, and the same as a dfx word,
-    * word 56), of the texture unit's (red at pixel 0 of quad 700, word 0) */
-   const char *files[4] = { "scan.out.hex", "scan.out.hex", "scan.out.hex", "tex.out.hex" };
-   const int words[4] = { 2, 24, 56, 0 }, quad[4] = { 1234, 1235, 1236, 700 };
-   for (int i = 0; i < 4; i++) {
+    * word 56), of the texture unit's (red at pixel 0 of quad 700, word 0),
+    * and of the coordinate registers it records beside its inputs (s at
+    * pixels 0, 1 of quad 800, word 25) */
+   const char *files[5] = { "scan.out.hex", "scan.out.hex", "scan.out.hex", "tex.out.hex",
+                            "tex.in.hex" };
+   const int words[5] = { 2, 24, 56, 0, 25 }, quad[5] = { 1234, 1235, 1236, 700, 800 };
+   for (int i = 0; i < 5; i++) {
       snprintf(path, sizeof(path), "%s/%s", dir, files[i]);
       CHECK(flip_one_bit(path, quad[i], words[i]), "cannot flip a bit of quad %d", quad[i]);
       fprintf(stderr, "vectors: the replay with bit 0 of word %d of %s's quad %d flipped:\n",
