@@ -180,6 +180,57 @@ static void put(FILE *f, uint64_t w)
    fprintf(f, "%016" PRIx64 "\n", w);
 }
 
+/* Four 32-bit values of a quad's pixels in two words: pixels 0, 1 in the
+ * first (low half first), 2, 3 in the second. */
+static void pair4(const uint32_t v[4], uint64_t *w)
+{
+   w[0] = v[0] | (uint64_t)v[1] << 32;
+   w[1] = v[2] | (uint64_t)v[3] << 32;
+}
+
+static void unpair4(const uint64_t *w, uint32_t v[4])
+{
+   v[0] = (uint32_t)w[0];
+   v[1] = (uint32_t)(w[0] >> 32);
+   v[2] = (uint32_t)w[1];
+   v[3] = (uint32_t)(w[1] >> 32);
+}
+
+/* A quad's record and its words in scan.out.hex (docs/vectors.md), both ways. */
+static void quad_to_words(const struct rast_vec_quad *r, uint64_t w[VEC_OUT_WORDS])
+{
+   w[0] = r->tri | (uint64_t)r->mask << 32 | (uint64_t)r->front << 36;
+   w[1] = (uint32_t)r->x | (uint64_t)(uint32_t)r->y << 32;
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+      w[2 + i] = (uint64_t)r->z[i];
+   pair4(r->w, &w[6]);
+   for (unsigned c = 0; c < VEC_MAX_COLOR; c++)
+      pair4(r->color[c], &w[8 + 2 * c]);
+   for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
+      pair4(r->persp[j], &w[VEC_OUT_SCAN + 2 * j]);
+      pair4(r->pword[j], &w[VEC_OUT_SCAN + 2 * VEC_MAX_PERSP + 2 * j]);
+   }
+}
+
+static void words_to_quad(const uint64_t w[VEC_OUT_WORDS], struct rast_vec_quad *r)
+{
+   memset(r, 0, sizeof(*r));
+   r->tri = (uint32_t)w[0];
+   r->mask = (unsigned)(w[0] >> 32) & 0xfu;
+   r->front = (w[0] >> 36) & 1u;
+   r->x = (int32_t)(uint32_t)w[1];
+   r->y = (int32_t)(uint32_t)(w[1] >> 32);
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+      r->z[i] = (int64_t)w[2 + i];
+   unpair4(&w[6], r->w);
+   for (unsigned c = 0; c < VEC_MAX_COLOR; c++)
+      unpair4(&w[8 + 2 * c], r->color[c]);
+   for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
+      unpair4(&w[VEC_OUT_SCAN + 2 * j], r->persp[j]);
+      unpair4(&w[VEC_OUT_SCAN + 2 * VEC_MAX_PERSP + 2 * j], r->pword[j]);
+   }
+}
+
 /* A value of the number system as its register holds it: a dfx word
  * ([23] sign, [22:19] L, [18:0] M for dfx24), an M.N value in two's
  * complement, binary32 bits. */
@@ -299,26 +350,11 @@ static void vec_quad(struct rast_context *rc, struct rast_quad *q)
             r.pword[j][i] = divided_word(fr->tex.ns, fr->tex.is_color[j], d);
          }
       if (v->in) {
-         FILE *f = v->out;
-         fprintf(f, "// quad %" PRIu64 "\n", v->quads);
-         put(f, r.tri | (uint64_t)r.mask << 32 | (uint64_t)r.front << 36);
-         put(f, (uint32_t)r.x | (uint64_t)(uint32_t)r.y << 32);
-         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-            put(f, (uint64_t)r.z[i]);
-         put(f, r.w[0] | (uint64_t)r.w[1] << 32);
-         put(f, r.w[2] | (uint64_t)r.w[3] << 32);
-         for (unsigned c = 0; c < VEC_MAX_COLOR; c++) {
-            put(f, r.color[c][0] | (uint64_t)r.color[c][1] << 32);
-            put(f, r.color[c][2] | (uint64_t)r.color[c][3] << 32);
-         }
-         for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
-            put(f, r.persp[j][0] | (uint64_t)r.persp[j][1] << 32);
-            put(f, r.persp[j][2] | (uint64_t)r.persp[j][3] << 32);
-         }
-         for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
-            put(f, r.pword[j][0] | (uint64_t)r.pword[j][1] << 32);
-            put(f, r.pword[j][2] | (uint64_t)r.pword[j][3] << 32);
-         }
+         uint64_t w[VEC_OUT_WORDS];
+         quad_to_words(&r, w);
+         fprintf(v->out, "// quad %" PRIu64 "\n", v->quads);
+         for (unsigned i = 0; i < VEC_OUT_WORDS; i++)
+            put(v->out, w[i]);
          v->quads++;
       } else if (v->seen >= v->nexpect) {
          if (v->mismatches++ < 10)
@@ -488,51 +524,28 @@ static bool get(FILE *f, uint64_t *w)
    }
 }
 
+static bool read_words(FILE *f, uint64_t *w, unsigned n)
+{
+   for (unsigned i = 0; i < n; i++)
+      if (!get(f, &w[i]))
+         return false;
+   return true;
+}
+
 static bool read_quad(FILE *f, struct rast_vec_quad *r)
 {
    uint64_t w[VEC_OUT_WORDS];
-   for (unsigned i = 0; i < VEC_OUT_WORDS; i++)
-      if (!get(f, &w[i]))
-         return false;
-   memset(r, 0, sizeof(*r));
-   r->tri = (uint32_t)w[0];
-   r->mask = (unsigned)(w[0] >> 32) & 0xfu;
-   r->front = (w[0] >> 36) & 1u;
-   r->x = (int32_t)(uint32_t)w[1];
-   r->y = (int32_t)(uint32_t)(w[1] >> 32);
-   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-      r->z[i] = (int64_t)w[2 + i];
-   r->w[0] = (uint32_t)w[6];
-   r->w[1] = (uint32_t)(w[6] >> 32);
-   r->w[2] = (uint32_t)w[7];
-   r->w[3] = (uint32_t)(w[7] >> 32);
-   for (unsigned c = 0; c < VEC_MAX_COLOR; c++) {
-      r->color[c][0] = (uint32_t)w[8 + 2 * c];
-      r->color[c][1] = (uint32_t)(w[8 + 2 * c] >> 32);
-      r->color[c][2] = (uint32_t)w[9 + 2 * c];
-      r->color[c][3] = (uint32_t)(w[9 + 2 * c] >> 32);
-   }
-   for (unsigned j = 0; j < VEC_MAX_PERSP; j++) {
-      const uint64_t a = w[VEC_OUT_SCAN + 2 * j], b = w[VEC_OUT_SCAN + 2 * j + 1];
-      r->persp[j][0] = (uint32_t)a;
-      r->persp[j][1] = (uint32_t)(a >> 32);
-      r->persp[j][2] = (uint32_t)b;
-      r->persp[j][3] = (uint32_t)(b >> 32);
-      const unsigned o = VEC_OUT_SCAN + 2 * VEC_MAX_PERSP + 2 * j;
-      r->pword[j][0] = (uint32_t)w[o];
-      r->pword[j][1] = (uint32_t)(w[o] >> 32);
-      r->pword[j][2] = (uint32_t)w[o + 1];
-      r->pword[j][3] = (uint32_t)(w[o + 1] >> 32);
-   }
+   if (!read_words(f, w, VEC_OUT_WORDS))
+      return false;
+   words_to_quad(w, r);
    return true;
 }
 
 static bool read_triangle(FILE *f, struct rast_vec_tri *t)
 {
    uint64_t w[VEC_IN_WORDS];
-   for (unsigned i = 0; i < VEC_IN_WORDS; i++)
-      if (!get(f, &w[i]))
-         return false;
+   if (!read_words(f, w, VEC_IN_WORDS))
+      return false;
    memset(t, 0, sizeof(*t));
    t->half_pixel = w[0] & 1u;
    t->bottom_rule = (w[0] >> 1) & 1u;
@@ -623,14 +636,6 @@ struct replay_binding {
    struct ns_stats stats;
    uint8_t *texels[TEX_MAX_LEVELS];
 };
-
-static bool read_words(FILE *f, uint64_t *w, unsigned n)
-{
-   for (unsigned i = 0; i < n; i++)
-      if (!get(f, &w[i]))
-         return false;
-   return true;
-}
 
 static void split(uint64_t w, float *a, float *b)
 {
