@@ -408,6 +408,12 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    draw_wide_point_sprites(fp->draw, FALSE);
    draw_enable_point_sprites(fp->draw, FALSE);
    draw_wide_line_threshold(fp->draw, 10000.0f);
+   /* GL ES (rasterizer point_tri_clip): draw passes points whatever their
+    * centre, and rast_point scissors them to the viewport, as llvmpipe
+    * (lp_context.c) does; a wide point by the viewport's edge keeps its
+    * pixels inside instead of vanishing with its centre.  Elsewhere draw
+    * clips points by their centre, as GL 2.1 says. */
+   draw_set_driver_clipping(fp->draw, FALSE, FALSE, FALSE, TRUE);
 
    /* GL 1.x extras done by draw with a modified fragment shader, as in
     * softpipe: smooth lines and points, polygon stipple. */

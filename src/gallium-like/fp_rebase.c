@@ -40,26 +40,122 @@ static bool is_coord_sampling(enum tgsi_opcode op)
           op == TGSI_OPCODE_TXD;
 }
 
-static void scan_instruction(struct fp_fragment_shader *fs, const struct tgsi_full_instruction *in)
+/* The derivative of a coordinate less a constant is the coordinate's, and
+ * so is the derivative of a constant times it: such a derivative neither
+ * qualifies nor spoils a rebase.  Without this, a shader passing dFdx and
+ * dFdy of its coordinate to textureGrad saw the coordinate unrebased while
+ * texture() of it in another shader saw it rebased, and the two sampled
+ * different bits (piglit arb_shader_texture_lod-texgrad compares exactly
+ * those; st computes dFdy of the coordinate times the window's y flip).
+ * So the scan follows, in straight-line code, each temporary component
+ * that holds an input component times a constant (a MOV or a MUL by a
+ * constant or immediate): a derivative of it is harmless, any other read
+ * is a read of the input. */
+#define SCAN_TEMPS 64
+
+struct rebase_scan {
+   struct fp_fragment_shader *fs;
+   bool flow;                       /* branches or loops: nothing followed */
+   int16_t scaled[SCAN_TEMPS][4];   /* input * 4 + component, or -1 */
+};
+
+static bool is_derivative(enum tgsi_opcode op)
 {
+   return op == TGSI_OPCODE_DDX || op == TGSI_OPCODE_DDY || op == TGSI_OPCODE_DDX_FINE ||
+          op == TGSI_OPCODE_DDY_FINE;
+}
+
+static bool is_flow(enum tgsi_opcode op)
+{
+   switch (op) {
+   case TGSI_OPCODE_IF: case TGSI_OPCODE_UIF: case TGSI_OPCODE_ELSE: case TGSI_OPCODE_ENDIF:
+   case TGSI_OPCODE_BGNLOOP: case TGSI_OPCODE_ENDLOOP: case TGSI_OPCODE_BRK:
+   case TGSI_OPCODE_CONT: case TGSI_OPCODE_CAL: case TGSI_OPCODE_RET:
+   case TGSI_OPCODE_BGNSUB: case TGSI_OPCODE_ENDSUB: case TGSI_OPCODE_SWITCH:
+   case TGSI_OPCODE_CASE: case TGSI_OPCODE_DEFAULT: case TGSI_OPCODE_ENDSWITCH:
+      return true;
+   default:
+      return false;
+   }
+}
+
+static bool plain(const struct tgsi_full_src_register *src)
+{
+   return !src->Register.Indirect && !src->Register.Absolute && !src->Register.Dimension;
+}
+
+/* Whether `in` writes a temporary an input times a constant: a MOV of the
+ * input, or a MUL of it by a constant or an immediate, unsaturated. */
+static int scaled_input(const struct rebase_scan *sc, const struct tgsi_full_instruction *in)
+{
+   const enum tgsi_opcode op = in->Instruction.Opcode;
+   if (sc->flow || in->Instruction.Saturate || in->Dst[0].Register.File != TGSI_FILE_TEMPORARY ||
+       in->Dst[0].Register.Indirect || in->Dst[0].Register.Index >= SCAN_TEMPS)
+      return -1;
+   if (op == TGSI_OPCODE_MOV)
+      return in->Src[0].Register.File == TGSI_FILE_INPUT && plain(&in->Src[0]) ? 0 : -1;
+   if (op != TGSI_OPCODE_MUL)
+      return -1;
+   for (int s = 0; s < 2; s++) {
+      const struct tgsi_full_src_register *k = &in->Src[1 - s];
+      if (in->Src[s].Register.File == TGSI_FILE_INPUT && plain(&in->Src[s]) &&
+          (k->Register.File == TGSI_FILE_CONSTANT || k->Register.File == TGSI_FILE_IMMEDIATE) &&
+          !k->Register.Indirect)
+         return s;
+   }
+   return -1;
+}
+
+static void scan_instruction(struct rebase_scan *sc, const struct tgsi_full_instruction *in)
+{
+   struct fp_fragment_shader *fs = sc->fs;
    const enum tgsi_opcode op = in->Instruction.Opcode;
    int sampler = -1;
    for (unsigned s = 0; s < in->Instruction.NumSrcRegs; s++)
       if (in->Src[s].Register.File == TGSI_FILE_SAMPLER && !in->Src[s].Register.Indirect)
          sampler = in->Src[s].Register.Index;
+   const int copy = scaled_input(sc, in);
+   const unsigned wmask = in->Dst[0].Register.WriteMask;
+   int16_t written[4] = { -1, -1, -1, -1 };
 
    for (unsigned s = 0; s < in->Instruction.NumSrcRegs; s++) {
       const struct tgsi_full_src_register *src = &in->Src[s];
-      if (src->Register.File != TGSI_FILE_INPUT)
-         continue;
       const unsigned swz[4] = { src->Register.SwizzleX, src->Register.SwizzleY,
                                 src->Register.SwizzleZ, src->Register.SwizzleW };
       /* the operand's channels the instruction reads, before the swizzle */
-      const unsigned read = tgsi_util_get_src_usage_mask(op, s, in->Dst[0].Register.WriteMask,
-                                                         0, 1, 2, 3, in->Texture.Texture,
+      const unsigned read = tgsi_util_get_src_usage_mask(op, s, wmask, 0, 1, 2, 3,
+                                                         in->Texture.Texture,
                                                          in->Memory.Texture);
-      const bool direct = !src->Register.Indirect && !src->Register.Absolute &&
-                          !src->Register.Negate && !src->Register.Dimension;
+      if (src->Register.File == TGSI_FILE_TEMPORARY) {
+         /* a temporary holding a scaled input: harmless under a derivative */
+         for (unsigned c = 0; c < 4; c++) {
+            if (!(read >> c & 1u))
+               continue;
+            if (src->Register.Indirect) {
+               for (unsigned t = 0; t < SCAN_TEMPS; t++)
+                  for (unsigned k = 0; k < 4; k++)
+                     if (sc->scaled[t][k] >= 0)
+                        fs->coord_other[sc->scaled[t][k] / 4] |= (uint8_t)(1u << sc->scaled[t][k] % 4);
+               continue;
+            }
+            const int16_t v = src->Register.Index < SCAN_TEMPS
+                                 ? sc->scaled[src->Register.Index][swz[c]] : -1;
+            if (v >= 0 && !(is_derivative(op) && plain(src)))
+               fs->coord_other[v / 4] |= (uint8_t)(1u << v % 4);
+         }
+         continue;
+      }
+      if (src->Register.File != TGSI_FILE_INPUT)
+         continue;
+      const bool direct = plain(src) && !src->Register.Negate;
+      if (direct && is_derivative(op))
+         continue;
+      if ((int)s == copy && src->Register.Index < RAST_MAX_VARYINGS) {
+         for (unsigned c = 0; c < 4; c++)
+            if (wmask >> c & 1u)
+               written[c] = (int16_t)(src->Register.Index * 4 + swz[c]);
+         continue;
+      }
       const unsigned axes =
          s == 0 && direct && sampler >= 0 && sampler < 32 && is_coord_sampling(op)
             ? wrapped_axes(in->Texture.Texture) : 0;
@@ -78,11 +174,28 @@ static void scan_instruction(struct fp_fragment_shader *fs, const struct tgsi_fu
             fs->coord_other[src->Register.Index] |= (uint8_t)(1u << swz[c]);
       }
    }
+   /* what the instruction leaves in a temporary it writes */
+   for (unsigned d = 0; d < in->Instruction.NumDstRegs; d++) {
+      const struct tgsi_full_dst_register *dst = &in->Dst[d];
+      if (dst->Register.File != TGSI_FILE_TEMPORARY)
+         continue;
+      if (dst->Register.Indirect) {
+         memset(sc->scaled, 0xff, sizeof(sc->scaled));
+         continue;
+      }
+      if (dst->Register.Index >= SCAN_TEMPS)
+         continue;
+      for (unsigned c = 0; c < 4; c++)
+         if (dst->Register.WriteMask >> c & 1u)
+            sc->scaled[dst->Register.Index][c] = d == 0 ? written[c] : -1;
+   }
 }
 
 void fp_rebase_scan(struct fp_fragment_shader *fs)
 {
    struct tgsi_parse_context p;
+   struct rebase_scan sc = { .fs = fs, .flow = false };
+   memset(sc.scaled, 0xff, sizeof(sc.scaled));
    memset(fs->coord_use, 0, sizeof(fs->coord_use));
    memset(fs->coord_other, 0, sizeof(fs->coord_other));
    if (tgsi_parse_init(&p, fs->tokens) != TGSI_PARSE_OK) {
@@ -91,8 +204,19 @@ void fp_rebase_scan(struct fp_fragment_shader *fs)
    }
    while (!tgsi_parse_end_of_tokens(&p)) {
       tgsi_parse_token(&p);
+      if (p.FullToken.Token.Type == TGSI_TOKEN_TYPE_INSTRUCTION &&
+          is_flow(p.FullToken.FullInstruction.Instruction.Opcode))
+         sc.flow = true;
+   }
+   tgsi_parse_free(&p);
+   if (tgsi_parse_init(&p, fs->tokens) != TGSI_PARSE_OK) {
+      memset(fs->coord_other, 0xff, sizeof(fs->coord_other));
+      return;
+   }
+   while (!tgsi_parse_end_of_tokens(&p)) {
+      tgsi_parse_token(&p);
       if (p.FullToken.Token.Type == TGSI_TOKEN_TYPE_INSTRUCTION)
-         scan_instruction(fs, &p.FullToken.FullInstruction);
+         scan_instruction(&sc, &p.FullToken.FullInstruction);
    }
    tgsi_parse_free(&p);
 }

@@ -363,6 +363,17 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
    const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
    if (!u)
       return;
+   /* Outside the fragment stage tgsi's quad is four unrelated vertices, not
+    * neighbouring pixels: the implicit level of detail is 0 there (GLSL ES
+    * 1.00 8.7: the base level, with the magnification filter), and a bias
+    * is added to 0.  A LOD from the vertices' differences would pick any
+    * level. */
+   if (ts->stage != PIPE_SHADER_FRAGMENT) {
+      if (control == TGSI_SAMPLER_LOD_NONE)
+         control = TGSI_SAMPLER_LOD_ZERO;
+      else if (control == TGSI_SAMPLER_LOD_BIAS)
+         control = TGSI_SAMPLER_LOD_EXPLICIT;
+   }
 
    /* tgsi's operands per target: the array layer, the shadow reference. */
    struct tex_quad q;

@@ -113,6 +113,7 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_TEXTURE_HALF_FLOAT_LINEAR:
    case PIPE_CAP_TEXTURE_BARRIER:
    case PIPE_CAP_ANISOTROPIC_FILTER:       /* accepted; sampled isotropically */
+   case PIPE_CAP_CLIP_HALFZ:               /* draw clips and maps z in [0, w] */
       return 1;
    case PIPE_CAP_ALPHA_TEST:                 /* st lowers it into the shader */
    case PIPE_CAP_SEAMLESS_CUBE_MAP:

@@ -3,6 +3,8 @@
  * once, when created or set, never per pixel.  Anything that changes what
  * the model draws first flushes what draw still holds.
  */
+#include <math.h>
+
 #include "util/u_memory.h"
 #include "util/u_inlines.h"
 #include "util/u_helpers.h"
@@ -214,6 +216,7 @@ static void *fp_create_rasterizer_state(struct pipe_context *pipe,
    s->rast.point_size_per_vertex = r->point_size_per_vertex;
    s->rast.point_quad_rasterization = r->point_quad_rasterization;
    s->rast.sprite_coord_lower_left = r->sprite_coord_mode == PIPE_SPRITE_COORD_LOWER_LEFT;
+   s->rast.point_tri_clip = r->point_tri_clip;
    return s;
 }
 
@@ -336,6 +339,17 @@ static void fp_set_viewport_states(struct pipe_context *pipe, unsigned start, un
 {
    struct fp_context *fp = fp_context(pipe);
    draw_set_viewport_states(fp->draw, start, num, vp);
+   if (start != 0 || num == 0)
+      return;
+   /* The pixels of viewport 0 as llvmpipe rounds them (lp_setup.c's vpwh,
+    * whose maximum is inclusive), for the points draw leaves unclipped. */
+   const float half_height = fabsf(vp->scale[1]);
+   const float x0 = vp->translate[0] - vp->scale[0];
+   const float y0 = vp->translate[1] - half_height;
+   struct rast_scissor r = { (int)(x0 + 0.499f), (int)(y0 + 0.499f),
+                             (int)(vp->scale[0] * 2.0f + x0 - 0.501f) + 1,
+                             (int)(half_height * 2.0f + y0 - 0.501f) + 1 };
+   rast_set_viewport(fp->rast, &r);
 }
 
 static void fp_set_scissor_states(struct pipe_context *pipe, unsigned start, unsigned num,

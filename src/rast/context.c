@@ -28,6 +28,7 @@ struct rast_context *rast_create(const struct rast_profile *profile)
    rc->rs.line_width = 1.0f;
    rc->rs.point_size = 1.0f;
    rc->rs.point_quad_rasterization = true;
+   rc->viewport = (struct rast_scissor){ -(1 << 30), -(1 << 30), 1 << 30, 1 << 30 };
    rc->vl.vertex_size = 1;
    rc->texfmt = numsys_default();
    rc->dirty = true;
@@ -70,6 +71,13 @@ void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
 {
    rast_flush(rc);
    rc->scissor = *sc;
+   state_changed(rc);
+}
+
+void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp)
+{
+   rast_flush(rc);
+   rc->viewport = *vp;
    state_changed(rc);
 }
 

@@ -63,9 +63,28 @@ void rast_draw_point(struct rast_context *rc, const float (*v)[4])
       rast_point_pass(rc, v);
 }
 
+/* point_tri_clip: the pass's clip narrowed to the viewport; false when the
+ * point's square (size, its snap and the 2-pixel margin of
+ * rast_prim_extent) cannot meet it, which also keeps a centre far outside
+ * the target (draw passes any finite one) out of the XY registers. */
+static bool point_viewport_clip(struct rast_context *rc, const float *pos, float size)
+{
+   const struct rast_scissor vp = rc->viewport;
+   struct rast_scissor *c = &rc->clip;
+   const int64_t minx = (int64_t)vp.minx - rc->org_x, maxx = (int64_t)vp.maxx - rc->org_x;
+   const int64_t miny = (int64_t)vp.miny - rc->org_y, maxy = (int64_t)vp.maxy - rc->org_y;
+   if (minx > c->minx) c->minx = (int)minx;
+   if (miny > c->miny) c->miny = (int)miny;
+   if (maxx < c->maxx) c->maxx = (int)maxx;
+   if (maxy < c->maxy) c->maxy = (int)maxy;
+   const double r = size * 0.5 + 2.0;
+   return c->minx < c->maxx && c->miny < c->maxy &&
+          pos[0] + r > (double)(c->minx + rc->org_x) && pos[0] - r < (double)(c->maxx + rc->org_x) &&
+          pos[1] + r > (double)(c->miny + rc->org_y) && pos[1] - r < (double)(c->maxy + rc->org_y);
+}
+
 void rast_point_pass(struct rast_context *rc, const float (*v)[4])
 {
-   struct rast_front *fr = rast_front_begin(rc, true);
    const struct rast_raster_state *rs = &rc->rs;
    const struct rast_profile *prof = rc->profile;
    const float *pos = v[rc->vl.pos_slot];
@@ -78,6 +97,12 @@ void rast_point_pass(struct rast_context *rc, const float (*v)[4])
       size = 1.0f;
    else if (size > RAST_MAX_POINT_SIZE)
       size = RAST_MAX_POINT_SIZE;
+   const struct rast_scissor clip = rc->clip;
+   if (rs->point_tri_clip && !point_viewport_clip(rc, pos, size)) {
+      rc->clip = clip;
+      return;
+   }
+   struct rast_front *fr = rast_front_begin(rc, true);
    rc->stats.points++;
 
    /* The square's edges on the 1/256 grid, centres at multiples of 256. */
@@ -148,4 +173,5 @@ void rast_point_pass(struct rast_context *rc, const float (*v)[4])
    fr->quad[0].front_facing = fr->quad[1].front_facing = true;
    rast_setup_constants(fr, v);
    rast_scan_convex(rc, fr);
+   rc->clip = clip;
 }

@@ -229,6 +229,10 @@ struct rast_raster_state {
                                        sprites); else GL 2.1's whole-pixel point rule */
    bool sprite_coord_lower_left; /* the sprite coordinate t grows up the window (gallium's
                                     PIPE_SPRITE_COORD_LOWER_LEFT), else down */
+   bool point_tri_clip;          /* points reach rast_point unclipped, whatever their centre
+                                    (GL ES: a wide point by the viewport's edge keeps its
+                                    pixels inside); each is scissored to the viewport
+                                    (rast_set_viewport), as llvmpipe does */
 };
 
 struct rast_scissor { int minx, miny, maxx, maxy; };   /* max exclusive */
@@ -377,6 +381,9 @@ const struct rast_profile *rast_get_profile(const struct rast_context *rc);
 void rast_set_framebuffer(struct rast_context *rc, const struct rast_framebuffer *fb);
 void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_state *rs);
 void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc);
+/* The viewport's pixels (llvmpipe's rounding of the viewport transform), for
+ * point_tri_clip. */
+void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp);
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa);
 void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back);
 void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blend);

@@ -24,6 +24,7 @@ struct rast_context {
    struct rast_framebuffer fb;
    struct rast_raster_state rs;
    struct rast_scissor scissor;
+   struct rast_scissor viewport;
    struct rast_depth_stencil_state dsa;
    uint8_t stencil_ref[2];
    struct rast_blend_state blend;

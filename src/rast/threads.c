@@ -209,6 +209,7 @@ static void sync_state(struct rast_context *w, const struct rast_context *rc, un
    w->fb = rc->fb;
    w->rs = rc->rs;
    w->scissor = rc->scissor;
+   w->viewport = rc->viewport;
    w->dsa = rc->dsa;
    memcpy(w->stencil_ref, rc->stencil_ref, sizeof(w->stencil_ref));
    w->blend = rc->blend;

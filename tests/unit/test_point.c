@@ -97,6 +97,9 @@ static bool ref_covered(int i, int j, float x, float y, float size, bool quad, b
 
 static float vert[4][4];
 static struct rast_raster_state rs;
+/* point_tri_clip: the reference's pixels inside this viewport only */
+static bool ref_vp_on;
+static struct rast_scissor ref_vp;
 
 static void set_raster(bool quad, bool half, bool bottom, bool lower_left, float state_size,
                        bool per_vertex)
@@ -132,7 +135,9 @@ static unsigned check_cover_as(float x, float y, float size, float ref_size)
       for (int i = (int)x - 140; i <= (int)x + 140; i++) {
          bool ref = ref_covered(i, j, x, y, rs.point_size_per_vertex ? ref_size : rs.point_size,
                                 rs.point_quad_rasterization, rs.half_pixel_center,
-                                rs.bottom_edge_rule);
+                                rs.bottom_edge_rule) &&
+                    (!ref_vp_on || (i >= ref_vp.minx && i < ref_vp.maxx && j >= ref_vp.miny &&
+                                    j < ref_vp.maxy));
          bool got = i >= 0 && j >= 0 && i < W && j < H &&
                     t.stamp[(size_t)j * W + (size_t)i] == t.id;
          n += ref;
@@ -218,6 +223,51 @@ static unsigned coverage_run(const char *profile)
    }
    CHECK(rast_get_stats(t.rc)->points == points, "points counted: %llu of %u",
          (unsigned long long)rast_get_stats(t.rc)->points, points);
+
+   /* point_tri_clip (GL ES: draw passes points whatever their centre): the
+    * square scissored to the viewport, as llvmpipe does; a centre far
+    * outside draws nothing and reaches no register (no XY saturation) */
+   unsigned vp_bad = 0;
+   for (int n = 0; n < 2000; n++) {
+      set_raster(true, true, n & 1, false, 1.0f, true);
+      rs.point_tri_clip = true;
+      rast_set_raster_state(t.rc, &rs);
+      const int x0 = (int)(t_rand() * W / 2), y0 = (int)(t_rand() * H / 2);
+      ref_vp = (struct rast_scissor){ x0, y0, x0 + 4 + (int)(t_rand() * W / 2),
+                                      y0 + 4 + (int)(t_rand() * H / 2) };
+      rast_set_viewport(t.rc, &ref_vp);
+      ref_vp_on = true;
+      const float size = (float)(1 + n % 31);
+      /* the centre within 20 px of an edge of the viewport, either side */
+      float x = (float)(ref_vp.minx + t_rand() * (ref_vp.maxx - ref_vp.minx));
+      float y = (float)(ref_vp.miny + t_rand() * (ref_vp.maxy - ref_vp.miny));
+      const float off = (float)(t_rand() * 40 - 20);
+      switch (n % 4) {
+      case 0: x = (float)ref_vp.minx + off; break;
+      case 1: x = (float)ref_vp.maxx + off; break;
+      case 2: y = (float)ref_vp.miny + off; break;
+      default: y = (float)ref_vp.maxy + off; break;
+      }
+      unsigned b = check_cover(x, y, size);
+      if (b && vp_bad < 10)
+         fprintf(stderr, "%s viewport (%d,%d)-(%d,%d) point (%.9g, %.9g) size %g: %u differ\n",
+                 profile, ref_vp.minx, ref_vp.miny, ref_vp.maxx, ref_vp.maxy, x, y, size, b);
+      vp_bad += b;
+   }
+   const struct fx_sat xy = rast_get_stats(t.rc)->sat[RAST_REG_XY];
+   static const float far[] = { -1e30f, -3e6f, 5e5f, 1e30f };
+   for (unsigned i = 0; i < 4; i++) {
+      point(far[i], 40.0f, 200.0f);
+      vp_bad += t.count != 0;
+      point(40.0f, far[i], 200.0f);
+      vp_bad += t.count != 0;
+   }
+   CHECK(rast_get_stats(t.rc)->sat[RAST_REG_XY].high == xy.high &&
+         rast_get_stats(t.rc)->sat[RAST_REG_XY].low == xy.low,
+         "a point far outside the viewport saturated the XY registers");
+   ref_vp_on = false;
+   CHECK(vp_bad == 0, "%s: %u pixels differ with the point scissored to the viewport", profile,
+         vp_bad);
    printf("point (%s): %u points, %u pixels differ from the reference\n", profile, points, bad);
    t_fini(&t);
    return bad;
