@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the piglit test lists (gles2, gles3, raster, texture, smoke) from piglit's profiles.
+"""Writes the piglit test lists (gles2, gles3, raster, texture, xfb, smoke) from piglit's profiles.
 
 usage: make-lists.py [--piglit DIR] [--out DIR] [--check]
 
@@ -146,6 +146,16 @@ def in_raster(t):
     if RASTER_GROUPS.match(t.group):
         return True
     return bool(CORE_GROUPS.match(t.group) and RASTER_WORDS.search(t.lname))
+
+
+XFB_GROUPS = re.compile(r"^spec@(ext_transform_feedback|arb_transform_feedback[23]"
+                        r"|arb_transform_feedback_overflow_query)$")
+
+
+def in_xfb(t):
+    """Transform feedback is off topic for raster and texture, not here."""
+    return es_version(t) is None and t.program != "glslparsertest" and \
+        t.profile != "glslparser" and bool(XFB_GROUPS.match(t.group))
 
 
 def in_texture(t):
@@ -324,6 +334,9 @@ def main():
         "texture": ([t.name for t in tests if in_texture(t)],
                     "# Desktop GL tests about textures: formats, wrap, filtering, mipmaps, cube\n"
                     "# maps, NPOT, LOD, texelFetch, shadow samplers (see docs/piglit.md).\n"),
+        "xfb": ([t.name for t in tests if in_xfb(t)],
+                "# Desktop GL tests of transform feedback: EXT_transform_feedback,\n"
+                "# ARB_transform_feedback2/3, the overflow queries (see docs/piglit.md).\n"),
     }
     status = 0
     for name, (names, what) in lists.items():

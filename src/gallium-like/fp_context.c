@@ -245,6 +245,7 @@ static void fp_destroy(struct pipe_context *pipe)
    }
    for (unsigned i = 0; i < PIPE_MAX_ATTRIBS; i++)
       pipe_vertex_buffer_unreference(&fp->vertex_buffer[i]);
+   fp_so_release(fp);
 
    if (fp->draw)
       draw_destroy(fp->draw);
@@ -333,6 +334,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp_init_blit_functions(fp);
    fp_init_query_functions(fp);
    fp_init_draw_functions(fp);
+   fp_init_so_functions(fp);
 
    fp->rast = rast_create(s->profile);
    if (!fp->rast)

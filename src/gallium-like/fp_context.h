@@ -148,6 +148,13 @@ struct fp_context {
    enum pipe_render_cond_flag render_cond_mode;
    unsigned active_occlusion_queries;
 
+   /* Transform feedback (fp_so.c): draw's targets, and the primitives
+    * written and needed per vertex stream since the context began. */
+   struct draw_so_target *so_targets[PIPE_MAX_SO_BUFFERS];
+   unsigned num_so_targets;
+   uint64_t so_written[PIPE_MAX_VERTEX_STREAMS], so_generated[PIPE_MAX_VERTEX_STREAMS];
+   unsigned active_primgen_queries;
+
    bool print_stats;
    struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
@@ -182,6 +189,8 @@ void fp_vectors_start(struct fp_context *fp);
 /* Every counter of the model, up to date with what it has drawn. */
 const struct rast_stats *fp_context_stats(struct fp_context *fp);
 void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
+void fp_init_so_functions(struct fp_context *fp);        /* fp_so.c */
+void fp_so_release(struct fp_context *fp);
 
 /* fp_context.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */
 void fp_context_frame_presented(struct fp_context *fp);

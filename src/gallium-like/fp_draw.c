@@ -25,9 +25,11 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
       util_draw_indirect(pipe, info, indirect);
       return;
    }
-   if (!draws[0].count || !info->instance_count)
+   /* glDrawTransformFeedback: draw takes the count from the target */
+   const bool count_from_so = indirect && indirect->count_from_stream_output;
+   if ((!draws[0].count && !count_from_so) || !info->instance_count)
       return;
-   if (!fp->vs || !fp->velems || !(fp->sample_mask & 1))
+   if (!fp->vs || !fp->velems)
       return;
    if (!fp_check_render_cond(fp))
       return;

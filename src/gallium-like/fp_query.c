@@ -1,6 +1,7 @@
 /*
  * Queries: occlusion from the model's samples_passed counter, time from
- * the OS clock, the model's counters (fp_query_driver.c).  Rendering is
+ * the OS clock, transform feedback from draw's stream output counts
+ * (fp_so.c), the model's counters (fp_query_driver.c).  Rendering is
  * synchronous, so every result is ready.
  */
 #include "util/u_memory.h"
@@ -10,17 +11,34 @@
 #include "fp_context.h"
 
 struct fp_query {
-   unsigned type;
+   unsigned type, index;            /* index: the vertex stream */
    uint64_t start, end;
+   /* stream output: primitives written and needed, per stream (the
+    * counts at begin, then what was added by the end) */
+   uint64_t written[PIPE_MAX_VERTEX_STREAMS], generated[PIPE_MAX_VERTEX_STREAMS];
    bool active;
    struct fp_counter_query *counter;   /* a driver query: the model's counters */
 };
 
+static bool fp_is_so(unsigned type)
+{
+   return type == PIPE_QUERY_PRIMITIVES_EMITTED || type == PIPE_QUERY_PRIMITIVES_GENERATED ||
+          type == PIPE_QUERY_SO_STATISTICS || type == PIPE_QUERY_SO_OVERFLOW_PREDICATE ||
+          type == PIPE_QUERY_SO_OVERFLOW_ANY_PREDICATE;
+}
+
 static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned type,
                                           unsigned index)
 {
-   (void)pipe; (void)index;
+   (void)pipe;
+   if (fp_is_so(type) && index >= PIPE_MAX_VERTEX_STREAMS)
+      return NULL;
    switch (type) {
+   case PIPE_QUERY_PRIMITIVES_EMITTED:
+   case PIPE_QUERY_PRIMITIVES_GENERATED:
+   case PIPE_QUERY_SO_STATISTICS:
+   case PIPE_QUERY_SO_OVERFLOW_PREDICATE:
+   case PIPE_QUERY_SO_OVERFLOW_ANY_PREDICATE:
    case PIPE_QUERY_OCCLUSION_COUNTER:
    case PIPE_QUERY_OCCLUSION_PREDICATE:
    case PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE:
@@ -36,6 +54,7 @@ static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned ty
    if (!q)
       return NULL;
    q->type = type;
+   q->index = index;
    if (fp_is_driver_query(type) && !(q->counter = fp_counter_query_create(type))) {
       FREE(q);
       return NULL;
@@ -64,6 +83,15 @@ static uint64_t fp_query_now(struct fp_context *fp, unsigned type)
    return os_time_get_nano();
 }
 
+/* The stream output counts since begin (`end` false: the counts now). */
+static void fp_so_counts(struct fp_context *fp, struct fp_query *q, bool end)
+{
+   for (unsigned s = 0; s < PIPE_MAX_VERTEX_STREAMS; s++) {
+      q->written[s] = fp->so_written[s] - (end ? q->written[s] : 0);
+      q->generated[s] = fp->so_generated[s] - (end ? q->generated[s] : 0);
+   }
+}
+
 static bool fp_begin_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
    struct fp_context *fp = fp_context(pipe);
@@ -74,6 +102,14 @@ static bool fp_begin_query(struct pipe_context *pipe, struct pipe_query *pq)
       return true;
    }
    draw_flush(fp->draw);
+   if (fp_is_so(q->type)) {
+      /* draw counts generated primitives without a target only when asked */
+      if (q->type == PIPE_QUERY_PRIMITIVES_GENERATED &&
+          fp->active_primgen_queries++ == 0)
+         draw_collect_primitives_generated(fp->draw, true);
+      fp_so_counts(fp, q, false);
+      return true;
+   }
    q->start = fp_query_now(fp, q->type);
    q->end = q->start;
    return true;
@@ -89,6 +125,12 @@ static bool fp_end_query(struct pipe_context *pipe, struct pipe_query *pq)
       return true;
    }
    draw_flush(fp->draw);
+   if (fp_is_so(q->type)) {
+      if (q->type == PIPE_QUERY_PRIMITIVES_GENERATED && --fp->active_primgen_queries == 0)
+         draw_collect_primitives_generated(fp->draw, false);
+      fp_so_counts(fp, q, true);
+      return true;
+   }
    q->end = fp_query_now(fp, q->type);
    return true;
 }
@@ -116,6 +158,24 @@ static bool fp_get_query_result(struct pipe_context *pipe, struct pipe_query *pq
       break;
    case PIPE_QUERY_TIMESTAMP:
       result->u64 = q->end;
+      break;
+   case PIPE_QUERY_PRIMITIVES_EMITTED:
+      result->u64 = q->written[q->index];
+      break;
+   case PIPE_QUERY_PRIMITIVES_GENERATED:
+      result->u64 = q->generated[q->index];
+      break;
+   case PIPE_QUERY_SO_STATISTICS:
+      result->so_statistics.num_primitives_written = q->written[q->index];
+      result->so_statistics.primitives_storage_needed = q->generated[q->index];
+      break;
+   case PIPE_QUERY_SO_OVERFLOW_PREDICATE:
+      result->b = q->generated[q->index] > q->written[q->index];
+      break;
+   case PIPE_QUERY_SO_OVERFLOW_ANY_PREDICATE:
+      result->b = false;
+      for (unsigned s = 0; s < PIPE_MAX_VERTEX_STREAMS; s++)
+         result->b |= q->generated[s] > q->written[s];
       break;
    default:
       return false;

@@ -114,11 +114,17 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_TEXTURE_BARRIER:
    case PIPE_CAP_ANISOTROPIC_FILTER:       /* accepted; sampled isotropically */
    case PIPE_CAP_CLIP_HALFZ:               /* draw clips and maps z in [0, w] */
+   case PIPE_CAP_STREAM_OUTPUT_PAUSE_RESUME:        /* draw's stream output (fp_so.c) */
+   case PIPE_CAP_STREAM_OUTPUT_INTERLEAVE_BUFFERS:
       return 1;
+   case PIPE_CAP_MAX_STREAM_OUTPUT_BUFFERS:
+      return PIPE_MAX_SO_BUFFERS;
+   case PIPE_CAP_MAX_STREAM_OUTPUT_SEPARATE_COMPONENTS:
+   case PIPE_CAP_MAX_STREAM_OUTPUT_INTERLEAVED_COMPONENTS:
+      return 16 * 4;
    case PIPE_CAP_ALPHA_TEST:                 /* st lowers it into the shader */
    case PIPE_CAP_SEAMLESS_CUBE_MAP:
    case PIPE_CAP_TEXTURE_MULTISAMPLE:
-   case PIPE_CAP_MAX_STREAM_OUTPUT_BUFFERS:
    case PIPE_CAP_TEXTURE_BUFFER_OBJECTS:
    case PIPE_CAP_SHADER_STENCIL_EXPORT:
    case PIPE_CAP_COMPUTE:

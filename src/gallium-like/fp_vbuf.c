@@ -57,6 +57,26 @@ static bool fp_is_sprite_coord(const struct fp_context *fp, unsigned name, unsig
           (fp->rasterizer->base.sprite_coord_enable >> index & 1u);
 }
 
+/* The vertex shader's output feeding fragment input (name, index), or -1.
+ * Generic varyings reach TGSI shifted by 9 (st), and nir_to_tgsi spells a
+ * shifted location of 32 or more as PATCH[location - 32] in one stage and
+ * as GENERIC[location] in another (the vertex shader of a program with
+ * transform feedback varyings, and its fragment shader: piglit
+ * ext_transform_feedback-max-varyings): the two name the same slot. */
+static int fp_vs_output(struct draw_context *draw, unsigned name, unsigned index)
+{
+   int src = draw_find_shader_output(draw, name, index);
+   if (src >= 0)
+      return src;
+   if (name == TGSI_SEMANTIC_COLOR)
+      return draw_find_shader_output(draw, TGSI_SEMANTIC_BCOLOR, index);
+   if (name == TGSI_SEMANTIC_GENERIC && index >= 32)
+      return draw_find_shader_output(draw, TGSI_SEMANTIC_PATCH, index - 32);
+   if (name == TGSI_SEMANTIC_PATCH)
+      return draw_find_shader_output(draw, TGSI_SEMANTIC_GENERIC, index + 32);
+   return -1;
+}
+
 /* The rebase of a PERSPECTIVE input (fp_rebase.c) with the samplers bound. */
 static void rebase_of(const struct fp_context *fp, unsigned i, struct rast_varying *vr)
 {
@@ -104,9 +124,7 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
       for (unsigned i = 0; i < n; i++) {
          unsigned name = info->input_semantic_name[i];
          unsigned index = info->input_semantic_index[i];
-         int src = draw_find_shader_output(draw, name, index);
-         if (name == TGSI_SEMANTIC_COLOR && src < 0)
-            src = draw_find_shader_output(draw, TGSI_SEMANTIC_BCOLOR, index);
+         const int src = fp_vs_output(draw, name, index);
          vl.varying[i].slot = (uint8_t)vinfo->num_attribs;
          vl.varying[i].interp = fp_interp(info->input_interpolate[i]);
          /* fp_fs.c computes these itself: nothing to interpolate. */
@@ -258,7 +276,10 @@ static bool fp_vbuf_discard(struct fp_vbuf_render *v)
 {
    if (v->fp->fs_dirty)
       fp_fs_validate(v->fp);
-   return v->fp->rasterizer && v->fp->rasterizer->base.rasterizer_discard;
+   /* a sample mask without sample 0 draws nothing (one sample a pixel), but
+    * the vertex stage, transform feedback included, still ran */
+   return (v->fp->rasterizer && v->fp->rasterizer->base.rasterizer_discard) ||
+          !(v->fp->sample_mask & 1);
 }
 
 /* The batch's vertices are reused by the next one: the model draws what it
@@ -293,10 +314,15 @@ static void fp_vbuf_draw_arrays(struct vbuf_render *r, unsigned start, uint nr)
    fp_vbuf_drawn(v);
 }
 
+/* draw's stream output counts of a draw, for the queries (fp_query.c). */
 static void fp_vbuf_set_so_info(struct vbuf_render *r, unsigned stream, unsigned primitives,
                                 unsigned generated)
 {
-   (void)r; (void)stream; (void)primitives; (void)generated;
+   struct fp_context *fp = fp_vbuf(r)->fp;
+   if (stream >= PIPE_MAX_VERTEX_STREAMS)
+      return;
+   fp->so_written[stream] += primitives;
+   fp->so_generated[stream] += generated;
 }
 
 static void fp_vbuf_pipeline_statistics(struct vbuf_render *r,
