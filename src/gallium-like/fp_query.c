@@ -20,6 +20,12 @@ struct fp_query {
    struct fp_counter_query *counter;   /* a driver query: the model's counters */
 };
 
+static bool fp_is_occlusion(unsigned type)
+{
+   return type == PIPE_QUERY_OCCLUSION_COUNTER || type == PIPE_QUERY_OCCLUSION_PREDICATE ||
+          type == PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE;
+}
+
 static bool fp_is_so(unsigned type)
 {
    return type == PIPE_QUERY_PRIMITIVES_EMITTED || type == PIPE_QUERY_PRIMITIVES_GENERATED ||
@@ -31,24 +37,13 @@ static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned ty
                                           unsigned index)
 {
    (void)pipe;
-   if (fp_is_so(type) && index >= PIPE_MAX_VERTEX_STREAMS)
-      return NULL;
-   switch (type) {
-   case PIPE_QUERY_PRIMITIVES_EMITTED:
-   case PIPE_QUERY_PRIMITIVES_GENERATED:
-   case PIPE_QUERY_SO_STATISTICS:
-   case PIPE_QUERY_SO_OVERFLOW_PREDICATE:
-   case PIPE_QUERY_SO_OVERFLOW_ANY_PREDICATE:
-   case PIPE_QUERY_OCCLUSION_COUNTER:
-   case PIPE_QUERY_OCCLUSION_PREDICATE:
-   case PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE:
-   case PIPE_QUERY_GPU_FINISHED:
-   case PIPE_QUERY_TIMESTAMP:
-   case PIPE_QUERY_TIME_ELAPSED:
-      break;
-   default:
-      if (!fp_is_driver_query(type))
+   if (fp_is_so(type)) {
+      if (index >= PIPE_MAX_VERTEX_STREAMS)
          return NULL;
+   } else if (!fp_is_occlusion(type) && type != PIPE_QUERY_GPU_FINISHED &&
+              type != PIPE_QUERY_TIMESTAMP && type != PIPE_QUERY_TIME_ELAPSED &&
+              !fp_is_driver_query(type)) {
+      return NULL;
    }
    struct fp_query *q = CALLOC_STRUCT(fp_query);
    if (!q)
@@ -68,12 +63,6 @@ static void fp_destroy_query(struct pipe_context *pipe, struct pipe_query *pq)
    if (pq)
       FREE(((struct fp_query *)pq)->counter);
    FREE(pq);
-}
-
-static bool fp_is_occlusion(unsigned type)
-{
-   return type == PIPE_QUERY_OCCLUSION_COUNTER || type == PIPE_QUERY_OCCLUSION_PREDICATE ||
-          type == PIPE_QUERY_OCCLUSION_PREDICATE_CONSERVATIVE;
 }
 
 static uint64_t fp_query_now(struct fp_context *fp, unsigned type)
