@@ -75,7 +75,9 @@ static int run(const char *sys, int ntri)
    fb.width = W;
    fb.height = H;
    fb.nr_cbufs = 1;
-   fb.cbuf[0] = (struct rast_color_target){ fbm, W * 4, 4, RAST_CL_RGBA8, load, store, true };
+   fb.cbuf[0] = (struct rast_color_target){ .base = fbm, .stride = W * 4, .cpp = 4,
+                                            .layout = RAST_CL_RGBA8, .load = load,
+                                            .store = store, .clamp = true };
    rast_set_framebuffer(rc, &fb);
    struct rast_raster_state rs;
    memset(&rs, 0, sizeof rs);

@@ -2,6 +2,11 @@
  * pipe->blit on the CPU: scaled nearest/linear, format conversion through
  * float unpack/pack, Z and S masks, scissor.  (util_blitter would draw
  * through the model, turning copies into modeled primitives.)
+ *
+ * Multisampled images: a blit between two of them copies sample to sample,
+ * a blit into one writes every sample, and a blit from one into a
+ * single-sampled image resolves it: colour the mean of the samples (as
+ * util_blitter's resolve shader averages them), depth and stencil sample 0.
  */
 #include <math.h>
 #include <string.h>
@@ -21,6 +26,9 @@ struct fp_blit_image {
    unsigned level, width, height, depth;   /* depth: slices or layers */
    const struct util_format_description *desc;
    util_format_fetch_rgba_func_ptr fetch;
+   unsigned samples;                       /* planes a layer (fp_resource_samples) */
+   unsigned sample;                        /* the plane read or written */
+   bool resolve;                           /* colour fetches average every sample */
 };
 
 static void fp_blit_image_init(struct fp_blit_image *im, struct pipe_resource *res,
@@ -36,6 +44,9 @@ static void fp_blit_image_init(struct fp_blit_image *im, struct pipe_resource *r
              : res->target == PIPE_TEXTURE_1D_ARRAY ? 1 : res->array_size;
    im->desc = util_format_description(format);
    im->fetch = util_format_fetch_rgba_func(format);
+   im->samples = fp_resource_samples(res);
+   im->sample = 0;
+   im->resolve = false;
 }
 
 static uint8_t *fp_blit_texel_ptr(const struct fp_blit_image *im, int x, int y, int z)
@@ -46,9 +57,20 @@ static uint8_t *fp_blit_texel_ptr(const struct fp_blit_image *im, int x, int y, 
       z = y;
       y = 0;
    }
+   z = z * (int)im->samples + (int)im->sample;
    return r->data + r->level_offset[im->level] + (size_t)z * r->img_stride[im->level] +
           (size_t)(y / d->block.height) * r->stride[im->level] +
           (size_t)(x / d->block.width) * (d->block.bits / 8);
+}
+
+static void fp_blit_fetch_one(const struct fp_blit_image *im, int x, int y, int z,
+                              float rgba[4])
+{
+   const uint8_t *p = fp_blit_texel_ptr(im, x, y, z);
+   if (im->fetch)
+      im->fetch(rgba, p, x % im->desc->block.width, y % im->desc->block.height);
+   else
+      util_format_unpack_rgba(im->format, rgba, p, 1);
 }
 
 static void fp_blit_fetch(const struct fp_blit_image *im, int x, int y, int z, float rgba[4])
@@ -56,11 +78,19 @@ static void fp_blit_fetch(const struct fp_blit_image *im, int x, int y, int z, f
    x = CLAMP(x, 0, (int)im->width - 1);
    y = CLAMP(y, 0, (int)im->height - 1);
    z = CLAMP(z, 0, (int)im->depth - 1);
-   const uint8_t *p = fp_blit_texel_ptr(im, x, y, z);
-   if (im->fetch)
-      im->fetch(rgba, p, x % im->desc->block.width, y % im->desc->block.height);
-   else
-      util_format_unpack_rgba(im->format, rgba, p, 1);
+   if (!im->resolve) {
+      fp_blit_fetch_one(im, x, y, z, rgba);
+      return;
+   }
+   struct fp_blit_image one = *im;
+   float sum[4] = { 0, 0, 0, 0 }, c[4];
+   for (one.sample = 0; one.sample < im->samples; one.sample++) {
+      fp_blit_fetch_one(&one, x, y, z, c);
+      for (unsigned ch = 0; ch < 4; ch++)
+         sum[ch] += c[ch];
+   }
+   for (unsigned ch = 0; ch < 4; ch++)
+      rgba[ch] = sum[ch] / (float)im->samples;
 }
 
 static float fp_blit_fetch_z(const struct fp_blit_image *im, int x, int y, int z)
@@ -185,6 +215,8 @@ static bool fp_blit_is_copy(const struct pipe_blit_info *info)
    return info->src.format == info->dst.format &&
           info->src.resource->format == info->dst.resource->format &&
           info->src.format == info->src.resource->format &&
+          fp_resource_samples(info->src.resource) == 1 &&
+          fp_resource_samples(info->dst.resource) == 1 &&
           info->src.box.width == info->dst.box.width &&
           info->src.box.height == info->dst.box.height &&
           info->src.box.depth == info->dst.box.depth &&
@@ -235,18 +267,24 @@ static void fp_blit(struct pipe_context *pipe, const struct pipe_blit_info *info
    const float scale_y = (float)sb->height / db->height;
    const float scale_z = (float)sb->depth / db->depth;
 
-   for (int z = db->z; z < db->z + db->depth; z++) {
-      if (z < 0 || z >= (int)dst.depth)
-         continue;
-      float sz = sb->z + (z - db->z + 0.5f) * scale_z;
-      for (int y = y0; y < y1; y++) {
-         float sy = sb->y + (y - db->y + 0.5f) * scale_y;
-         for (int x = x0; x < x1; x++) {
-            float sx = sb->x + (x - db->x + 0.5f) * scale_x;
-            if (zs)
-               fp_blit_zs(&src, &dst, info, sx, sy, sz, x, y, z);
-            else if (info->mask & PIPE_MASK_RGBA)
-               fp_blit_color(&src, &dst, info, sx, sy, sz, x, y, z);
+   /* an integer image's samples are not averaged: sample 0, as GL allows */
+   src.resolve = src.samples > 1 && dst.samples == 1 && !zs &&
+                 !util_format_is_pure_integer(src.format);
+   for (dst.sample = 0; dst.sample < dst.samples; dst.sample++) {
+      src.sample = src.samples > 1 && dst.samples > 1 ? dst.sample : 0;
+      for (int z = db->z; z < db->z + db->depth; z++) {
+         if (z < 0 || z >= (int)dst.depth)
+            continue;
+         float sz = sb->z + (z - db->z + 0.5f) * scale_z;
+         for (int y = y0; y < y1; y++) {
+            float sy = sb->y + (y - db->y + 0.5f) * scale_y;
+            for (int x = x0; x < x1; x++) {
+               float sx = sb->x + (x - db->x + 0.5f) * scale_x;
+               if (zs)
+                  fp_blit_zs(&src, &dst, info, sx, sy, sz, x, y, z);
+               else if (info->mask & PIPE_MASK_RGBA)
+                  fp_blit_color(&src, &dst, info, sx, sy, sz, x, y, z);
+            }
          }
       }
    }

@@ -7,6 +7,43 @@
 #include "draw/draw_context.h"
 
 #include "fp_context.h"
+#include "fp_resource.h"
+
+/* util's clears reach a surface's layers: a multisampled surface is
+ * cleared plane by plane, each plane as the layer it is stored as. */
+static void clear_color_planes(struct pipe_context *pipe, struct pipe_surface *ps,
+                               const union pipe_color_union *color, unsigned x, unsigned y,
+                               unsigned w, unsigned h)
+{
+   const unsigned n = fp_resource_samples(ps->texture);
+   if (n == 1) {
+      util_clear_render_target(pipe, ps, color, x, y, w, h);
+      return;
+   }
+   struct pipe_surface plane = *ps;
+   for (unsigned l = ps->u.tex.first_layer; l <= ps->u.tex.last_layer; l++)
+      for (unsigned s = 0; s < n; s++) {
+         plane.u.tex.first_layer = plane.u.tex.last_layer = l * n + s;
+         util_clear_render_target(pipe, &plane, color, x, y, w, h);
+      }
+}
+
+static void clear_zs_planes(struct pipe_context *pipe, struct pipe_surface *ps, unsigned flags,
+                            double depth, unsigned stencil, unsigned x, unsigned y,
+                            unsigned w, unsigned h)
+{
+   const unsigned n = fp_resource_samples(ps->texture);
+   if (n == 1) {
+      util_clear_depth_stencil(pipe, ps, flags, depth, stencil, x, y, w, h);
+      return;
+   }
+   struct pipe_surface plane = *ps;
+   for (unsigned l = ps->u.tex.first_layer; l <= ps->u.tex.last_layer; l++)
+      for (unsigned s = 0; s < n; s++) {
+         plane.u.tex.first_layer = plane.u.tex.last_layer = l * n + s;
+         util_clear_depth_stencil(pipe, &plane, flags, depth, stencil, x, y, w, h);
+      }
+}
 
 static void fp_clear(struct pipe_context *pipe, unsigned buffers,
                      const struct pipe_scissor_state *scissor,
@@ -31,7 +68,7 @@ static void fp_clear(struct pipe_context *pipe, unsigned buffers,
          h = MIN2(scissor->maxy, h) > y ? MIN2(scissor->maxy, h) - y : 0;
       }
       if (w && h)
-         util_clear_render_target(pipe, ps, color, x, y, w, h);
+         clear_color_planes(pipe, ps, color, x, y, w, h);
    }
 
    struct pipe_surface *zs = fb->zsbuf;
@@ -44,8 +81,8 @@ static void fp_clear(struct pipe_context *pipe, unsigned buffers,
          h = MIN2(scissor->maxy, h) > y ? MIN2(scissor->maxy, h) - y : 0;
       }
       if (w && h)
-         util_clear_depth_stencil(pipe, zs, buffers & PIPE_CLEAR_DEPTHSTENCIL, depth,
-                                  stencil, x, y, w, h);
+         clear_zs_planes(pipe, zs, buffers & PIPE_CLEAR_DEPTHSTENCIL, depth, stencil, x, y, w,
+                         h);
    }
 }
 
@@ -57,7 +94,7 @@ static void fp_clear_render_target(struct pipe_context *pipe, struct pipe_surfac
    if (render_condition_enabled && !fp_check_render_cond(fp))
       return;
    draw_flush(fp->draw);
-   util_clear_render_target(pipe, dst, color, x, y, w, h);
+   clear_color_planes(pipe, dst, color, x, y, w, h);
 }
 
 static void fp_clear_depth_stencil(struct pipe_context *pipe, struct pipe_surface *dst,
@@ -69,7 +106,7 @@ static void fp_clear_depth_stencil(struct pipe_context *pipe, struct pipe_surfac
    if (render_condition_enabled && !fp_check_render_cond(fp))
       return;
    draw_flush(fp->draw);
-   util_clear_depth_stencil(pipe, dst, flags, depth, stencil, x, y, w, h);
+   clear_zs_planes(pipe, dst, flags, depth, stencil, x, y, w, h);
 }
 
 static void fp_resource_copy_region(struct pipe_context *pipe, struct pipe_resource *dst,
@@ -78,7 +115,19 @@ static void fp_resource_copy_region(struct pipe_context *pipe, struct pipe_resou
                                     unsigned src_level, const struct pipe_box *src_box)
 {
    draw_flush(fp_context(pipe)->draw);
-   util_resource_copy_region(pipe, dst, dst_level, dstx, dsty, dstz, src, src_level, src_box);
+   const unsigned n = fp_resource_samples(src);
+   if (n == 1 || fp_resource_samples(dst) != n || src_box->depth != 1) {
+      util_resource_copy_region(pipe, dst, dst_level, dstx, dsty, dstz, src, src_level,
+                                src_box);
+      return;
+   }
+   /* multisampled: plane by plane, each plane as the layer it is stored as */
+   for (unsigned s = 0; s < n; s++) {
+      struct pipe_box box = *src_box;
+      box.z = src_box->z * (int)n + (int)s;
+      util_resource_copy_region(pipe, dst, dst_level, dstx, dsty, dstz * n + s, src,
+                                src_level, &box);
+   }
 }
 
 void fp_init_clear_functions(struct fp_context *fp)

@@ -90,6 +90,7 @@ struct fp_sampler_view {
    void *fetch;                     /* util_format_fetch_rgba_func_ptr */
    bool zs;                         /* depth: sampled through unpack_z_float */
    bool is_unorm, is_snorm;
+   bool integer;                  /* pure integer texels, sampled bit for bit */
    unsigned bw, bh, bsize;          /* format block */
 };
 

@@ -1,7 +1,10 @@
 /*
  * Which formats the driver renders to and samples from, and the float
  * load/store functions the model's back end calls for render targets
- * without a fast layout.  The model's load/store take no format argument,
+ * without a fast layout.  The integer formats' load and store move the
+ * shader's integer outputs bit for bit (util's pack and unpack of pure
+ * integer formats take uint32 or int32 values): GL neither blends nor
+ * clamps them.  The model's load/store take no format argument,
  * so each renderable format gets its own pair of trampolines.
  */
 #include "util/format/u_format.h"
@@ -30,7 +33,12 @@ static void store_##fmt(uint8_t *dst, unsigned n, const float (*rgba)[4]) \
    X(A32_FLOAT) X(L32_FLOAT) X(L32A32_FLOAT) X(I32_FLOAT) \
    X(R8G8B8A8_SRGB) X(B8G8R8A8_SRGB) X(B8G8R8X8_SRGB) X(R8G8B8X8_SRGB) \
    X(A8R8G8B8_SRGB) X(X8R8G8B8_SRGB) X(A8B8G8R8_SRGB) X(X8B8G8R8_SRGB) \
-   X(L8_SRGB) X(L8A8_SRGB) X(R8_SRGB)
+   X(L8_SRGB) X(L8A8_SRGB) X(R8_SRGB) \
+   X(R8_UINT) X(R8G8_UINT) X(R8G8B8A8_UINT) X(R8_SINT) X(R8G8_SINT) X(R8G8B8A8_SINT) \
+   X(R16_UINT) X(R16G16_UINT) X(R16G16B16A16_UINT) \
+   X(R16_SINT) X(R16G16_SINT) X(R16G16B16A16_SINT) \
+   X(R32_UINT) X(R32G32_UINT) X(R32G32B32A32_UINT) \
+   X(R32_SINT) X(R32G32_SINT) X(R32G32B32A32_SINT) X(R10G10B10A2_UINT)
 
 FP_RT_LIST(FP_RT)
 
@@ -95,14 +103,13 @@ bool fp_format_depth_supported(enum pipe_format format)
    return fp_format_zs_layout(format) != RAST_ZS_NONE;
 }
 
-/* Sampled through fp_sampler.c: colour formats util_format can fetch as
- * float, and depth formats through unpack_z_float. */
+/* Sampled through fp_sampler.c: colour formats util_format can fetch (as
+ * float, or the integer formats' values bit for bit), and depth formats
+ * through unpack_z_float. */
 bool fp_format_samplable(enum pipe_format format)
 {
    const struct util_format_description *desc = util_format_description(format);
    if (!desc || format == PIPE_FORMAT_NONE)
-      return false;
-   if (util_format_is_pure_integer(format))
       return false;
    if (desc->colorspace == UTIL_FORMAT_COLORSPACE_ZS)
       return util_format_has_depth(desc) &&

@@ -24,7 +24,8 @@ static bool fp_linear_layout(struct fp_resource *r, bool allocate)
    uint64_t size = 0;
 
    for (unsigned level = 0; level <= pt->last_level; level++) {
-      unsigned slices = pt->target == PIPE_TEXTURE_3D ? depth : pt->array_size;
+      unsigned slices = pt->target == PIPE_TEXTURE_3D ? depth
+                      : pt->array_size * fp_resource_samples(pt);
       unsigned nblocksy = util_format_get_nblocksy(pt->format, height);
       r->stride[level] = util_format_get_stride(pt->format, width);
       r->level_offset[level] = size;

@@ -76,6 +76,7 @@ void fp_init_sampler_view(struct fp_sampler_view *v)
    if (v->zs && !util_format_has_depth(d))
       v->zs = false;   /* stencil-only sampling: not offered, reads zero */
    v->is_unorm = util_format_is_unorm(f);
+   v->integer = util_format_is_pure_integer(f);
    v->is_snorm = util_format_is_snorm(f);
    v->bw = d ? d->block.width : 1;
    v->bh = d ? d->block.height : 1;
@@ -183,6 +184,7 @@ static void fp_view_desc(const struct fp_sampler_view *fv, struct tex_view_desc 
    const unsigned swz[4] = { v->swizzle_r, v->swizzle_g, v->swizzle_b, v->swizzle_a };
    for (unsigned c = 0; c < 4; c++)
       d->swizzle[c] = swz[c] <= PIPE_SWIZZLE_1 ? (uint8_t)swz[c] : TEX_SWZ_0;
+   d->integer = fv->integer;
 }
 
 static void fp_sampler_desc(const struct fp_sampler_view *fv, const struct pipe_sampler_state *ss,
@@ -206,8 +208,10 @@ static void fp_sampler_desc(const struct fp_sampler_view *fv, const struct pipe_
    d->min_lod = ss->min_lod;
    d->max_lod = ss->max_lod;
    for (unsigned c = 0; c < 4; c++) {
-      float b = ss->border_color.f[c];
-      if (fv->is_unorm || fv->zs)
+      float b = ss->border_color.f[c];   /* an integer format's: its bits */
+      if (fv->integer)
+         ;
+      else if (fv->is_unorm || fv->zs)
          b = CLAMP(b, 0.0f, 1.0f);
       else if (fv->is_snorm)
          b = CLAMP(b, -1.0f, 1.0f);

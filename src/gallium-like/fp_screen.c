@@ -135,7 +135,7 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 0;
    case PIPE_CAP_GLSL_FEATURE_LEVEL:
    case PIPE_CAP_GLSL_FEATURE_LEVEL_COMPATIBILITY:
-      return 120;
+      return 130;   /* with 4x multisampling: GL ES 3.0 (docs/driver.md) */
    case PIPE_CAP_MAX_RENDER_TARGETS:
       return RAST_MAX_CBUFS;
    case PIPE_CAP_MAX_DUAL_SOURCE_RENDER_TARGETS:
@@ -247,8 +247,20 @@ static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format 
    struct sw_winsys *winsys = fp_screen(screen)->winsys;
    const struct util_format_description *desc = util_format_description(format);
 
-   if (!desc || MAX2(1, sample_count) != 1 || MAX2(1, storage_sample_count) != 1)
+   if (!desc)
       return false;
+   /* Multisampled: colour and depth/stencil surfaces of RAST_MSAA_SAMPLES
+    * samples a pixel, drawn by the model (msaa.c), resolved by blits.
+    * Multisampled textures (sampler2DMS) are GL ES 3.1: not offered. */
+   const unsigned samples = MAX2(1, sample_count);
+   if (samples != MAX2(1, storage_sample_count))
+      return false;
+   if (samples != 1) {
+      if (samples != RAST_MSAA_SAMPLES ||
+          (target != PIPE_TEXTURE_2D && target != PIPE_TEXTURE_RECT) ||
+          (bind & ~(PIPE_BIND_RENDER_TARGET | PIPE_BIND_DEPTH_STENCIL)))
+         return false;
+   }
 
    if (bind & (PIPE_BIND_DISPLAY_TARGET | PIPE_BIND_SCANOUT | PIPE_BIND_SHARED)) {
       if (!winsys->is_displaytarget_format_supported(winsys, bind, format))

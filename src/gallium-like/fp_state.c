@@ -87,6 +87,7 @@ static void *fp_create_blend_state(struct pipe_context *pipe, const struct pipe_
    s->rast.independent = b->independent_blend_enable;
    /* PIPE_LOGICOP_* are GL's order, as are RAST_LOGICOP_*. */
    s->rast.logicop_enable = b->logicop_enable;
+   s->rast.alpha_to_coverage = b->alpha_to_coverage;
    s->rast.logicop_func = (enum rast_logicop)(b->logicop_func & 15);
    for (unsigned i = 0; i < RAST_MAX_CBUFS; i++) {
       const struct pipe_rt_blend_state *rt = &b->rt[b->independent_blend_enable ? i : 0];
@@ -371,7 +372,25 @@ static void fp_set_clip_state(struct pipe_context *pipe, const struct pipe_clip_
 
 static void fp_set_sample_mask(struct pipe_context *pipe, unsigned mask)
 {
-   fp_context(pipe)->sample_mask = mask;
+   struct fp_context *fp = fp_context(pipe);
+   if (mask == fp->sample_mask)
+      return;
+   draw_flush(fp->draw);
+   fp->sample_mask = mask;
+   rast_set_sample_mask(fp->rast, mask);
+}
+
+/* The model's pattern (rast.h): llvmpipe's standard 4x one. */
+static void fp_get_sample_position(struct pipe_context *pipe, unsigned sample_count,
+                                   unsigned sample_index, float *out_value)
+{
+   (void)pipe;
+   if (sample_count == RAST_MSAA_SAMPLES && sample_index < RAST_MSAA_SAMPLES) {
+      out_value[0] = rast_sample_pos_4x[sample_index][0];
+      out_value[1] = rast_sample_pos_4x[sample_index][1];
+   } else {
+      out_value[0] = out_value[1] = 0.5f;
+   }
 }
 
 /* Polygon stipple is draw's pstipple stage, which wraps this hook and
@@ -415,6 +434,7 @@ void fp_init_state_functions(struct fp_context *fp)
    p->set_scissor_states = fp_set_scissor_states;
    p->set_clip_state = fp_set_clip_state;
    p->set_sample_mask = fp_set_sample_mask;
+   p->get_sample_position = fp_get_sample_position;
    p->set_polygon_stipple = fp_set_polygon_stipple;
    p->set_min_samples = fp_set_min_samples;
 }

@@ -26,6 +26,13 @@ static uint8_t *fp_surface_base(struct pipe_surface *ps, int *stride)
    return fp_resource_image(ps->texture, ps->u.tex.level, ps->u.tex.first_layer);
 }
 
+static size_t fp_surface_sample_stride(struct pipe_surface *ps)
+{
+   if (ps->texture->target == PIPE_BUFFER)
+      return 0;
+   return fp_resource(ps->texture)->img_stride[ps->u.tex.level];
+}
+
 /* draw's polygon-offset stage adds offset_units * mrd to z.  The model
  * resolves depth to 1 / (2^z_bits - 1) whatever the buffer's width, so a
  * unit must be at least that, or an offset of one unit would vanish in the
@@ -64,6 +71,8 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
          continue;
       }
       ct->base = fp_surface_base(ps, &ct->stride);
+      ct->sample_stride = fp_surface_sample_stride(ps);
+      rfb.samples = MAX2(rfb.samples, fp_resource_samples(ps->texture));
    }
    rfb.zs.layout = RAST_ZS_NONE;
    if (fb->zsbuf && fb->zsbuf->texture) {
@@ -72,6 +81,8 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
       if (base) {
          rfb.zs.base = base;
          rfb.zs.layout = l;
+         rfb.zs.sample_stride = fp_surface_sample_stride(fb->zsbuf);
+         rfb.samples = MAX2(rfb.samples, fp_resource_samples(fb->zsbuf->texture));
       }
    }
    rast_set_framebuffer(fp->rast, &rfb);

@@ -12,6 +12,7 @@
 #include "draw/draw_vertex.h"
 
 #include "fp_context.h"
+#include "fp_resource.h"
 #include "fp_screen.h"
 
 /* draw passes vertex counts as ushort: a batch must stay far below 65536
@@ -145,6 +146,14 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
       vl.psize_slot = vinfo->num_attribs;
       draw_emit_vertex_attr(vinfo, EMIT_4F, psize);
    }
+   /* The face of unfilled polygons' lines and points: draw's unfilled
+    * stage adds it as an extra output while such a draw runs. */
+   const int face = draw_find_shader_output(draw, TGSI_SEMANTIC_FACE, 0);
+   if (face >= 0) {
+      vl.has_face = true;
+      vl.face_slot = vinfo->num_attribs;
+      draw_emit_vertex_attr(vinfo, EMIT_4F, face);
+   }
    draw_compute_vertex_size(vinfo);
    vl.vertex_size = vinfo->num_attribs;
 
@@ -276,10 +285,13 @@ static bool fp_vbuf_discard(struct fp_vbuf_render *v)
 {
    if (v->fp->fs_dirty)
       fp_fs_validate(v->fp);
-   /* a sample mask without sample 0 draws nothing (one sample a pixel), but
-    * the vertex stage, transform feedback included, still ran */
+   /* a sample mask without the target's samples draws nothing, but the
+    * vertex stage, transform feedback included, still ran */
+   const struct pipe_framebuffer_state *fb = &v->fp->framebuffer;
+   const struct pipe_surface *s = fb->nr_cbufs && fb->cbufs[0] ? fb->cbufs[0] : fb->zsbuf;
+   const unsigned samples = s && s->texture ? fp_resource_samples(s->texture) : 1;
    return (v->fp->rasterizer && v->fp->rasterizer->base.rasterizer_discard) ||
-          !(v->fp->sample_mask & 1);
+          !(v->fp->sample_mask & ((1u << samples) - 1));
 }
 
 /* The batch's vertices are reused by the next one: the model draws what it

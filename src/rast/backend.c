@@ -230,11 +230,13 @@ static void backend_choose(struct rast_context *rc)
 
    rast_zs_plan(be, rc);
    rast_color_plan(be, rc);
-   be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard;
+   /* Alpha to coverage takes samples away as a discard does. */
+   const bool a2c = rc->blend.alpha_to_coverage && rc->fb.samples > 1;
+   be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard || a2c;
 
    rast_quad2_func pair = NULL;
    if (be->zs) {
-      const bool late = rc->fs.writes_depth || rc->fs.may_discard;
+      const bool late = rc->fs.writes_depth || rc->fs.may_discard || a2c;
       rc->quad = late ? quad_late : quad_early;
       pair = late ? pair_late : pair_early;
    } else if (!be->shade_needed) {
@@ -255,6 +257,23 @@ static void backend_choose(struct rast_context *rc)
    /* pairs only where the shader has its eight-lane form; noskip: one by one */
    if (rc->fs.shade2 && !(rc->opts & RAST_OPT_NOSKIP))
       rc->quad2 = pair;
+}
+
+void rast_backend_sample(struct rast_context *rc, unsigned s)
+{
+   struct rast_backend *be = backend(rc);
+   if (!be)
+      return;
+   if (be->zs_base0)
+      be->zs_base = be->zs_base0 + s * be->zs_sample_stride;
+   for (unsigned k = 0; k < be->ncbufs; k++)
+      be->cbuf[k].base = be->cbuf[k].base0 + s * be->cbuf[k].sample_stride;
+}
+
+bool rast_backend_shades(const struct rast_context *rc)
+{
+   const struct rast_backend *be = backend((struct rast_context *)rc);
+   return be && be->shade_needed;
 }
 
 void rast_backend_destroy(struct rast_context *rc)

@@ -412,7 +412,8 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
 
       struct rast_cbuf_plan *p = &be->cbuf[be->ncbufs++];
       memset(p, 0, sizeof *p);
-      p->base = t->base;
+      p->base = p->base0 = t->base;
+      p->sample_stride = t->sample_stride;
       p->stride = t->stride;
       p->cpp = t->cpp;
       p->load = t->load;

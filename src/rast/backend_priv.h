@@ -48,7 +48,9 @@ typedef void (*rast_color_func)(const struct rast_cbuf_plan *p, int x, int y,
 
 struct rast_cbuf_plan {
    rast_color_func func;
-   uint8_t *base;
+   uint8_t *base;                 /* the sample drawn (rast_backend_sample) */
+   uint8_t *base0;                /* sample 0, the single-sampled target */
+   size_t sample_stride;
    int stride;
    unsigned cpp;
    rast_load_func load;
@@ -93,7 +95,9 @@ struct rast_backend {
    /* Depth/stencil. */
    rast_zconv_func zconv;
    rast_zs_func zs;               /* NULL: no depth or stencil work */
-   uint8_t *zs_base;
+   uint8_t *zs_base;              /* the sample drawn, as cbuf's base */
+   uint8_t *zs_base0;
+   size_t zs_sample_stride;
    int zs_stride;
    enum rast_zs_layout zs_layout;
    enum rast_zfamily zfamily;

@@ -427,7 +427,8 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
    const enum rast_zs_layout layout = zt->base ? zt->layout : RAST_ZS_NONE;
    unsigned nbits;
 
-   be->zs_base = zt->base;
+   be->zs_base = be->zs_base0 = zt->base;
+   be->zs_sample_stride = zt->sample_stride;
    be->zs_stride = zt->stride;
    be->zs_layout = layout;
    be->zfamily = zfamily_of(layout, &nbits);

@@ -34,6 +34,9 @@ struct rast_context *rast_create(const struct rast_profile *profile)
    rc->dirty = true;
    rc->band_count = 1;
    rc->counting = true;
+   rc->sample_mask = ~0u;
+   rc->rows_lo = INT64_MIN;
+   rc->rows_hi = INT64_MAX;
    return rc;
 }
 
@@ -45,6 +48,7 @@ void rast_destroy(struct rast_context *rc)
    rast_vectors_close(rc);
    rast_front_destroy(rc);
    rast_backend_destroy(rc);
+   rast_msaa_destroy(rc);
    free(rc);
 }
 
@@ -71,6 +75,13 @@ void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
 {
    rast_flush(rc);
    rc->scissor = *sc;
+   state_changed(rc);
+}
+
+void rast_set_sample_mask(struct rast_context *rc, unsigned mask)
+{
+   rast_flush(rc);
+   rc->sample_mask = mask;
    state_changed(rc);
 }
 

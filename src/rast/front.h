@@ -190,6 +190,10 @@ struct rast_front {
    struct fx_format fix_fmt[FR_MAX_FIX];
    int64_t S;                  /* one pixel in the XY format */
    int64_t H;                  /* the pixel centre's offset in the XY format */
+   /* Where the walk samples a pixel, its offset in the XY format: the
+    * centre (H, H), or one sample's position on a multisampled target
+    * (msaa.c).  Lines and points place their vertices by H alone. */
+   int64_t Hx, Hy;
    int64_t row_bias;           /* 1 with the bottom-edge rule: ceil(v + 1 ulp) */
    double z_scale;             /* Z register -> window depth */
    float color_scale;          /* colour register -> [0, 1] */

@@ -254,7 +254,7 @@ void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *f
 static void tex_begin(struct rast_front *fr, int64_t x, int64_t y)
 {
    struct fr_tex *t = &fr->tex;
-   int64_t px = x * fr->S + fr->H - t->x0, py = y * fr->S + fr->H - t->y0;
+   int64_t px = x * fr->S + fr->Hx - t->x0, py = y * fr->S + fr->Hy - t->y0;
    t->an[0] = px * t->e2y - py * t->e2x;
    t->bn[0] = t->e1x * py - t->e1y * px;
    t->an[1] = t->an[0] + t->a_dy;
@@ -505,7 +505,7 @@ static inline unsigned span_bits(const struct fr_row *r, int64_t x)
 static inline void row_start_fix(const struct rast_front *fr, const struct fr_row *row,
                                  int64_t x0, unsigned nfix, int64_t *fix, unsigned frac)
 {
-   int64_t d = x0 * fr->S + fr->H - row->xl;      /* c_x - X_left, XY format */
+   int64_t d = x0 * fr->S + fr->Hx - row->xl;      /* c_x - X_left, XY format */
    for (unsigned k = 0; k < nfix; k++)
       fix[k] = fr_fix_sat(fr, k, (fx_i128)row->fix[k] +
                                  fx_shr_round_i128((fx_i128)d * fr->fix_dx[k], frac));
@@ -515,7 +515,7 @@ static inline void row_start_flt(const struct rast_front *fr, const struct fr_ro
                                  int64_t x0, unsigned nflt, float *flt)
 {
    /* exact c_x - X_left: the float walk has the bits to use the remainder */
-   float fd = ((float)(x0 * fr->S + fr->H - row->xl) - row->xl_frac) * fr->inv_S;
+   float fd = ((float)(x0 * fr->S + fr->Hx - row->xl) - row->xl_frac) * fr->inv_S;
    for (unsigned k = 0; k < nflt; k++)
       flt[k] = row->flt[k] + fd * fr->flt_dx[k];
 }
@@ -548,7 +548,7 @@ static inline void row_base_derived(const struct rast_front *fr, const struct fr
                                     int64_t x0, int64_t sign, unsigned nfix, int64_t *base,
                                     unsigned frac)
 {
-   int64_t d = x0 * fr->S + fr->H - other->xl;
+   int64_t d = x0 * fr->S + fr->Hx - other->xl;
    for (unsigned k = 0; k < nfix; k++)
       base[k] = other->fix[k] + (int64_t)fx_shr_round_i128((fx_i128)d * fr->fix_dx[k], frac) +
                 sign * fr->fix_dy[k];
@@ -615,7 +615,7 @@ static inline void modes_quad(struct rast_context *rc, const struct rast_front *
                               int64_t v[RAST_QUAD_SIZE][FR_MAX_FIX])
 {
    for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
-      const int64_t px = (x + (i & 1)) * fr->S + fr->H, py = (y + (i >> 1)) * fr->S + fr->H;
+      const int64_t px = (x + (i & 1)) * fr->S + fr->Hx, py = (y + (i >> 1)) * fr->S + fr->Hy;
       if (mode == RAST_INTERP_BARYCENTRIC)
          modes_barycentric(rc, fr, px, py, nfix, v[i]);
       else
@@ -629,7 +629,7 @@ static inline void measure_quad(struct rast_context *rc, const struct rast_front
 {
    for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
       if (mask & (1u << i))
-         modes_measure(rc, fr, k, (x + (i & 1)) * fr->S + fr->H, (y + (i >> 1)) * fr->S + fr->H,
+         modes_measure(rc, fr, k, (x + (i & 1)) * fr->S + fr->Hx, (y + (i >> 1)) * fr->S + fr->Hy,
                        v[i]);
 }
 

@@ -7,11 +7,11 @@
  */
 #include "rast/interp_modes.h"
 
-/* Pixel centres c·S + H in [lo, hi] (XY format), inside [clo, chi): how many. */
-static int64_t centres(const struct fx_format xy, const struct rast_front *fr, int64_t lo,
-                       int64_t hi, int64_t clo, int64_t chi)
+/* Sampling points c·S + h in [lo, hi] (XY format), inside [clo, chi): how many. */
+static int64_t centres(const struct fx_format xy, int64_t h, int64_t lo, int64_t hi,
+                       int64_t clo, int64_t chi)
 {
-   int64_t first = fx_ceil_int(xy, lo - fr->H), last = fx_floor_int(xy, hi - fr->H);
+   int64_t first = fx_ceil_int(xy, lo - h), last = fx_floor_int(xy, hi - h);
    if (first < clo) first = clo;
    if (last > chi - 1) last = chi - 1;
    return last >= first ? last - first + 1 : 0;
@@ -69,9 +69,9 @@ void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, uns
       ymax = fr->Y[i] > ymax ? fr->Y[i] : ymax;
    }
    rc->stats.interp_box_pixels +=
-      (uint64_t)(centres(xy, fr, xmin, xmax, rc->clip.minx, rc->clip.maxx) *
-                 centres(xy, fr, ymin, ymax, rc->clip.miny, rc->clip.maxy));
-   m->row0 = fx_ceil_int(xy, ymin - fr->H);
+      (uint64_t)(centres(xy, fr->Hx, xmin, xmax, rc->clip.minx, rc->clip.maxx) *
+                 centres(xy, fr->Hy, ymin, ymax, rc->clip.miny, rc->clip.maxy));
+   m->row0 = fx_ceil_int(xy, ymin - fr->Hy);
 
    /* the walk needs none of the planes (measuring compares with them) */
    if (rc->interp != RAST_INTERP_SCANLINE)

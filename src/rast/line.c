@@ -70,6 +70,10 @@ void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (
 
 void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
+   if (rast_multisampled(rc)) {
+      rast_msaa_pass(rc, RAST_PRIM_LINE, v1, v2, NULL);
+      return;
+   }
    struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;
    unsigned ps = rc->vl.pos_slot;
@@ -245,7 +249,8 @@ void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (
    rast_interp_modes_setup(rc, fr, 0, 1, 3);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 3);
-   fr->quad[0].front_facing = fr->quad[1].front_facing = true;
+   fr->quad[0].front_facing = fr->quad[1].front_facing =
+      !rc->vl.has_face || o1[rc->vl.face_slot][0] != 0.0f;
    rast_setup_constants(fr, rc->rs.flatshade_first ? o1 : o2);
    rast_scan_convex(rc, fr);
 }

@@ -85,6 +85,10 @@ static bool point_viewport_clip(struct rast_context *rc, const float *pos, float
 
 void rast_point_pass(struct rast_context *rc, const float (*v)[4])
 {
+   if (rast_multisampled(rc)) {
+      rast_msaa_pass(rc, RAST_PRIM_POINT, v, NULL, NULL);
+      return;
+   }
    const struct rast_raster_state *rs = &rc->rs;
    const struct rast_profile *prof = rc->profile;
    const float *pos = v[rc->vl.pos_slot];
@@ -170,7 +174,8 @@ void rast_point_pass(struct rast_context *rc, const float (*v)[4])
    }
 
    rast_interp_modes_off(fr);
-   fr->quad[0].front_facing = fr->quad[1].front_facing = true;
+   fr->quad[0].front_facing = fr->quad[1].front_facing =
+      !rc->vl.has_face || v[rc->vl.face_slot][0] != 0.0f;
    rast_setup_constants(fr, v);
    rast_scan_convex(rc, fr);
    rc->clip = clip;

@@ -154,6 +154,9 @@ struct rast_blend_state {
     * (GL: no effect on floating-point buffers; llvmpipe, softpipe). */
    bool logicop_enable;
    enum rast_logicop logicop_func;
+   /* Multisampled targets: sample k of a pixel is kept where the shader's
+    * first colour output has alpha > k / 4 (llvmpipe's rule). */
+   bool alpha_to_coverage;
    struct rast_blend_target rt[RAST_MAX_CBUFS];
 };
 
@@ -179,6 +182,7 @@ struct rast_color_target {
    rast_load_func load;           /* always set: RGBA float of n pixels */
    rast_store_func store;         /* always set */
    bool clamp;                    /* unorm/snorm: clamp blend inputs */
+   size_t sample_stride;          /* multisampled: bytes from one sample's plane to the next */
 };
 
 enum rast_zs_layout {
@@ -198,10 +202,20 @@ struct rast_zs_target {
    uint8_t *base;
    int stride;
    enum rast_zs_layout layout;
+   size_t sample_stride;          /* multisampled: bytes from one sample's plane to the next */
 };
+
+/* Multisampling (msaa.c, docs/msaa.md): a target of RAST_MSAA_SAMPLES
+ * samples a pixel stores each sample in a plane of its own, the
+ * single-sampled layout, sample_stride bytes apart; sample k sits at
+ * rast_sample_pos_4x[k] in its pixel (llvmpipe's and D3D's standard
+ * pattern, multiples of 1/8: exact in the XY register). */
+#define RAST_MSAA_SAMPLES 4
+extern const float rast_sample_pos_4x[RAST_MSAA_SAMPLES][2];
 
 struct rast_framebuffer {
    unsigned width, height;
+   unsigned samples;              /* 0 or 1: one sample a pixel; else RAST_MSAA_SAMPLES */
    unsigned nr_cbufs;
    struct rast_color_target cbuf[RAST_MAX_CBUFS];   /* base NULL: unbound */
    struct rast_zs_target zs;
@@ -266,6 +280,11 @@ struct rast_vertex_layout {
    struct rast_varying varying[RAST_MAX_VARYINGS];
    bool has_psize;               /* the vertex carries a point size ... */
    unsigned psize_slot;          /* ... in this slot's x */
+   /* Lines and points of a polygon drawn unfilled (desktop glPolygonMode)
+    * carry the polygon's face: x is 1 for front, 0 for back (draw's
+    * unfilled stage).  Without it they are front-facing. */
+   bool has_face;
+   unsigned face_slot;
    /* Bit i: on points, varying i (unless CONSTANT) is the sprite coordinate
     * (s, t, 0, 1) generated across the square, not the vertex's value
     * (gl_PointCoord, GL_COORD_REPLACE).  Other primitives ignore it. */
@@ -386,6 +405,9 @@ void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc);
 void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp);
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa);
 void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back);
+/* The samples drawn on a multisampled target (bit k: sample k; GL's sample
+ * mask and sample coverage).  Single-sampled targets ignore it. */
+void rast_set_sample_mask(struct rast_context *rc, unsigned mask);
 void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blend);
 void rast_set_blend_color(struct rast_context *rc, const float color[4]);
 void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl);

@@ -27,6 +27,7 @@ struct rast_context {
    struct rast_scissor viewport;
    struct rast_depth_stencil_state dsa;
    uint8_t stencil_ref[2];
+   unsigned sample_mask;
    struct rast_blend_state blend;
    float blend_color[4];
    struct rast_vertex_layout vl;
@@ -63,6 +64,12 @@ struct rast_context {
    struct rast_vectors *vec;
    bool vec_tri;
    rast_quad_func vec_next_quad;
+   struct rast_msaa *msaa;          /* a multisampled target's passes (msaa.c) */
+   bool msaa_busy;                  /* inside them: a pass is one walk */
+   /* The quad rows a walk draws (pass-local scan lines, [lo, hi)): the
+    * walk runs from the primitive's top whatever they are, so that its
+    * registers are the whole walk's (msaa.c's strips). */
+   int64_t rows_lo, rows_hi;
    void *front_priv;                /* setup/scan's own specialised state */
    void *back_priv;                 /* back end's own specialised state */
 };
@@ -119,6 +126,22 @@ void rast_point_pass(struct rast_context *rc, const float (*v0)[4]);
 
 /* threads.c: true when the primitive went to the queue (threads > 1). */
 enum rast_prim_kind { RAST_PRIM_TRIANGLE, RAST_PRIM_LINE, RAST_PRIM_POINT };
+
+/* msaa.c: one pass of a primitive on a multisampled target, as the passes
+ * above are on others: the pixels' shading once, then each sample's
+ * coverage, depth, stencil and colour. */
+static inline bool rast_multisampled(const struct rast_context *rc)
+{
+   return rc->fb.samples > 1 && !rc->msaa_busy;
+}
+void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
+                    const float (*v1)[4], const float (*v2)[4]);
+void rast_msaa_destroy(struct rast_context *rc);
+/* backend.c: the back end on sample s's planes of the framebuffer. */
+void rast_backend_sample(struct rast_context *rc, unsigned s);
+/* backend.c: whether the back end runs the shader at all (a colour it
+ * writes, a depth output or a discard). */
+bool rast_backend_shades(const struct rast_context *rc);
 bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
                 const float (*v1)[4], const float (*v2)[4]);
 
@@ -135,6 +158,8 @@ void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const fl
  * context's: bands of RAST_BAND_ROWS scan lines, dealt round-robin. */
 static inline bool rast_band_mine(const struct rast_context *rc, int64_t p)
 {
+   if (p < rc->rows_lo || p >= rc->rows_hi)
+      return false;
    return rc->band_count == 1 ||
           (unsigned)((uint64_t)(p + rc->org_y) / RAST_BAND_ROWS % rc->band_count) ==
           rc->band_index;

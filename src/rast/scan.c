@@ -21,7 +21,7 @@
 
 static inline int64_t ceil_row(const struct rast_front *fr, struct fx_format xy, int64_t y)
 {
-   return fx_ceil_int(xy, y - fr->H + fr->row_bias);
+   return fx_ceil_int(xy, y - fr->Hy + fr->row_bias);
 }
 
 /* floor(n / d) for d > 0, with the remainder in [0, d). */
@@ -56,7 +56,7 @@ static void literal_start(struct rast_context *rc, struct rast_front *fr, struct
    }
    e->step = nd >= nxy ? q >> (nd - nxy) : q * (INT64_C(1) << (nxy - nd));
    e->step_rem = 0;
-   const int64_t t0 = j0 * fr->S + fr->H - e->ya;
+   const int64_t t0 = j0 * fr->S + fr->Hy - e->ya;
    const int64_t x0 = e->xa + floor_div(dx * t0, e->dy, &rem);
    e->x = fx_sat(prof->xy, x0 + (j - j0) * e->step, &rc->stats.sat[RAST_REG_XY]);
    e->rem = 0;
@@ -71,7 +71,7 @@ static void edge_start(struct rast_context *rc, struct rast_front *fr,
 {
    const struct rast_profile *prof = rc->profile;
    int64_t S = fr->S;
-   int64_t t = j * S + fr->H - e->ya;          /* 0 <= t <= dy */
+   int64_t t = j * S + fr->Hy - e->ya;         /* 0 <= t <= dy */
    int64_t dx = e->xb - e->xa;
    int64_t rem;
 
@@ -137,8 +137,8 @@ static inline void record_row(struct rast_context *rc, struct rast_front *fr, st
                               const struct fr_edge *L, const struct fr_edge *R)
 {
    struct fx_format xy = rc->profile->xy;
-   int64_t xs = fx_ceil_int(xy, L->x - fr->H + (L->rem != 0));
-   int64_t xe = fx_ceil_int(xy, R->x - fr->H + (R->rem != 0)) - 1;
+   int64_t xs = fx_ceil_int(xy, L->x - fr->Hx + (L->rem != 0));
+   int64_t xe = fx_ceil_int(xy, R->x - fr->Hx + (R->rem != 0)) - 1;
    if (xs < rc->clip.minx) xs = rc->clip.minx;
    if (xe > rc->clip.maxx - 1) xe = rc->clip.maxx - 1;
    row->valid = true;

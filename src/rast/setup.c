@@ -65,6 +65,7 @@ void rast_front_validate(struct rast_context *rc)
 
    fr->S = fx_one(prof->xy);
    fr->H = rc->rs.half_pixel_center ? fr->S / 2 : 0;
+   fr->Hx = fr->Hy = fr->H;
    fr->row_bias = rc->rs.bottom_edge_rule ? 1 : 0;
    fr->inv_S = 1.0f / (float)fr->S;
    fr->z_scale = 1.0 / (((double)(INT64_C(1) << prof->z_bits) - 1.0) *
@@ -368,6 +369,10 @@ bool rast_triangle_counted(struct rast_context *rc, int64_t det, bool *front)
 void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
                         const float (*v1)[4], const float (*v2)[4])
 {
+   if (rast_multisampled(rc)) {
+      rast_msaa_pass(rc, RAST_PRIM_TRIANGLE, v0, v1, v2);
+      return;
+   }
    struct rast_front *fr = rast_front_begin(rc, false);
    const struct rast_profile *prof = rc->profile;
    const float (*v[3])[4] = { v0, v1, v2 };

@@ -87,7 +87,18 @@ struct tex_view_desc {
    struct tex_level level[TEX_MAX_LEVELS];
    int32_t layers;              /* array layers; 6 for a cube */
    uint8_t swizzle[4];
+   /* Integer texels (GL ES 3.0's integer formats): the driver's fetch
+    * gives their bits, which the unit returns as they are (GL samples them
+    * NEAREST), and TEX_SWZ_1 is the integer 1 (tex_one). */
+   bool integer;
 };
+
+/* The value TEX_SWZ_1 gives. */
+static inline float tex_one(const struct tex_view_desc *v)
+{
+   union { uint32_t u; float f; } one = { 1u };
+   return v->integer ? one.f : 1.0f;
+}
 
 struct tex_sampler_desc {
    enum tex_wrap wrap[3];

@@ -80,7 +80,7 @@ static void lanes_channels(struct tex_unit *u)
          *c = (struct tex_lanes_channel){ bgr ? shift_bgra[s] : shift_rgba[s], 0xff, 0.0f,
                                           u->samp.border[s] };
       } else {
-         const float k = s == 3 || s == TEX_SWZ_1 ? 1.0f : 0.0f;
+         const float k = s == 3 || s == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
          *c = (struct tex_lanes_channel){ 0, 0, k, s < 4 ? u->samp.border[s] : k };
       }
    }

@@ -54,7 +54,7 @@ TEX_FAST_INLINE void quad(const struct tex_unit *u, const struct tex_quad *q,
    for (unsigned ch = 0; ch < 4; ch++) {
       const unsigned s = u->view.swizzle[ch];
       for (unsigned p = 0; p < TEX_QUAD; p++)
-         rgba[ch][p] = s < 4 ? out[p][s] : s == TEX_SWZ_1 ? 1.0f : 0.0f;
+         rgba[ch][p] = s < 4 ? out[p][s] : s == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
    }
    tex_fst_flush(&x, u->stats);
 }

@@ -187,7 +187,7 @@ void tex_view_texel(const struct tex_view_desc *v, const int x[TEX_QUAD], const 
       }
       for (unsigned c = 0; c < 4; c++) {
          unsigned s = v->swizzle[c];
-         rgba[c][p] = s < 4 ? o[s] : s == TEX_SWZ_1 ? 1.0f : 0.0f;
+         rgba[c][p] = s < 4 ? o[s] : s == TEX_SWZ_1 ? tex_one(v) : 0.0f;
       }
    }
 }

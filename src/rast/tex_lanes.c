@@ -511,7 +511,7 @@ quad2(const struct tex_unit *u, const struct tex_quad *q, enum tex_lod_control c
    } else {
       for (unsigned ch = 0; ch < 4; ch++) {
          const unsigned s = u->view.swizzle[ch];
-         const float konst = s == TEX_SWZ_1 ? 1.0f : 0.0f;
+         const float konst = s == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
          const lanes_v4f v = s < 4 ? out[s] : (lanes_v4f){ konst, konst, konst, konst };
          memcpy(rgba[ch], &v, sizeof(v));
       }

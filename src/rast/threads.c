@@ -212,6 +212,7 @@ static void sync_state(struct rast_context *w, const struct rast_context *rc, un
    w->viewport = rc->viewport;
    w->dsa = rc->dsa;
    memcpy(w->stencil_ref, rc->stencil_ref, sizeof(w->stencil_ref));
+   w->sample_mask = rc->sample_mask;
    w->blend = rc->blend;
    memcpy(w->blend_color, rc->blend_color, sizeof(w->blend_color));
    w->vl = rc->vl;

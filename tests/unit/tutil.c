@@ -231,14 +231,25 @@ void t_depth_count_hits(struct rast_context *rc, enum rast_func func)
 
 void t_bind_rgba8_z24s8(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w, int h)
 {
+   t_bind_rgba8_z24s8_samples(rc, color, zs, w, h, 1);
+}
+
+void t_bind_rgba8_z24s8_samples(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w,
+                                int h, unsigned samples)
+{
    struct rast_framebuffer fb;
    memset(&fb, 0, sizeof(fb));
    fb.width = (unsigned)w;
    fb.height = (unsigned)h;
+   fb.samples = samples;
    fb.nr_cbufs = 1;
-   fb.cbuf[0] = (struct rast_color_target){ color, w * 4, 4, RAST_CL_RGBA8,
-                                            t_load_rgba8, t_store_rgba8, true };
-   fb.zs = (struct rast_zs_target){ (uint8_t *)zs, w * 4, RAST_ZS_Z24_S8 };
+   fb.cbuf[0] = (struct rast_color_target){ .base = color, .stride = w * 4, .cpp = 4,
+                                            .layout = RAST_CL_RGBA8, .load = t_load_rgba8,
+                                            .store = t_store_rgba8, .clamp = true,
+                                            .sample_stride = (size_t)w * (size_t)h * 4 };
+   fb.zs = (struct rast_zs_target){ .base = (uint8_t *)zs, .stride = w * 4,
+                                    .layout = zs ? RAST_ZS_Z24_S8 : RAST_ZS_NONE,
+                                    .sample_stride = (size_t)w * (size_t)h * 4 };
    rast_set_framebuffer(rc, &fb);
 }
 

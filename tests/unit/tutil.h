@@ -54,6 +54,10 @@ void t_store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4]);
 
 /* A w x h RGBA8 colour buffer and a Z24S8 buffer as the framebuffer. */
 void t_bind_rgba8_z24s8(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w, int h);
+/* The same on a target of `samples` samples a pixel (1, or RAST_MSAA_SAMPLES planes
+ * of w x h pixels each, one after the other, in both buffers). */
+void t_bind_rgba8_z24s8_samples(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w,
+                                int h, unsigned samples);
 /* Vertices of three slots: position, a PERSPECTIVE varying (x, y read) and
  * a COLOR varying (all four read). */
 #define T_PERSP_COLOR_SLOTS 3
