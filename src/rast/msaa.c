@@ -24,6 +24,8 @@
  *
  * docs/msaa.md has the argument, the costs and what stays single-sampled.
  */
+#include <stdatomic.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rast/backend_priv.h"
@@ -86,6 +88,16 @@ static bool msaa_reserve(struct rast_context *rc)
       return false;
    }
    return true;
+}
+
+/* A primitive the model cannot draw for want of its cache: said once, not
+ * drawn in silence. */
+static void msaa_out_of_memory(const struct rast_context *rc)
+{
+   static atomic_bool said;
+   if (!atomic_exchange(&said, true))
+      fprintf(stderr, "fixpipe: out of memory for the multisample cache of a %u-pixel-wide "
+              "target: its primitives are not drawn\n", rc->fb.width);
 }
 
 void rast_msaa_destroy(struct rast_context *rc)
@@ -198,9 +210,12 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    struct rast_front *fr = rast_front_begin(rc, kind == RAST_PRIM_POINT);
    const unsigned samples = rc->sample_mask & ((1u << RAST_MSAA_SAMPLES) - 1);
    float box[4];
-   if (!rc->fs.shade || !samples || !msaa_reserve(rc) ||
-       !rast_prim_extent(rc, kind, v0, v1, v2, box))
+   if (!rc->fs.shade || !samples || !rast_prim_extent(rc, kind, v0, v1, v2, box))
       return;
+   if (!msaa_reserve(rc)) {
+      msaa_out_of_memory(rc);
+      return;
+   }
    struct rast_msaa *m = rc->msaa;
 
    /* The strips: the primitive's scan lines inside the pass's clip. */
