@@ -8,6 +8,8 @@
  *              pixel a mean of its four samples
  *   coverage   alpha to coverage on alpha ramps, and glSampleCoverage (0.5,
  *              inverted and not), over a background
+ *   blend      translucent Gouraud triangles blended (SRC_ALPHA,
+ *              ONE_MINUS_SRC_ALPHA) into each sample
  *
  * Self-checks (errors fail the program on any driver): the FBO is complete
  * with GL_SAMPLES = 4, and the resolved image has pixels strictly between
@@ -157,6 +159,29 @@ static void scene_coverage(int size)
    (void)size;
 }
 
+static void scene_blend(int size)
+{
+   uint32_t rng = 0xb1e4d00du;
+   glClearColor(0.2f, 0.1f, 0.05f, 1);
+   glClear(GL_COLOR_BUFFER_BIT);
+   glEnable(GL_BLEND);
+   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+   for (int t = 0; t < 30; t++) {
+      float pos[12], col[12];
+      for (int k = 0; k < 3; k++) {
+         pos[4 * k + 0] = (float)e2e_rand_range(&rng, -1100, 1100) / 1000.0f;
+         pos[4 * k + 1] = (float)e2e_rand_range(&rng, -1100, 1100) / 1000.0f;
+         pos[4 * k + 2] = 0.0f;
+         pos[4 * k + 3] = 1.0f;
+         for (int c = 0; c < 4; c++)
+            col[4 * k + c] = (float)e2e_rand_range(&rng, 0, 255) / 255.0f;
+      }
+      e2e_draw(GL_TRIANGLES, 3, pos, col, NULL);
+   }
+   glDisable(GL_BLEND);
+   (void)size;
+}
+
 int main(int argc, char **argv)
 {
    struct e2e_args a;
@@ -173,8 +198,10 @@ int main(int argc, char **argv)
       scene_edges(a.size);
    else if (!strcmp(c, "coverage"))
       scene_coverage(a.size);
+   else if (!strcmp(c, "blend"))
+      scene_blend(a.size);
    else
-      fp_die("--case: edges or coverage");
+      fp_die("--case: edges, coverage or blend");
    resolve(&m, g.fbo, a.size);
    e2e_end(&g, &a, NULL);
    return errors ? 1 : 0;
