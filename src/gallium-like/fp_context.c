@@ -322,6 +322,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->pipe.set_debug_callback = fp_set_debug_callback;
    fp->pipe.flush_resource = fp_flush_resource;
    fp->sample_mask = ~0u;
+   fp->fb_samples = 1;
    fp->fs_dirty = true;
    fp->print_stats = fp_env_stats();
    fp->stats_every = fp_env_stats_frames();

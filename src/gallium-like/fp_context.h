@@ -118,6 +118,7 @@ struct fp_context {
    uint64_t tex_epoch;
    const struct pipe_sampler_state *samplers[PIPE_SHADER_TYPES][PIPE_MAX_SAMPLERS];
    unsigned sample_mask;
+   unsigned fb_samples;             /* samples a pixel of the bound framebuffer: 1 or 4 */
 
    /* The samplers of draw's stages; the fragment stage's is thread 0's. */
    struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];

@@ -12,7 +12,6 @@
 #include "draw/draw_vertex.h"
 
 #include "fp_context.h"
-#include "fp_resource.h"
 #include "fp_screen.h"
 
 /* draw passes vertex counts as ushort: a batch must stay far below 65536
@@ -287,11 +286,8 @@ static bool fp_vbuf_discard(struct fp_vbuf_render *v)
       fp_fs_validate(v->fp);
    /* a sample mask without the target's samples draws nothing, but the
     * vertex stage, transform feedback included, still ran */
-   const struct pipe_framebuffer_state *fb = &v->fp->framebuffer;
-   const struct pipe_surface *s = fb->nr_cbufs && fb->cbufs[0] ? fb->cbufs[0] : fb->zsbuf;
-   const unsigned samples = s && s->texture ? fp_resource_samples(s->texture) : 1;
    return (v->fp->rasterizer && v->fp->rasterizer->base.rasterizer_discard) ||
-          !(v->fp->sample_mask & ((1u << samples) - 1));
+          !(v->fp->sample_mask & ((1u << v->fp->fb_samples) - 1));
 }
 
 /* The batch's vertices are reused by the next one: the model draws what it

@@ -235,6 +235,11 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    m->ctx = fs.ctx;
    m->a2c = rc->blend.alpha_to_coverage;
    rc->msaa_busy = true;
+   /* the samples' back end shades through the cache; the centre's calls
+    * the shader itself (centre_quad) */
+   rc->fs.shade = cached_shade;
+   rc->fs.shade2 = fs.shade2 ? cached_shade2 : NULL;
+   rc->fs.ctx = rc;
 
    for (int64_t y = top; y < bot; y += MSAA_STRIP_ROWS) {
       rc->rows_lo = y;
@@ -254,9 +259,6 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
 
       rc->quad = quad;
       rc->quad2 = quad2;
-      rc->fs.shade = cached_shade;
-      rc->fs.shade2 = fs.shade2 ? cached_shade2 : NULL;
-      rc->fs.ctx = rc;
       for (unsigned k = 0; k < RAST_MSAA_SAMPLES; k++) {
          if (!(samples >> k & 1u))
             continue;
@@ -266,11 +268,9 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
          rast_backend_sample(rc, k);
          one_pass(rc, kind, v0, v1, v2, &first);
       }
-      rast_backend_sample(rc, 0);
-      rc->fs.shade = fs.shade;
-      rc->fs.shade2 = fs.shade2;
-      rc->fs.ctx = fs.ctx;
    }
+   rast_backend_sample(rc, 0);
+   rc->fs = fs;
    fr->Hx = fr->Hy = fr->H;
    rc->msaa_busy = false;
    rc->rows_lo = INT64_MIN;
