@@ -1,8 +1,9 @@
 /*
  * The dfx24 data paths of dfx_ops.h (W = 19, the seed's width) on four
- * lanes at once: the perspective division and the texture unit work on a
- * quad of pixels, and each lane is the scalar data path, operation for
- * operation.  The scalar functions stay the reference (FIXPIPE_DEBUG=scalar
+ * lanes at once, or eight (DFXL_N, set by the includer: a quad of pixels,
+ * or two quads side by side where the instruction set has 512-bit
+ * vectors): the perspective division and the texture unit work on whole
+ * quads, and each lane is the scalar data path, operation for operation.  The scalar functions stay the reference (FIXPIPE_DEBUG=scalar
  * selects them); tests/unit/test_dfx_lanes.c holds every function here to
  * its scalar twin bit for bit, range events included, on millions of
  * random operands.
@@ -29,7 +30,18 @@
 #include <immintrin.h>
 #endif
 
+#ifndef DFXL_N
 #define DFXL_N 4
+#endif
+_Static_assert(DFXL_N == 4 || DFXL_N == 8, "a quad, or two");
+
+/* The instructions that say one operation in one, where the lanes fill
+ * the set's vector; the plain expressions otherwise. */
+#if defined(__AVX512F__) && defined(__AVX512DQ__) && DFXL_N == 8
+#define DFXL_AVX512 1
+#elif defined(__AVX__) && DFXL_N == 4
+#define DFXL_AVX 1
+#endif
 
 /* Every function here is inline: no vector crosses a call, so the
  * baseline build's warning about the AVX calling convention is moot. */
@@ -63,35 +75,43 @@ struct dfxl_stats {
 };
 
 #define DFXL_STATS(opt)                                                                      \
-   ((struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0), { 0, 0, 0, 0 },                       \
-                         { __builtin_inf(), __builtin_inf(), __builtin_inf(), __builtin_inf() }, \
-                         (opt) })
+   ((struct dfxl_stats){ dfxl_splat(0), dfxl_splat(0), dfxl_splatd(0),                        \
+                         dfxl_splatd(__builtin_inf()), (opt) })
 
 /* Whether some lane is marked. */
 DFXL_INLINE bool dfxl_any(dfxl_i m)
 {
-#ifdef __AVX__
-   return _mm256_movemask_pd((__m256d)m) != 0;      /* a mask lane is all ones or zeros */
+#if defined(DFXL_AVX512)
+   return _mm512_movepi64_mask((__m512i)m) != 0;    /* a mask lane is all ones or zeros */
+#elif defined(DFXL_AVX)
+   return _mm256_movemask_pd((__m256d)m) != 0;
 #else
-   return (m[0] | m[1] | m[2] | m[3]) != 0;
+   int64_t o = 0;
+   for (int i = 0; i < DFXL_N; i++)
+      o |= m[i];
+   return o != 0;
 #endif
 }
 
 DFXL_INLINE dfxl_i dfxl_splat(int64_t v)
 {
-   dfxl_i r = { v, v, v, v };
-   return r;
+   return (dfxl_i){ 0 } + v;
+}
+
+DFXL_INLINE dfxl_d dfxl_splatd(double v)
+{
+   return (dfxl_d){ 0 } + v;
 }
 
 /* mask ? a : b, mask lanes all ones or all zeros (a vector comparison) */
 DFXL_INLINE dfxl_i dfxl_sel(dfxl_i mask, dfxl_i a, dfxl_i b)
 {
-#ifdef __AVX2__
+#if defined(__AVX2__) && DFXL_N == 4
    /* one instruction where the expression below is three: blendv reads
     * each lane's sign, and a mask lane is all ones or all zeros */
    return (dfxl_i)_mm256_blendv_pd((__m256d)b, (__m256d)a, (__m256d)mask);
 #else
-   return (a & mask) | (b & ~mask);
+   return (a & mask) | (b & ~mask);      /* one vpternlogq with AVX-512 */
 #endif
 }
 
@@ -172,7 +192,9 @@ DFXL_INLINE dfxl_d dfxl_clear_low(dfxl_d x, dfxl_i c)
  * instructions' own rule). */
 DFXL_INLINE dfxl_d dfxl_mind(dfxl_d a, dfxl_d b)
 {
-#ifdef __AVX__
+#if defined(DFXL_AVX512)
+   return (dfxl_d)_mm512_min_pd((__m512d)a, (__m512d)b);
+#elif defined(DFXL_AVX)
    return (dfxl_d)_mm256_min_pd((__m256d)a, (__m256d)b);
 #else
    return dfxl_seld(a < b, a, b);
@@ -181,7 +203,9 @@ DFXL_INLINE dfxl_d dfxl_mind(dfxl_d a, dfxl_d b)
 
 DFXL_INLINE dfxl_d dfxl_maxd(dfxl_d a, dfxl_d b)
 {
-#ifdef __AVX__
+#if defined(DFXL_AVX512)
+   return (dfxl_d)_mm512_max_pd((__m512d)a, (__m512d)b);
+#elif defined(DFXL_AVX)
    return (dfxl_d)_mm256_max_pd((__m256d)a, (__m256d)b);
 #else
    return dfxl_seld(a > b, a, b);
@@ -204,9 +228,8 @@ DFXL_INLINE void dfxl_merge_where(struct dfxl_stats *st, const struct dfxl_stats
    st->sat += from->sat & m;
    st->flush += from->flush & m;
    if (st->optimistic) {
-      const dfxl_d h = dfxl_seld(m, from->hi, (dfxl_d){ 0, 0, 0, 0 });
-      const dfxl_d l = dfxl_seld(m, from->lo, (dfxl_d){ __builtin_inf(), __builtin_inf(),
-                                                          __builtin_inf(), __builtin_inf() });
+      const dfxl_d h = dfxl_seld(m, from->hi, dfxl_splatd(0));
+      const dfxl_d l = dfxl_seld(m, from->lo, dfxl_splatd(__builtin_inf()));
       st->hi = dfxl_maxd(h, st->hi);
       st->lo = dfxl_mind(l, st->lo);
    }
@@ -242,8 +265,7 @@ DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, struct dfxl_stats *st)
    st->sat -= sat;
    st->flush -= flush;
    dfxl_d r = dfxl_clear_low(x, c);
-   const dfxl_d big = (dfxl_d)((dfxl_i)(dfxl_d){ DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG,
-                                                 DFXL_MAX_MAG } |
+   const dfxl_d big = (dfxl_d)((dfxl_i)dfxl_splatd(DFXL_MAX_MAG) |
                                ((dfxl_i)x & dfxl_splat(INT64_MIN)));
    r = dfxl_seld(sat, big, r);
    struct dfxl o = { (dfxl_d)((dfxl_i)r & nz & ~flush) };
@@ -273,7 +295,7 @@ DFXL_INLINE struct dfxl dfxl_from_fixed(dfxl_i v, int k, struct dfxl_stats *st)
    const dfxl_i n = dfxl_sel(neg, -v, v);
    if (st->optimistic) {
       const dfxl_i big = dfxl_shr(n, dfxl_splat(52)) != 0;     /* -INT64_MIN too */
-      st->hi = dfxl_seld(big, (dfxl_d){ 0x1p32, 0x1p32, 0x1p32, 0x1p32 }, st->hi);
+      st->hi = dfxl_seld(big, dfxl_splatd(0x1p32), st->hi);
       const dfxl_d ax = dfxl_to_d(n & dfxl_splat(((int64_t)1 << 52) - 1)) * fx_pow2(-k);
       const dfxl_d up = ax + (dfxl_d)((dfxl_i)(dfxl_grid(ax) * 0.5) & (ax != 0));
       return dfxl_round((dfxl_d)((dfxl_i)up | dfxl_shl(neg & 1, dfxl_splat(63))), st);
@@ -376,11 +398,10 @@ DFXL_INLINE struct dfxl dfxl_mul(struct dfxl a, struct dfxl b, struct dfxl_stats
 DFXL_INLINE struct dfxl dfxl_recip(struct dfxl a, struct dfxl_stats *st)
 {
    const dfxl_i zero = a.v == 0;
-   const dfxl_d one = { 1, 1, 1, 1 };
+   const dfxl_d one = dfxl_splatd(1);
    struct dfxl r = dfxl_round(one / dfxl_seld(zero, one, a.v), st);
    st->sat -= zero;
-   const dfxl_d big = { DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG, DFXL_MAX_MAG };
-   r.v = dfxl_seld(zero, big, r.v);
+   r.v = dfxl_seld(zero, dfxl_splatd(DFXL_MAX_MAG), r.v);
    return r;
 }
 
@@ -436,11 +457,14 @@ DFXL_INLINE void dfxl_store(struct dfxl a, struct dfx out[DFXL_N])
  * way (the trick's sum is +0; + 0.0 makes the instruction's -0 one). */
 DFXL_INLINE dfxl_d dfxl_floor(dfxl_d x)
 {
-#ifdef __AVX__
+#if defined(DFXL_AVX512)
+   return (dfxl_d)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC) +
+          0.0;
+#elif defined(DFXL_AVX)
    return (dfxl_d)_mm256_round_pd((__m256d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC) + 0.0;
 #else
-   const dfxl_d M = (dfxl_d)(((dfxl_i)x & dfxl_splat(INT64_MIN)) | (dfxl_i)(dfxl_d){
-      0x1p52, 0x1p52, 0x1p52, 0x1p52 });
+   const dfxl_d M =
+      (dfxl_d)(((dfxl_i)x & dfxl_splat(INT64_MIN)) | (dfxl_i)dfxl_splatd(0x1p52));
    const dfxl_d r = (x + M) - M;
    return dfxl_seld(r > x, r - 1, r);
 #endif
@@ -454,7 +478,7 @@ DFXL_INLINE struct dfxl dfxl_from_int(dfxl_d x, struct dfxl_stats *st)
 {
    const dfxl_d ax = dfxl_abs(x);
    const dfxl_d h = dfxl_grid(ax) * 0.5;
-   const dfxl_d up = ax + dfxl_seld(ax == 0, (dfxl_d){ 0, 0, 0, 0 }, h);
+   const dfxl_d up = ax + dfxl_seld(ax == 0, dfxl_splatd(0), h);
    const dfxl_d sgn = (dfxl_d)((dfxl_i)x & dfxl_splat(INT64_MIN));
    return dfxl_round((dfxl_d)((dfxl_i)up | (dfxl_i)sgn), st);
 }

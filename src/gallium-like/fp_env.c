@@ -14,6 +14,7 @@
 #include "fp_screen.h"
 #include "fixed/numsys.h"
 #include "rast/cycles.h"
+#include "rast/lanes.h"
 
 static const struct rast_profile *env_profile;
 static bool env_stats;
@@ -38,6 +39,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "the model on one thread whatever FIXPIPE_THREADS says (same bits)" },
    { "norebase", FP_DEBUG_NOREBASE,
      "no per-primitive rebase of REPEAT texture coordinates (large ones lose bits)" },
+   { "noavx512", FP_DEBUG_NOAVX512,
+     "the lanes' 256-bit instruction set where the CPU has AVX-512 (same bits)" },
    DEBUG_NAMED_VALUE_END
 };
 
@@ -95,6 +98,8 @@ static void fp_env_parse(void)
    const char *d = getenv("FIXPIPE_DEBUG");
    env_debug = (unsigned)debug_get_flags_option("FIXPIPE_DEBUG", fp_debug_flags, 0);
    fp_env_check_flags("FIXPIPE_DEBUG", d, fp_debug_flags);
+   if ((env_debug & FP_DEBUG_NOAVX512) && rast_lanes() == &rast_lanes_avx512)
+      rast_lanes_set(&rast_lanes_avx2);
 
    /* FIXPIPE_THREADS, like LP_NUM_THREADS: the cores by default */
    unsigned cores = util_get_cpu_caps()->nr_cpus;

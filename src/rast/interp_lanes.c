@@ -20,6 +20,11 @@
  * raised are counted per pixel all the same.  Each quad is first computed
  * optimistically (dfx_lanes.h), and again with its range events handled
  * where one happened; not with noskip.
+ *
+ * Compiled with DFXL_N = 8 (the 512-bit set, lanes.h), a vector holds both
+ * quads of a pair, quad 0 in lanes 0-3: the pair's operations are each one
+ * instruction, and only the pair function is compiled (a lone quad takes
+ * the 256-bit set's).
  */
 #include "rast/front.h"
 #include "rast/lanes_fns.h"
@@ -27,8 +32,26 @@
 
 static inline __attribute__((always_inline)) struct dfxl splat(double v)
 {
-   struct dfxl r = { { v, v, v, v } };
+   struct dfxl r = { dfxl_splatd(v) };
    return r;
+}
+
+/* The quads a vector holds. */
+#define QPV (DFXL_N / RAST_QUAD_SIZE)
+
+/* Vector k of a pass's results to its quads' inputs, at offset `off`. */
+static inline __attribute__((always_inline)) void
+store(struct dfxl v, float *const *in, unsigned k, unsigned off)
+{
+#if DFXL_N == 8
+   float f[8];
+   dfxl_to_float(v, f);
+   memcpy(in[0] + off, f, 4 * sizeof(float));
+   memcpy(in[1] + off, f + 4, 4 * sizeof(float));
+   (void)k;
+#else
+   dfxl_to_float(v, in[k] + off);
+#endif
 }
 
 static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned times)
@@ -39,8 +62,9 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
 
 /* `nq` quads (1, or 2 side by side on a row: their operations interleave,
  * each quad's chain of dependent operations being long and the two
- * independent), each lane a pixel's operations as the scalar path does
- * them; quad k's planes go to in[k] + the component's offset.
+ * independent; or one vector with both), each lane a pixel's operations as
+ * the scalar path does them; quad k's planes go to in[k] + the component's
+ * offset, and an[v], bn[v] are vector v's numerators.
  * `optimistic` (dfx_lanes.h): false, leaving nothing counted, when a lane
  * had a range event.  `n`: the planes evaluated per pixel (t->ln), a
  * constant in the common cases so that the planes stay in registers. */
@@ -51,48 +75,49 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
    struct fr_tex *t = &fr->tex;
    struct dfxl_stats st = DFXL_STATS(optimistic);
    const struct dfxl rdet = splat(t->lrdet);
+   const unsigned nv = nq / QPV;
    struct dfxl a[2], b[2];
-   for (unsigned k = 0; k < nq; k++)
+   for (unsigned k = 0; k < nv; k++)
       a[k] = dfxl_mul(dfxl_from_fixed(an[k], (int)t->k, &st), rdet, &st);
-   for (unsigned k = 0; k < nq; k++)
+   for (unsigned k = 0; k < nv; k++)
       b[k] = dfxl_mul(dfxl_from_fixed(bn[k], (int)t->k, &st), rdet, &st);
 
    struct dfxl v[2][1 + FR_MAX_COMP], u[2][1 + FR_MAX_COMP];
    for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nq; k++)
+      for (unsigned k = 0; k < nv; k++)
          v[k][i] = dfxl_mul(a[k], splat(t->lv[t->lidx[i]][1]), &st);
    for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nq; k++)
+      for (unsigned k = 0; k < nv; k++)
          u[k][i] = dfxl_mul(b[k], splat(t->lv[t->lidx[i]][2]), &st);
    for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nq; k++)
+      for (unsigned k = 0; k < nv; k++)
          v[k][i] = dfxl_add_mostly_same_sign(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
    for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nq; k++)
+      for (unsigned k = 0; k < nv; k++)
          v[k][i] = dfxl_add_mostly_same_sign(v[k][i], u[k][i], &st);
 
    struct dfxl w[2];
    unsigned first = 0;
-   for (unsigned k = 0; k < nq; k++)
+   for (unsigned k = 0; k < nv; k++)
       w[k] = t->w_const ? splat(t->lw) : dfxl_recip(v[k][0], &st);
    if (!t->w_const)
       first = 1;
    for (unsigned i = first; i < n; i++)
-      for (unsigned k = 0; k < nq; k++) {
+      for (unsigned k = 0; k < nv; k++) {
          if (!t->w_one)
             v[k][i] = dfxl_mul(v[k][i], w[k], &st);
-         dfxl_to_float(v[k][i], in[k] + t->lout[i]);
+         store(v[k][i], in, k, t->lout[i]);
       }
-   for (unsigned i = 0; i < t->n_const; i++)
-      for (unsigned k = 0; k < nq; k++) {
-         float *o = in[k] + t->cout[i];
-         if (t->w_const) {
+   for (unsigned i = 0; i < t->n_const; i++) {
+      if (t->w_const) {
+         for (unsigned k = 0; k < nq; k++)
             for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-               o[p] = t->cval[i];
-         } else {
-            dfxl_to_float(dfxl_mul(splat(t->lv[t->cidx[i]][0]), w[k], &st), o);
-         }
+               in[k][t->cout[i] + p] = t->cval[i];
+         continue;
       }
+      for (unsigned k = 0; k < nv; k++)
+         store(dfxl_mul(splat(t->lv[t->cidx[i]][0]), w[k], &st), in, k, t->cout[i]);
+   }
    if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
    /* the events of the values computed once per primitive, for every pixel */
@@ -110,7 +135,8 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
    static bool persp_##nn(struct rast_front *fr, float *const in[2], const dfxl_i an[2],     \
                           const dfxl_i bn[2], unsigned nq)                                    \
    {                                                                                          \
-      return nq == 2 ? persp(fr, in, an, bn, true, nn, 2) : persp(fr, in, an, bn, true, nn, 1); \
+      return nq == 2 || QPV == 2 ? persp(fr, in, an, bn, true, nn, 2)                       \
+                                 : persp(fr, in, an, bn, true, nn, 1);                       \
    }
 PERSP_N(1)
 PERSP_N(2)
@@ -134,23 +160,33 @@ static bool persp_optimistic(struct rast_front *fr, float *const in[2], const df
    case 7: return persp_7(fr, in, an, bn, nq);
    case 8: return persp_8(fr, in, an, bn, nq);
    default:
-      return nq == 2 ? persp(fr, in, an, bn, true, fr->tex.ln, 2)
+      return nq == 2 || QPV == 2 ? persp(fr, in, an, bn, true, fr->tex.ln, 2)
                      : persp(fr, in, an, bn, true, fr->tex.ln, 1);
    }
 }
 
-/* The numerators of the quad `step` quads on from the registers' (pixels
- * x, x+1 of both scan lines), built here as vectors: written as four
- * numbers and read as one vector they would wait on the processor's store
- * forwarding.  The sums are the registers' own steps (tex_numerators). */
+/* The numerators of the quads from `step` quads on from the registers'
+ * (pixels x, x+1 of both scan lines), one quad a vector or two, built here
+ * as vectors: written as numbers and read as one vector they would wait on
+ * the processor's store forwarding.  The sums are the registers' own steps
+ * (tex_numerators). */
 static inline void numerators(const struct fr_tex *t, unsigned step, dfxl_i *an, dfxl_i *bn)
 {
    const int64_t a0 = t->an[0] + step * 2 * t->a_dx, a1 = t->an[1] + step * 2 * t->a_dx;
    const int64_t b0 = t->bn[0] + step * 2 * t->b_dx, b1 = t->bn[1] + step * 2 * t->b_dx;
+#if DFXL_N == 8
+   const int64_t a2 = 2 * t->a_dx, b2 = 2 * t->b_dx;
+   *an = (dfxl_i){ a0, a0 + t->a_dx, a1, a1 + t->a_dx,
+                   a0 + a2, a0 + a2 + t->a_dx, a1 + a2, a1 + a2 + t->a_dx };
+   *bn = (dfxl_i){ b0, b0 + t->b_dx, b1, b1 + t->b_dx,
+                   b0 + b2, b0 + b2 + t->b_dx, b1 + b2, b1 + b2 + t->b_dx };
+#else
    *an = (dfxl_i){ a0, a0 + t->a_dx, a1, a1 + t->a_dx };
    *bn = (dfxl_i){ b0, b0 + t->b_dx, b1, b1 + t->b_dx };
+#endif
 }
 
+#if DFXL_N == 4
 void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q)
 {
    struct fr_tex *t = &fr->tex;
@@ -161,6 +197,7 @@ void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q)
       return;
    persp(fr, in, an, bn, false, t->ln, 1);
 }
+#endif
 
 void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
 {
@@ -168,10 +205,15 @@ void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
    dfxl_i an[2], bn[2];
    float *const in[2] = { in0, in1 };
    numerators(t, 0, &an[0], &bn[0]);
-   numerators(t, 1, &an[1], &bn[1]);
+   if (QPV == 1)
+      numerators(t, 1, &an[1], &bn[1]);
    if (persp_optimistic(fr, in, an, bn, 2))
       return;
    /* a range event in one of them: each the careful way */
+   if (QPV == 2) {
+      persp(fr, in, an, bn, false, t->ln, 2);
+      return;
+   }
    float *const in_0[2] = { in0, NULL }, *const in_1[2] = { in1, NULL };
    persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
    persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);

@@ -2,7 +2,8 @@
  * The model's datapath on lanes: the quad's four pixels at once through
  * the same data paths as the scalar code (src/fixed/dfx_lanes.h).  The
  * functions are compiled once per instruction set (-DLANES_SUFFIX=_avx2
- * with -mavx2, _sse2 with the baseline) and rast_lanes() picks one set per
+ * with -mavx2, _sse2 with the baseline, _avx512 with AVX-512 and two quads
+ * a vector for the pair functions) and rast_lanes() picks one set per
  * process from the CPU.  The scalar functions stay the reference
  * (RAST_OPT_SCALAR); tests hold both sets to them bit for bit.
  */
@@ -16,7 +17,7 @@
 struct rast_front;
 
 struct rast_lanes {
-   const char *isa;                       /* "avx2", "sse2" */
+   const char *isa;                       /* "avx512", "avx2", "sse2" */
    /* The perspective division of a quad in dfx24 (W = 19) from the
     * numerators' registers (fr->tex.an, bn: the quad's left pixels), which
     * the caller then moves on; the COLOR components of the wide profile
@@ -43,9 +44,11 @@ struct rast_lanes {
 #define LANES_GLUE(a, b) LANES_GLUE2(a, b)
 #define LANES_FN(name) LANES_GLUE(name, LANES_SUFFIX)
 
-extern const struct rast_lanes rast_lanes_avx2, rast_lanes_sse2;
+extern const struct rast_lanes rast_lanes_avx512, rast_lanes_avx2, rast_lanes_sse2;
 
-/* The set for this CPU: AVX2 where it has it. */
+/* Whether this CPU runs the AVX-512 set. */
+bool rast_lanes_have_avx512(void);
+/* The set for this CPU: AVX-512 where it has it, else AVX2 where it has it. */
 const struct rast_lanes *rast_lanes(void);
 /* Another set from now on (tests: every set against the scalar path). */
 void rast_lanes_set(const struct rast_lanes *set);

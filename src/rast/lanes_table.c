@@ -11,7 +11,12 @@
 
 const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
    .isa = &LANES_STR(LANES_SUFFIX)[1],     /* without the leading _ */
+#if defined(DFXL_N) && DFXL_N == 8
+   /* a lone quad fills half a vector: the 256-bit set's */
+   .persp_dfx19 = persp_dfx19_lanes_avx2,
+#else
    .persp_dfx19 = LANES_FN(persp_dfx19_lanes),
+#endif
    .persp2_dfx19 = LANES_FN(persp2_dfx19_lanes),
    .tex_dfx19_2d = LANES_FN(tex_dfx19_2d_lanes),
 };

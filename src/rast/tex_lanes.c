@@ -15,28 +15,55 @@
 #include <immintrin.h>
 #endif
 
+/* A lane a pixel (a quad, or a pair of quads with DFXL_N = 8: lanes.h),
+ * and two lanes a pixel (the s then the t of the pixels; a filter's two
+ * taps). */
+typedef float lanes_f __attribute__((vector_size(4 * DFXL_N)));
+typedef int32_t lanes_i __attribute__((vector_size(4 * DFXL_N)));
+typedef float taps_f __attribute__((vector_size(8 * DFXL_N)));
+typedef int32_t taps_i __attribute__((vector_size(8 * DFXL_N)));
+typedef uint32_t taps_u __attribute__((vector_size(8 * DFXL_N)));
 typedef float lanes_v4f __attribute__((vector_size(16)));
-typedef int32_t lanes_v4i __attribute__((vector_size(16)));
-typedef float lanes_v8f __attribute__((vector_size(32)));
-typedef int32_t lanes_v8i __attribute__((vector_size(32)));
-typedef uint32_t lanes_v8u __attribute__((vector_size(32)));
+
+/* The quads a vector holds. */
+#define QPV (DFXL_N / TEX_QUAD)
+
+/* Two lanes a pixel from one (a, b side by side; a twice), and the halves. */
+#if DFXL_N == 8
+#define CONCAT(a, b) __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)
+#define LO(v) __builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)
+#define HI(v) __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)
+#else
+#define CONCAT(a, b) __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7)
+#define LO(v) __builtin_shufflevector(v, v, 0, 1, 2, 3)
+#define HI(v) __builtin_shufflevector(v, v, 4, 5, 6, 7)
+#endif
+#define TWICE(a) CONCAT(a, a)
+
+static inline __attribute__((always_inline)) lanes_i splat_i(int32_t v)
+{
+   return (lanes_i){ 0 } + v;
+}
 
 /* Whether some lane of a comparison's mask is set. */
-static inline __attribute__((always_inline)) bool any8(lanes_v8i m)
+static inline __attribute__((always_inline)) bool any_taps(taps_i m)
 {
-#ifdef __AVX__
+#if DFXL_N == 8 && defined(__AVX512F__)
+   return _mm512_test_epi32_mask((__m512i)m, (__m512i)m) != 0;
+#elif defined(__AVX__)
    return _mm256_movemask_ps((__m256)m) != 0;
 #else
-   const lanes_v4i a = __builtin_shufflevector(m, m, 0, 1, 2, 3),
-                   b = __builtin_shufflevector(m, m, 4, 5, 6, 7);
-   const lanes_v4i o = a | b;
-   return (o[0] | o[1] | o[2] | o[3]) != 0;
+   const lanes_i o = LO(m) | HI(m);
+   int32_t r = 0;
+   for (int i = 0; i < DFXL_N; i++)
+      r |= o[i];
+   return r != 0;
 #endif
 }
 
 static inline __attribute__((always_inline)) struct dfxl splat(double v)
 {
-   struct dfxl r = { { v, v, v, v } };
+   struct dfxl r = { dfxl_splatd(v) };
    return r;
 }
 
@@ -56,25 +83,34 @@ static inline __attribute__((always_inline)) void
 coords(const struct tex_unit *u, const struct tex_quad *q, struct dfxl *cs, struct dfxl *ct,
        struct tex_fst *x)
 {
-   lanes_v8i v;
+   taps_i v;                                    /* the lanes' s, then their t */
+#if DFXL_N == 8
+   typedef int32_t v8i __attribute__((vector_size(32)));
+   v8i q0, q1;
+   memcpy(&q0, q[0].s, sizeof(q0));             /* s[4] then t[4] */
+   memcpy(&q1, q[1].s, sizeof(q1));
+   v = __builtin_shufflevector(q0, q1, 0, 1, 2, 3, 8, 9, 10, 11, 4, 5, 6, 7, 12, 13, 14, 15);
+#else
    memcpy(&v, q->s, sizeof(v));                 /* s[4] then t[4] */
-   const lanes_v8i drop = 8 - (((v >> 23) + 1) & 3);
-   const lanes_v8i kept = (lanes_v8i)((lanes_v8u)v & (((lanes_v8u){ 0 } - 1) << (lanes_v8u)drop));
-   const lanes_v8i down = (kept != v) & (v < 0);
-   const lanes_v8i r = kept + (down & (1 << drop));
+#endif
+   const taps_i drop = 8 - (((v >> 23) + 1) & 3);
+   const taps_i kept = (taps_i)((taps_u)v & (((taps_u){ 0 } - 1) << (taps_u)drop));
+   const taps_i down = (kept != v) & (v < 0);
+   const taps_i r = kept + (down & (1 << drop));
    const int32_t lo = 0x2f800000, hi = 0x4f800000;      /* 2^-32, 2^32 */
-   const lanes_v8i direct = ((v & INT32_MAX) >= lo) & ((r & INT32_MAX) < hi);
-   const lanes_v8f f = (lanes_v8f)(r & direct);
-   cs->v = __builtin_convertvector(__builtin_shufflevector(f, f, 0, 1, 2, 3), dfxl_d);
-   ct->v = __builtin_convertvector(__builtin_shufflevector(f, f, 4, 5, 6, 7), dfxl_d);
-   const lanes_v8i other = ~direct & ((v & INT32_MAX) != 0);
-   if (__builtin_expect(!any8(other), 1))
+   const taps_i direct = ((v & INT32_MAX) >= lo) & ((r & INT32_MAX) < hi);
+   const taps_f f = (taps_f)(r & direct);
+   cs->v = __builtin_convertvector(LO(f), dfxl_d);
+   ct->v = __builtin_convertvector(HI(f), dfxl_d);
+   const taps_i other = ~direct & ((v & INT32_MAX) != 0);
+   if (__builtin_expect(!any_taps(other), 1))
       return;
-   for (unsigned p = 0; p < TEX_QUAD; p++) {
+   for (unsigned p = 0; p < DFXL_N; p++) {
+      const struct tex_quad *qp = &q[p / TEX_QUAD];
       if (other[p])
-         cs->v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, q->s[p], &x->n).d);
-      if (other[TEX_QUAD + p])
-         ct->v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, q->t[p], &x->n).d);
+         cs->v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, qp->s[p % TEX_QUAD], &x->n).d);
+      if (other[DFXL_N + p])
+         ct->v[p] = dfxl_value(tex_ns_coord(u->ns, TEX_NS_DFX, qp->t[p % TEX_QUAD], &x->n).d);
    }
 }
 
@@ -98,8 +134,7 @@ floor_int32(dfxl_d a, dfxl_i *sat, struct dfxl_stats *st)
    const dfxl_i hi = fl > (double)INT32_MAX, lo = fl < (double)INT32_MIN;
    *sat = hi | lo;
    st->sat -= *sat;
-   return dfxl_seld(hi, (dfxl_d){ INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX },
-                    dfxl_seld(lo, (dfxl_d){ INT32_MIN, INT32_MIN, INT32_MIN, INT32_MIN }, fl));
+   return dfxl_seld(hi, dfxl_splatd(INT32_MAX), dfxl_seld(lo, dfxl_splatd(INT32_MIN), fl));
 }
 
 /* tex_ffloor with TEX_WEIGHT_BITS fraction bits: the integer part (floor),
@@ -107,15 +142,14 @@ floor_int32(dfxl_d a, dfxl_i *sat, struct dfxl_stats *st)
  * `bounded`: a clamped coordinate, scaled, which tex_bind.c's bounds keep
  * far inside int32, so that nothing saturates and nothing is checked. */
 static inline __attribute__((always_inline)) void
-floor_frac(struct dfxl a, const bool bounded, lanes_v4i *ip, lanes_v4i *frac,
+floor_frac(struct dfxl a, const bool bounded, lanes_i *ip, lanes_i *frac,
            struct dfxl_stats *st)
 {
    dfxl_i sat = dfxl_splat(0);
    const dfxl_d cl = bounded ? dfxl_floor(a.v) : floor_int32(a.v, &sat, st);
    const dfxl_d fr = dfxl_floor(a.v * (double)TEX_WEIGHT_ONE) - cl * (double)TEX_WEIGHT_ONE;
-   *ip = __builtin_convertvector(cl, lanes_v4i);
-   *frac = __builtin_convertvector(bounded ? fr : dfxl_seld(sat, (dfxl_d){ 0, 0, 0, 0 }, fr),
-                                   lanes_v4i);
+   *ip = __builtin_convertvector(cl, lanes_i);
+   *frac = __builtin_convertvector(bounded ? fr : dfxl_seld(sat, dfxl_splatd(0), fr), lanes_i);
 }
 
 /* frac_of: c - floor(c) (floor saturated to int32, through binary32 into
@@ -128,13 +162,13 @@ lanes_frac_of(struct dfxl c, dfxl_i *odd, dfxl_i *below, struct dfxl_stats *st)
 {
    dfxl_i sat;
    const dfxl_d cl = floor_int32(c.v, &sat, st);
-   const lanes_v4i i = __builtin_convertvector(cl, lanes_v4i);
+   const lanes_i i = __builtin_convertvector(cl, lanes_i);
    *odd = __builtin_convertvector(i & 1, dfxl_i) != 0;
-   *below = cl == (dfxl_d){ -1, -1, -1, -1 };
+   *below = cl == dfxl_splatd(-1);
    /* 0 <= c < 2^16, nearly every coordinate: the difference itself */
    if (__builtin_expect(dfxl_sub_floor_direct(c.v), 1))
       return dfxl_sub_floor(c, cl, st);
-   const dfxl_d asf = __builtin_convertvector(__builtin_convertvector(cl, lanes_v4f), dfxl_d);
+   const dfxl_d asf = __builtin_convertvector(__builtin_convertvector(cl, lanes_f), dfxl_d);
    struct dfxl f = dfxl_sub(c, dfxl_from_int(asf, st), st);
    f.v = dfxl_seld(*below, c.v, f.v);
    return f;
@@ -149,31 +183,27 @@ clamp(struct dfxl c, const double lh[3])
 }
 
 /* mask ? a : b on int32 lanes (mask a vector comparison). */
-static inline __attribute__((always_inline)) lanes_v4i
-sel4i(lanes_v4i mask, lanes_v4i a, lanes_v4i b)
+static inline __attribute__((always_inline)) lanes_i seli(lanes_i mask, lanes_i a, lanes_i b)
 {
    return (a & mask) | (b & ~mask);
 }
 
 /* tex_clampi and tex_inside on the lanes. */
-static inline __attribute__((always_inline)) lanes_v4i
-clamp4i(lanes_v4i i, int32_t lo, int32_t hi)
+static inline __attribute__((always_inline)) lanes_i clampi(lanes_i i, int32_t lo, int32_t hi)
 {
-   const lanes_v4i l = { lo, lo, lo, lo }, h = { hi, hi, hi, hi };
-   return sel4i(i < l, l, sel4i(i > h, h, i));
+   const lanes_i l = splat_i(lo), h = splat_i(hi);
+   return seli(i < l, l, seli(i > h, h, i));
 }
 
-static inline __attribute__((always_inline)) lanes_v4i
-inside4i(lanes_v4i i, int32_t size)
+static inline __attribute__((always_inline)) lanes_i inside(lanes_i i, int32_t size)
 {
-   const lanes_v4i s = { size, size, size, size };
-   return sel4i((i >= 0) & (i < s), i, (lanes_v4i){ -1, -1, -1, -1 });
+   return seli((i >= 0) & (i < splat_i(size)), i, splat_i(-1));
 }
 
-/* One axis of the quad's addresses: the two texel indices (-1: the
+/* One axis of the lanes' addresses: the two texel indices (-1: the
  * border) and the weight of the second, per pixel. */
 struct lanes_addr {
-   lanes_v4i i0, i1, w;
+   lanes_i i0, i1, w;
 };
 
 /* tex_fast_path.h's addr on the quad. */
@@ -183,27 +213,24 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
 {
    bool border = false, bounded = false;
    dfxl_i odd;
-   lanes_v4i i, w;
+   lanes_i i, w;
    const int32_t size = ax->size;
-   const lanes_v4i zero = { 0, 0, 0, 0 };
+   const lanes_i zero = splat_i(0);
    switch (wrap) {
    case TEX_WRAP_REPEAT: {
       dfxl_i below;
       const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, &below, st), splat(lax[0]), st);
-      const lanes_v4i period = __builtin_convertvector(below, lanes_v4i) &
-                               (lanes_v4i){ size, size, size, size };
+      const lanes_i period = __builtin_convertvector(below, lanes_i) & size;
       if (!linear) {
          floor_frac(s, false, &i, &w, st);
-         a->i0 = a->i1 = clamp4i(i + period, 0, size - 1);
+         a->i0 = a->i1 = clampi(i + period, 0, size - 1);
          a->w = zero;
          return;
       }
       floor_frac(sub_texel_offset(s, st), false, &i, &w, st);
-      const lanes_v4i k = clamp4i(i + period, -1, size - 1);
-      const lanes_v4i last = { size - 1, size - 1, size - 1, size - 1 };
-      const lanes_v4i sz = { size, size, size, size };
-      a->i0 = sel4i(k < 0, last, k);
-      a->i1 = sel4i(k + 1 >= sz, zero, k + 1);
+      const lanes_i k = clampi(i + period, -1, size - 1);
+      a->i0 = seli(k < 0, splat_i(size - 1), k);
+      a->i1 = seli(k + 1 >= splat_i(size), zero, k + 1);
       a->w = w;
       return;
    }
@@ -230,7 +257,7 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    struct dfxl s = dfxl_mul(c, splat(lax[0]), st);
    if (!linear) {
       floor_frac(s, bounded, &i, &w, st);
-      a->i0 = a->i1 = border ? inside4i(i, size) : clamp4i(i, 0, size - 1);
+      a->i0 = a->i1 = border ? inside(i, size) : clampi(i, 0, size - 1);
       a->w = zero;
       return;
    }
@@ -238,15 +265,14 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
    floor_frac(s, bounded, &i, &w, st);
    /* the scalar path's i + 1 in 64 bits: INT32_MAX + 1 is outside and
     * above every size, as INT32_MAX itself */
-   const lanes_v4i max = { INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX };
-   const lanes_v4i i1 = i - (i != max);
+   const lanes_i i1 = i - (i != splat_i(INT32_MAX));
    a->w = w;
    if (border) {
-      a->i0 = inside4i(i, size);
-      a->i1 = inside4i(i1, size);
+      a->i0 = inside(i, size);
+      a->i1 = inside(i1, size);
    } else {
-      a->i0 = clamp4i(i, 0, size - 1);
-      a->i1 = clamp4i(i1, 0, size - 1);
+      a->i0 = clampi(i, 0, size - 1);
+      a->i1 = clampi(i1, 0, size - 1);
    }
 }
 
@@ -259,14 +285,16 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
 /* The taps' words at byte offsets `off` (lanes whose tap is in the
  * texture; the others read the level's first texel and are replaced by
  * the border afterwards). */
-static inline __attribute__((always_inline)) lanes_v8i
-gather8(const struct tex_level *lv, lanes_v8i off)
+static inline __attribute__((always_inline)) taps_i
+gather(const struct tex_level *lv, taps_i off)
 {
-#ifdef __AVX2__
-   return (lanes_v8i)_mm256_i32gather_epi32((const int *)(const void *)lv->data, (__m256i)off, 1);
+#if DFXL_N == 8 && defined(__AVX512F__)
+   return (taps_i)_mm512_i32gather_epi32((__m512i)off, (const void *)lv->data, 1);
+#elif defined(__AVX2__) && DFXL_N == 4
+   return (taps_i)_mm256_i32gather_epi32((const int *)(const void *)lv->data, (__m256i)off, 1);
 #else
-   lanes_v8i w;
-   for (unsigned k = 0; k < 8; k++) {
+   taps_i w;
+   for (unsigned k = 0; k < 2 * DFXL_N; k++) {
       uint32_t t;
       memcpy(&t, lv->data + off[k], 4);
       w[k] = (int32_t)t;
@@ -277,13 +305,13 @@ gather8(const struct tex_level *lv, lanes_v8i off)
 
 /* Offsets of taps (x, y) in the level, in pixels' layers `zoff` (bytes);
  * `out`: the taps outside the texture, when the wrap modes have a border. */
-static inline __attribute__((always_inline)) lanes_v8i
-soa_offsets(const struct tex_level *lv, lanes_v8i x, lanes_v8i y, lanes_v8i zoff, bool border,
-            lanes_v8i *out)
+static inline __attribute__((always_inline)) taps_i
+soa_offsets(const struct tex_level *lv, taps_i x, taps_i y, taps_i zoff, bool border,
+            taps_i *out)
 {
    const int32_t rs = (int32_t)lv->row_stride;
-   const lanes_v8i off = zoff + y * rs + x * 4;
-   *out = (lanes_v8i){ 0, 0, 0, 0, 0, 0, 0, 0 };
+   const taps_i off = zoff + y * rs + x * 4;
+   *out = (taps_i){ 0 };
    if (!border)
       return off;
    *out = (x | y) < 0;
@@ -292,70 +320,54 @@ soa_offsets(const struct tex_level *lv, lanes_v8i x, lanes_v8i y, lanes_v8i zoff
 
 /* Result channel `ch` of the words (tex_unorm8 of its byte after the
  * swizzle, tex_bind.c's lanes_channels), the border where outside. */
-static inline __attribute__((always_inline)) lanes_v8f
-soa_channel(const struct tex_unit *u, lanes_v8i words, bool border, lanes_v8i out, unsigned ch)
+static inline __attribute__((always_inline)) taps_f
+soa_channel(const struct tex_unit *u, taps_i words, bool border, taps_i out, unsigned ch)
 {
    const struct tex_lanes_channel *c = &u->lanes_ch[ch];
-   const lanes_v8f v =
-      __builtin_convertvector((words >> c->shift) & c->mask, lanes_v8f) * (1.0f / 255.0f) +
+   const taps_f v =
+      __builtin_convertvector((words >> c->shift) & c->mask, taps_f) * (1.0f / 255.0f) +
       c->add;
    if (!border)
       return v;
-   const float b = c->border;
-   const lanes_v8f bv = { b, b, b, b, b, b, b, b };
-   return (lanes_v8f)(((lanes_v8i)bv & out) | ((lanes_v8i)v & ~out));
-}
-
-static inline __attribute__((always_inline)) lanes_v4f lo4(lanes_v8f v)
-{
-   return __builtin_shufflevector(v, v, 0, 1, 2, 3);
-}
-
-static inline __attribute__((always_inline)) lanes_v4f hi4(lanes_v8f v)
-{
-   return __builtin_shufflevector(v, v, 4, 5, 6, 7);
+   const taps_f bv = (taps_f){ 0 } + c->border;
+   return (taps_f)(((taps_i)bv & out) | ((taps_i)v & ~out));
 }
 
 /* lerp4 per element: a + f (b - a), f the weight over TEX_WEIGHT_ONE. */
-static inline __attribute__((always_inline)) lanes_v4f
-weight4(lanes_v4i w)
+static inline __attribute__((always_inline)) lanes_f weights(lanes_i w)
 {
-   return __builtin_convertvector(w, lanes_v4f) * (1.0f / TEX_WEIGHT_ONE);
+   return __builtin_convertvector(w, lanes_f) * (1.0f / TEX_WEIGHT_ONE);
 }
 
-/* tex_fast_path.h's level for two dimensions, one channel of the quad
- * per vector, the result channels (after the swizzle).  `border`: whether
- * a tap can be outside (the wrap modes). */
+/* tex_fast_path.h's level for two dimensions, one channel of the lanes'
+ * pixels per vector, the result channels (after the swizzle).  `border`:
+ * whether a tap can be outside (the wrap modes). */
 static inline __attribute__((always_inline)) void
 soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsigned l,
-           const struct lanes_addr *A, const struct lanes_addr *B, lanes_v4i zoff,
-           lanes_v4f out[4])
+           const struct lanes_addr *A, const struct lanes_addr *B, lanes_i zoff,
+           lanes_f out[4])
 {
    const struct tex_level *lv = &u->view.level[l];
-   const lanes_v8i z = __builtin_shufflevector(zoff, zoff, 0, 1, 2, 3, 0, 1, 2, 3);
+   const taps_i z = TWICE(zoff);
    if (!linear) {
-      const lanes_v8i x = __builtin_shufflevector(A->i0, A->i0, 0, 1, 2, 3, 0, 1, 2, 3);
-      const lanes_v8i y = __builtin_shufflevector(B->i0, B->i0, 0, 1, 2, 3, 0, 1, 2, 3);
-      lanes_v8i o;
-      const lanes_v8i w = gather8(lv, soa_offsets(lv, x, y, z, border, &o));
+      taps_i o;
+      const taps_i w = gather(lv, soa_offsets(lv, TWICE(A->i0), TWICE(B->i0), z, border, &o));
       for (unsigned ch = 0; ch < 4; ch++)
-         out[ch] = lo4(soa_channel(u, w, border, o, ch));
+         out[ch] = LO(soa_channel(u, w, border, o, ch));
       return;
    }
    /* taps (i0, j0) and (i0, j1) in one vector, (i1, j0) and (i1, j1) in the other */
-   const lanes_v8i x0 = __builtin_shufflevector(A->i0, A->i0, 0, 1, 2, 3, 0, 1, 2, 3);
-   const lanes_v8i x1 = __builtin_shufflevector(A->i1, A->i1, 0, 1, 2, 3, 0, 1, 2, 3);
-   const lanes_v8i y = __builtin_shufflevector(B->i0, B->i1, 0, 1, 2, 3, 4, 5, 6, 7);
-   lanes_v8i o0, o1;
-   const lanes_v8i w0 = gather8(lv, soa_offsets(lv, x0, y, z, border, &o0));
-   const lanes_v8i w1 = gather8(lv, soa_offsets(lv, x1, y, z, border, &o1));
-   const lanes_v4f fa = weight4(A->w), fb = weight4(B->w);
-   const lanes_v8f fa8 = __builtin_shufflevector(fa, fa, 0, 1, 2, 3, 0, 1, 2, 3);
+   const taps_i y = CONCAT(B->i0, B->i1);
+   taps_i o0, o1;
+   const taps_i w0 = gather(lv, soa_offsets(lv, TWICE(A->i0), y, z, border, &o0));
+   const taps_i w1 = gather(lv, soa_offsets(lv, TWICE(A->i1), y, z, border, &o1));
+   const lanes_f fa = weights(A->w), fb = weights(B->w);
+   const taps_f fa2 = TWICE(fa);
    for (unsigned ch = 0; ch < 4; ch++) {
-      const lanes_v8f t0 = soa_channel(u, w0, border, o0, ch),
-                      t1 = soa_channel(u, w1, border, o1, ch);
-      const lanes_v8f e = t0 + fa8 * (t1 - t0);
-      const lanes_v4f e0 = lo4(e), e1 = hi4(e);
+      const taps_f t0 = soa_channel(u, w0, border, o0, ch),
+                   t1 = soa_channel(u, w1, border, o1, ch);
+      const taps_f e = t0 + fa2 * (t1 - t0);
+      const lanes_f e0 = LO(e), e1 = HI(e);
       out[ch] = e0 + fb * (e1 - e0);
    }
 }
@@ -379,6 +391,7 @@ static inline __attribute__((always_inline)) bool may_border(int wrap, bool line
    return border;
 }
 
+#if DFXL_N == 4
 /* tex_fast_path.h's level for two dimensions, the quad's addresses at
  * once; the result one channel per vector, and whether in the order after
  * the swizzle (the one-channel-per-vector filter) or before. */
@@ -395,7 +408,7 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
    lanes_addr_of(u, linear, k.wt < 0 ? u->samp.wrap[1] : (unsigned)k.wt, &ax[1],
                  u->laxis[l][1], ct, &B, st);
    if (k.soa > 0 || (k.soa < 0 && u->lanes_soa)) {
-      const lanes_v4i zoff = { layer[0], layer[1], layer[2], layer[3] };
+      const lanes_i zoff = { layer[0], layer[1], layer[2], layer[3] };
       soa_level2(u, linear, may_border(k.ws, linear) || may_border(k.wt, linear), l, &A, &B,
                  zoff * (int32_t)lv->img_stride, out);
       return true;
@@ -620,7 +633,7 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
    struct tex_fst x = { { 0, 0 }, { 0, 0 } };
    struct dfxl_stats st = DFXL_STATS(true);
    struct dfxl cs[2], ct[2];
-   lanes_v4i zoff[2] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } };
+   lanes_i zoff[2] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } };
    const struct tex_level *lv = &u->view.level[0];
    for (unsigned i = 0; i < 2; i++) {
       coords(u, &q[i], &cs[i], &ct[i], &x);
@@ -670,6 +683,94 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
    return true;
 }
 
+#else
+/* Whether the pair's s follows the screen's x axis (the same down each
+ * column of both quads: lanes 0-3 are quad 0's pixels, 4-7 quad 1's) and
+ * whether its t follows the y axis (the same along each row, both quads
+ * on the same rows), as pair2's with a quad a vector. */
+static inline __attribute__((always_inline)) bool s_by_column(struct dfxl cs)
+{
+   const dfxl_i s = (dfxl_i)cs.v;
+   return !dfxl_any(s != __builtin_shufflevector(s, s, 2, 3, 0, 1, 6, 7, 4, 5));
+}
+
+static inline __attribute__((always_inline)) bool t_by_row(struct dfxl ct)
+{
+   const dfxl_i t = (dfxl_i)ct.v;
+   return !dfxl_any((t != __builtin_shufflevector(t, t, 1, 0, 3, 2, 5, 4, 7, 6)) |
+                    (t != __builtin_shufflevector(t, t, 4, 5, 6, 7, 0, 1, 2, 3)));
+}
+
+/* The pixels' addresses from those computed once per column (lanes 0-3:
+ * quad 0's columns, then quad 1's) or once per row (lanes 0, 1). */
+#define SPREAD(a, ...)                                                                      \
+   ((struct lanes_addr){ __builtin_shufflevector((a).i0, (a).i0, __VA_ARGS__),              \
+                         __builtin_shufflevector((a).i1, (a).i1, __VA_ARGS__),              \
+                         __builtin_shufflevector((a).w, (a).w, __VA_ARGS__) })
+
+/* pair2 above with both quads in one vector: each of its operations is
+ * one instruction for the eight pixels, the same operations on the same
+ * registers lane by lane.  Where s follows the columns, the four columns'
+ * s go through the address unit (four lanes of eight, the others a copy),
+ * where t follows the rows, the two rows'. */
+static inline __attribute__((always_inline)) bool
+pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX_QUAD],
+      const struct quad_kind k, const bool linear, unsigned *shared)
+{
+   struct tex_fst x = { { 0, 0 }, { 0, 0 } };
+   struct dfxl_stats st = DFXL_STATS(true);
+   struct dfxl cs, ct;
+   lanes_i zoff = splat_i(0);
+   const struct tex_level *lv = &u->view.level[0];
+   coords(u, q, &cs, &ct, &x);
+   if (u->view.target == TEX_TARGET_2D_ARRAY)
+      for (unsigned p = 0; p < DFXL_N; p++)
+         zoff[p] = layer_of(u, q[p / TEX_QUAD].layer[p % TEX_QUAD]) * (int32_t)lv->img_stride;
+   struct lanes_addr A, B;
+   const bool s_col = s_by_column(cs), t_row = t_by_row(ct);
+   if (s_col) {
+      const struct dfxl sv = { __builtin_shufflevector(cs.v, cs.v, 0, 1, 4, 5, 0, 1, 4, 5) };
+      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], sv, &A, &st);
+      A = SPREAD(A, 0, 1, 0, 1, 2, 3, 2, 3);
+   } else {
+      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], cs, &A, &st);
+   }
+   if (t_row) {
+      const struct dfxl tv = { __builtin_shufflevector(ct.v, ct.v, 0, 2, 0, 2, 0, 2, 0, 2) };
+      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], tv, &B, &st);
+      B = SPREAD(B, 0, 0, 1, 1, 0, 0, 1, 1);
+   } else {
+      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], ct, &B, &st);
+   }
+   /* as pair2 above: a count in a shared lane would be counted once (the
+    * copies are the same lanes again) */
+   if ((s_col || t_row) && dfxl_any((st.sat | st.flush) != 0))
+      return false;
+   *shared = (unsigned)s_col + (unsigned)t_row;
+   const bool border = may_border(k.ws, linear) || may_border(k.wt, linear);
+   lanes_f out[4];
+   soa_level2(u, linear, border, 0, &A, &B, zoff, out);
+   if (dfxl_any(dfxl_trouble(&st)))
+      return false;
+   for (unsigned ch = 0; ch < 4; ch++) {
+      const lanes_v4f lo = __builtin_shufflevector(out[ch], out[ch], 0, 1, 2, 3),
+                      hi = __builtin_shufflevector(out[ch], out[ch], 4, 5, 6, 7);
+      memcpy(rgba[0][ch], &lo, sizeof(lo));
+      memcpy(rgba[1][ch], &hi, sizeof(hi));
+   }
+   dfxl_stats_add(&x.d, st);
+   tex_fst_flush(&x, u->stats);
+   return true;
+}
+#endif
+
+/* The pair functions; where a lane had a range event, each quad alone
+ * through the unit's quad function (with DFXL_N = 8, the AVX2 set's). */
+#if DFXL_N == 4
+#define PAIR2_QUAD(quad_fn) quad_fn
+#else
+#define PAIR2_QUAD(quad_fn) u->quad
+#endif
 #define PAIR2_FN(name, quad_fn, ws, wt)                                                      \
    static void name(const struct tex_unit *u, const struct tex_quad q[2],                    \
                     enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD])                    \
@@ -683,14 +784,34 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
             *u->axes_shared += 2 * sh;                                                       \
          return;                                                                             \
       }                                                                                      \
-      quad_fn(u, &q[0], ctl, rgba[0]);                                                       \
-      quad_fn(u, &q[1], ctl, rgba[1]);                                                       \
+      PAIR2_QUAD(quad_fn)(u, &q[0], ctl, rgba[0]);                                           \
+      PAIR2_QUAD(quad_fn)(u, &q[1], ctl, rgba[1]);                                           \
    }
 
 PAIR2_FN(pair2_rr_nolod, quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT)
 PAIR2_FN(pair2_ee_nolod, quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE)
 PAIR2_FN(pair2_mm_nolod, quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT)
 
+/* The states with a pair function. */
+static const struct {
+   enum tex_wrap ws, wt;
+   tex_quad2_fn pair_nolod;
+} pairs[] = {
+   { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, pair2_rr_nolod },
+   { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, pair2_ee_nolod },
+   { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, pair2_mm_nolod },
+};
+
+static tex_quad2_fn pair_of(const struct tex_unit *u, bool nolod)
+{
+   if (u->lanes_soa && nolod)
+      for (unsigned i = 0; i < sizeof(pairs) / sizeof(pairs[0]); i++)
+         if (u->samp.wrap[0] == pairs[i].ws && u->samp.wrap[1] == pairs[i].wt)
+            return pairs[i].pair_nolod;
+   return NULL;
+}
+
+#if DFXL_N == 4
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
                                         tex_quad2_fn *pair)
 {
@@ -700,20 +821,28 @@ tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, 
    static const struct {
       enum tex_wrap ws, wt;
       tex_quad_fn fn[2];
-      tex_quad2_fn pair_nolod;
    } special[] = {
-      { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, { quad2_rr, quad2_rr_nolod }, pair2_rr_nolod },
-      { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, { quad2_ee, quad2_ee_nolod },
-        pair2_ee_nolod },
-      { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, { quad2_mm, quad2_mm_nolod },
-        pair2_mm_nolod },
+      { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, { quad2_rr, quad2_rr_nolod } },
+      { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, { quad2_ee, quad2_ee_nolod } },
+      { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, { quad2_mm, quad2_mm_nolod } },
    };
    if (u->lanes_soa)
       for (unsigned i = 0; i < sizeof(special) / sizeof(special[0]); i++)
          if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt) {
-            if (nolod)
-               *pair = special[i].pair_nolod;
+            *pair = pair_of(u, nolod);
             return special[i].fn[nolod];
          }
    return nolod ? quad2_generic_nolod : quad2_generic;
 }
+#else
+/* A lone quad fills half a vector: the AVX2 set's quad functions, and the
+ * pairs here where that set has one. */
+tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
+                                        tex_quad2_fn *pair)
+{
+   const tex_quad_fn quad = tex_dfx19_2d_lanes_avx2(u, noskip, nolod, pair);
+   if (*pair)
+      *pair = pair_of(u, nolod);
+   return quad;
+}
+#endif

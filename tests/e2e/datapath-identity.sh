@@ -26,7 +26,7 @@ total_w=0 total_c=0 total_l=0 total_a=0
 check_lanes() { # NAME
     set -- $(skips "$1")
     case ${1:-} in
-    avx2 | sse2) total_w=$((total_w + $2)); total_c=$((total_c + $3)); total_l=$((total_l + $4))
+    avx512 | avx2 | sse2) total_w=$((total_w + $2)); total_c=$((total_c + $3)); total_l=$((total_l + $4))
                  total_a=$((total_a + $5)) ;;
     *) fail "$name: the default run did not report the lanes (datapath: ${1:-none})"; return 1 ;;
     esac

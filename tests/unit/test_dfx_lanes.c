@@ -4,7 +4,8 @@
  * random operands, weighted toward the cases with their own logic (zero,
  * equal digits, shifts of 4 and 5 digits, cancellation, the ends of the
  * range, mantissas at 2^15 and 2^19 - 1).  Built once per instruction set
- * (TEST_ISA names it); the AVX2 build checks the CPU first.
+ * (TEST_ISA names it; the AVX-512 one on eight lanes, DFXL_N = 8); the
+ * AVX2 and AVX-512 builds check the CPU first.
  */
 #include <math.h>
 #include <stdio.h>
@@ -210,7 +211,7 @@ static void test_tex_subtractions(void)
          case 2: a[i] = rnd_between(-12, 16, 0); break;                /* across the bounds */
          default: a[i] = rnd_between(-32, 32, 1); break;               /* negative */
          }
-      } while (!dfxl_sub_texel_offset_direct((dfxl_d){ dfxl_value(a[i]), 0, 0, 0 }));
+      } while (!dfxl_sub_texel_offset_direct(dfxl_splatd(dfxl_value(a[i]))));
    }
    struct dfxl A = dfxl_load(a);
    CHECK(dfxl_sub_texel_offset_direct(A.v), "texel offset: a lane outside the condition");
@@ -249,7 +250,8 @@ static void test_from_fixed(void)
       in[i] = dfx_zero();
    }
    const struct fx_format fx = { 0, (uint8_t)k };
-   const dfxl_i V = { v[0], v[1], v[2], v[3] };
+   dfxl_i V;
+   memcpy(&V, v, sizeof(V));
    const struct dfx *a = in;
 #define FROM_FIXED(st) dfxl_from_fixed(V, k, st)
    const dfxl_i beyond = (V >= dfxl_splat((int64_t)1 << 52)) | (V <= -dfxl_splat((int64_t)1 << 52));
@@ -258,7 +260,15 @@ static void test_from_fixed(void)
 
 int main(void)
 {
-#if defined(__AVX2__)
+#if defined(__AVX512F__)
+   __builtin_cpu_init();
+   if (!__builtin_cpu_supports("avx512f") || !__builtin_cpu_supports("avx512dq") ||
+       !__builtin_cpu_supports("avx512vl") || !__builtin_cpu_supports("avx512bw")) {
+      printf("dfx_lanes (%s): this CPU has no AVX-512; the driver takes the AVX2 lanes\n",
+             TEST_ISA);
+      return 77;
+   }
+#elif defined(__AVX2__)
    __builtin_cpu_init();
    if (!__builtin_cpu_supports("avx2")) {
       printf("dfx_lanes (%s): this CPU has no AVX2; the driver takes the baseline lanes\n",

@@ -24,16 +24,20 @@
 
 static struct tctx t;
 static struct rast_vertex_layout vl;
-/* pass 0: the generic reference; then each mode below */
+/* pass 0: the generic reference; then each mode below (isa: lanes.h's
+ * sets, each where the CPU runs it, else the next one down) */
+enum { ISA_AVX2, ISA_SSE2, ISA_AVX512 };
 static const struct { unsigned opts; int isa; } modes[] = {
-   { 0, 0 }, { RAST_OPT_NOSKIP, 0 }, { 0, 1 }, { RAST_OPT_NOSKIP, 1 }, { RAST_OPT_SCALAR, 0 },
+   { 0, ISA_AVX2 },   { RAST_OPT_NOSKIP, ISA_AVX2 },   { 0, ISA_SSE2 },
+   { RAST_OPT_NOSKIP, ISA_SSE2 }, { RAST_OPT_SCALAR, ISA_AVX2 },
+   { 0, ISA_AVX512 }, { RAST_OPT_NOSKIP, ISA_AVX512 },
 };
 #define NPASS (1 + (int)(sizeof(modes) / sizeof(modes[0])))
 static float *rec[NPASS];
 static size_t nrec[NPASS];
 static uint64_t skipped_w, skipped_comp;
 static int pass;
-static bool avx2;
+static bool avx2, avx512;
 static uint64_t quads, helpers, values;
 
 /* The used components of every quad, in order, with its position. */
@@ -123,9 +127,10 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
       uint64_t e[NPASS];
       for (pass = 0; pass < NPASS; pass++) {
          if (pass) {
-            rast_lanes_set(modes[pass - 1].isa ? &rast_lanes_sse2 : &rast_lanes_avx2);
-            if (!avx2 && !modes[pass - 1].isa)
-               rast_lanes_set(&rast_lanes_sse2);
+            const int isa = modes[pass - 1].isa;
+            rast_lanes_set(isa == ISA_AVX512 && avx512 ? &rast_lanes_avx512
+                           : isa != ISA_SSE2 && avx2   ? &rast_lanes_avx2
+                                                       : &rast_lanes_sse2);
             rast_set_options(t.rc, modes[pass - 1].opts);
          }
          rast_interp_perspective_reference(t.rc, pass == 0);
@@ -171,8 +176,11 @@ int main(void)
          return 1;
    __builtin_cpu_init();
    avx2 = __builtin_cpu_supports("avx2");
+   avx512 = rast_lanes_have_avx512();
    if (!avx2)
       printf("no AVX2 on this CPU: the SSE2 lanes only\n");
+   else if (!avx512)
+      printf("no AVX-512 on this CPU: its passes take the AVX2 lanes\n");
    t_seed(12345);
    uint64_t ev = 0;
    const unsigned nprim = 3000;

@@ -275,14 +275,17 @@ static void axis_pair(struct tex_quad two[2], const struct tex_unit *u)
 
 static uint64_t quads, fast_quads, lanes_quads, nolod_quads, pair_quads, axes_quads;
 
-enum mode { LANES_BEST, LANES_SSE2, SCALAR };
+/* LANES_BEST: the CPU's set (AVX-512 where it has it: lanes.h) */
+enum mode { LANES_BEST, LANES_SSE2, SCALAR, LANES_AVX2 };
 
 static void quads_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit,
                              enum mode mode)
 {
-   static const char *const mode_names[] = { "", " (SSE2 lanes)", " (scalar)" };
+   static const char *const mode_names[] = { "", " (SSE2 lanes)", " (scalar)",
+                                             " (AVX2 lanes)" };
    __builtin_cpu_init();
    rast_lanes_set(mode == LANES_SSE2 || !__builtin_cpu_supports("avx2") ? &rast_lanes_sse2
+                  : mode == LANES_BEST && rast_lanes_have_avx512()      ? &rast_lanes_avx512
                                                                        : &rast_lanes_avx2);
    const struct numsys *ns = numsys_by_name(name);
    unsigned bad = 0, fast_units = 0;
@@ -383,6 +386,10 @@ int main(void)
    printf("specialised quad vs the table path (bits and range events):\n");
    quads_vs_generic("dfx24", true, 3000, 200, LANES_BEST);
    quads_vs_generic("dfx24", true, 3000, 200, LANES_SSE2);
+   if (rast_lanes_have_avx512())
+      quads_vs_generic("dfx24", true, 3000, 200, LANES_AVX2);
+   else
+      printf("  no AVX-512 on this CPU: the AVX2 lanes are the best set\n");
    quads_vs_generic("dfx24", true, 3000, 200, SCALAR);
    quads_vs_generic("float", true, 3000, 200, LANES_BEST);
    quads_vs_generic("fx16.16", false, 100, 50, LANES_BEST);   /* the table path */
