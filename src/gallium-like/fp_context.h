@@ -78,6 +78,10 @@ struct fp_fs_thread {
    struct rast_shaded_quad spare;         /* a quad alone: the eight-lane code's other half */
    uint64_t quads_jit, quads_interp;
    uint64_t quads_interp_seen;            /* of quads_interp, counted to the shader */
+   /* Threads side by side in one array, each writing its own: a cache
+    * line between them, or every shaded quad would pass the line back
+    * and forth between the cores. */
+   char apart[64];
 };
 
 struct fp_velems {

@@ -33,6 +33,8 @@ struct rast_context *rast_create(const struct rast_profile *profile)
    rc->texfmt = numsys_default();
    rc->dirty = true;
    rc->band_count = 1;
+   rc->band_lo = INT64_MIN;
+   rc->band_hi = INT64_MAX;
    rc->counting = true;
    rc->sample_mask = ~0u;
    rc->rows_lo = INT64_MIN;

@@ -482,10 +482,11 @@ void rast_point(struct rast_context *rc, const float (*v0)[4]);
 
 /* ------------------------------------------------------------------ */
 /* Threads (threads.c).  With n > 1 the primitives are queued and        */
-/* rast_flush draws them on n threads, the caller's and n - 1 workers:    */
-/* thread t draws the quad rows of the bands of RAST_BAND_ROWS scan lines */
-/* numbered t modulo n, every thread walking each primitive's edges in    */
-/* the same order.  Per pixel, primitives land in submission order and   */
+/* rast_flush draws them on n threads, the caller's and n - 1 workers:   */
+/* each thread draws one stretch of the target's rows per batch, cut at  */
+/* multiples of RAST_BAND_ROWS scan lines where the batch's work divides */
+/* evenly, every thread walking each primitive's edges from its top as   */
+/* one thread does.  Per pixel, primitives land in submission order and  */
 /* every register holds what one thread would compute: the frames are    */
 /* byte-identical for every n, and so are the counters.                  */
 

@@ -42,7 +42,8 @@ struct rast_context {
    /* Threads (threads.c).  The main context owns the pool; every context,
     * the main one included, draws the quad rows of its bands. */
    struct rast_pool *pool;
-   unsigned band_index, band_count;    /* bands t mod n; count 1: every row */
+   unsigned band_index, band_count;    /* thread t of n; count 1: every row */
+   int64_t band_lo, band_hi;           /* its target rows in the batch: [lo, hi) */
    /* Counters of the current stretch of work are kept (its band, or the
     * primitive's set-up on the thread that owns it), else undone back to
     * mark: each event is counted on exactly one thread. */
@@ -155,14 +156,12 @@ void rast_tiles_draw(struct rast_context *rc, enum rast_prim_kind kind, const fl
                      const float (*v1)[4], const float (*v2)[4]);
 
 /* Whether the quad row starting at scan line p (even, >= 0) is this
- * context's: bands of RAST_BAND_ROWS scan lines, dealt round-robin. */
+ * context's: the thread's rows of the batch (threads.c). */
 static inline bool rast_band_mine(const struct rast_context *rc, int64_t p)
 {
    if (p < rc->rows_lo || p >= rc->rows_hi)
       return false;
-   return rc->band_count == 1 ||
-          (unsigned)((uint64_t)(p + rc->org_y) / RAST_BAND_ROWS % rc->band_count) ==
-          rc->band_index;
+   return rc->band_count == 1 || (p + rc->org_y >= rc->band_lo && p + rc->org_y < rc->band_hi);
 }
 
 /* Entering work that is (mine) or is not this context's to count. */

@@ -217,8 +217,12 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
             if (fr->sec[cur].l != L) { L = fr->sec[cur].l; edge_start(rc, fr, L, j); }
             if (fr->sec[cur].r != R) { R = fr->sec[cur].r; edge_start(rc, fr, R, j); }
          }
-         record_row(rc, fr, row, L, R);
-         rc->stats.spans += row->xs <= row->xe;
+         /* another thread's rows: only the walk, which reaches this
+          * thread's rows with the registers one thread would hold */
+         if (mine) {
+            record_row(rc, fr, row, L, R);
+            rc->stats.spans += row->xs <= row->xe;
+         }
          if (j < L->j_end) edge_step(rc, fr, L);
          if (j < R->j_end) edge_step(rc, fr, R);
       }

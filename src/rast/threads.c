@@ -3,42 +3,52 @@
  *
  * The modeled hardware's cores each draw their own pixels (seeds 001 and
  * 002 make a pixel's values independent of its neighbours'); here a core
- * is a thread with its own context, and its pixels are the quad rows of
- * every n-th band of RAST_BAND_ROWS scan lines.
+ * is a thread with its own context, and its pixels are one stretch of
+ * the target's rows per batch (split_rows, below).
  *
  * With more than one thread the main context queues the primitives the
  * driver gives it (their vertices stay where the driver keeps them), and
  * rast_flush hands the queue to every thread at once.  Each thread sets up
- * every primitive that can reach its bands and walks its edges over every
- * scan line, exactly as one thread would: the edge and attribute registers
- * at a scan line are the walk's, so nothing about a pixel depends on which
- * thread draws it.  A thread draws the spans of its own quad rows only, so
+ * every primitive that can reach its rows and walks its edges from the
+ * primitive's first scan line, exactly as one thread would: the edge and
+ * attribute registers at a scan line are the walk's, so nothing about a
+ * pixel depends on which thread draws it.  A thread draws the spans of its own quad rows only, so
  * per pixel the primitives still land in submission order, and no two
  * threads touch the same pixel of any buffer.
  *
  * Counters: each event belongs to one stretch of work, a quad row (its
- * band's thread) or a primitive's set-up (the thread of the band holding
- * its top); a thread undoes what it counted in stretches not its own
+ * thread) or a primitive's set-up (the thread of the row holding its
+ * top); a thread undoes what it counted in stretches not its own
  * (rast_count_stretch), and the flush adds every worker's counters to the
  * main context's.  The sums are the one-thread counts.
  *
  * Small batches, where waking the workers costs more than it saves, are
- * drawn on the calling thread alone, which owns every band for them.  The
+ * drawn on the calling thread alone, which owns every row for them.  The
  * workers start with the first batch that is not small: a short program
  * (a conformance test draws a few small images) never starts them.
  */
+#define _POSIX_C_SOURCE 200809L        /* clock_gettime */
 #include <fenv.h>
 #include <math.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #include <pthread.h>
+#include <time.h>
 
 #include "rast/rast_priv.h"
 
 /* Below this many pixels of bounding boxes a batch is drawn on one
  * thread (docs/threads.md). */
 #define RAST_PARALLEL_MIN_PIXELS 4096
+/* What a primitive's set-up and edge walk cost against a pixel it covers,
+ * for dividing a batch between the threads (split_rows), and a culled
+ * triangle's: fitted to the benchmark's replay (docs/threads.md). */
+#define RAST_PRIM_SETUP_PIXELS 24
+#define RAST_CULLED_PIXELS 1
+/* Batches by size (log2 of their primitives), each with its own learned
+ * speeds of the threads. */
+#define RAST_BATCH_SIZES 16
 /* How long a worker that has just drawn a batch polls for the next one
  * before it sleeps: a draw's next batch usually follows within
  * microseconds. */
@@ -51,6 +61,8 @@ struct rast_prim {
     * rows_known false: every thread takes it */
    bool rows_known;
    int64_t lo, hi;
+   double width;        /* what it covers on a row of its box, for the split */
+   bool culled;         /* a triangle the cull stage drops (likely: for the split) */
 };
 
 struct rast_pool {
@@ -66,6 +78,20 @@ struct rast_pool {
    struct rast_prim *prim;
    size_t nprim, cap;
    double pixels;                                 /* the queue's bounding boxes */
+   /* split_rows: the work per band of the target's rows */
+   double *band_w;
+   size_t band_cap;
+   /* Per size of batch, each thread's time for a unit of that work, as a
+    * multiple of the main thread's (learned from the batches drawn), and
+    * the current batch's size. */
+   float slowness[RAST_BATCH_SIZES][RAST_MAX_THREADS];
+   unsigned size_class;
+   /* Each thread's share of the batch: its work and its time, written by
+    * that thread only, a cache line apart. */
+   struct {
+      double work, seconds;
+      char apart[64 - 2 * sizeof(double)];
+   } share[RAST_MAX_THREADS];
    uint64_t drawn_serial, drawn_parallel;
 
    /* The flushing thread's floating-point environment, which the workers
@@ -97,37 +123,183 @@ static inline void cpu_relax(void)
 /* The scan lines a primitive can cover (rast_prim_extent).  false: no
  * finite extent, so every thread takes it and the set-up decides. */
 static bool prim_rows(const struct rast_context *rc, const struct rast_prim *p,
-                      int64_t *lo, int64_t *hi, double *area)
+                      int64_t *lo, int64_t *hi, double *width, bool *culled, double *area)
 {
    float b[4];
    if (!rast_prim_extent(rc, p->kind, p->v[0], p->v[1], p->v[2], b))
       return false;
-   *lo = (int64_t)floorf(b[1]);
-   *hi = (int64_t)ceilf(b[3]);
+   /* floor and ceil of values inside +-1e9 (rast_prim_extent), and the
+    * box clipped to the target, without library calls: this runs on the
+    * main thread for every primitive queued */
+   *lo = (int64_t)b[1] - ((float)(int64_t)b[1] > b[1]);
+   *hi = (int64_t)b[3] + ((float)(int64_t)b[3] < b[3]);
    if (*lo < 0)
       *lo = 0;
-   double w = fmin(b[2], (double)rc->fb.width) - fmax(b[0], 0.0);
-   double h = fmin(b[3], (double)rc->fb.height) - fmax(b[1], 0.0);
+   const double fw = (double)rc->fb.width, fh = (double)rc->fb.height;
+   const double w = (b[2] < fw ? b[2] : fw) - (b[0] > 0 ? b[0] : 0.0);
+   const double h = (b[3] < fh ? b[3] : fh) - (b[1] > 0 ? b[1] : 0.0);
    *area = w > 0 && h > 0 ? w * h : 0.0;
+   *width = w > 0 && h > 0 ? w : 0.0;
+   *culled = false;
+   if (p->kind == RAST_PRIM_TRIANGLE && *width > 0) {
+      /* for the split, what it covers: none where it is culled (as
+       * rast_triangle_counted decides on the registers), else its area
+       * spread over its box's rows */
+      const unsigned ps = rc->vl.pos_slot;
+      const double x0 = p->v[0][ps][0], y0 = p->v[0][ps][1], x1 = p->v[1][ps][0],
+                   y1 = p->v[1][ps][1], x2 = p->v[2][ps][0], y2 = p->v[2][ps][1];
+      const double det = (x0 - x2) * (y1 - y2) - (y0 - y2) * (x1 - x2);
+      const unsigned facing = (unsigned)(det < 0) ^ (unsigned)rc->rs.front_ccw;
+      const unsigned face = facing ? RAST_CULL_BACK : RAST_CULL_FRONT;
+      *culled = (face & (unsigned)rc->rs.cull) != 0;
+      const double covered = 0.5 * (det < 0 ? -det : det) / ((double)b[3] - b[1]);
+      *width = *culled ? 0.0 : covered < *width ? covered : *width;
+   }
    return true;
 }
 
-static inline unsigned band_of(const struct rast_context *rc, int64_t row)
+static inline bool owns_row(const struct rast_context *rc, int64_t row)
 {
-   return (unsigned)((uint64_t)row / RAST_BAND_ROWS % rc->band_count);
+   return row >= rc->band_lo && row < rc->band_hi;
 }
 
-static bool bands_meet(const struct rast_context *rc, int64_t lo, int64_t hi)
+/* ---- which rows a thread draws ----
+ *
+ * Each thread draws one stretch of the target's rows per batch, cut at
+ * band boundaries (RAST_BAND_ROWS) where the batch's work is divided in
+ * proportion to the threads' speeds.  A primitive inside one stretch is
+ * set up and walked by one thread only; dealing small bands round-robin
+ * made every primitive taller than a few bands the work of every thread
+ * (docs/threads.md).  Which thread draws a row changes nothing in it: one
+ * thread per row, and that thread draws the batch in order.
+ *
+ * The work of a band: the area its primitives cover over its rows (a
+ * batch has one state, so about one cost a pixel), and each primitive's
+ * set-up in the band of its top row.  The speeds are learned per size of
+ * batch: a worker reads the vertices and the rows the main thread has just
+ * written, and for a batch of many small primitives that makes it
+ * measurably slower. */
+static inline double seconds_now(void)
 {
-   if (lo > hi)
-      return false;
-   uint64_t b0 = (uint64_t)lo / RAST_BAND_ROWS, b1 = (uint64_t)hi / RAST_BAND_ROWS;
-   if (b1 - b0 + 1 >= rc->band_count)
-      return true;
-   for (uint64_t b = b0; b <= b1; b++)
-      if (b % rc->band_count == rc->band_index)
-         return true;
-   return false;
+   struct timespec t;
+   clock_gettime(CLOCK_MONOTONIC, &t);
+   return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static unsigned size_class(size_t nprim)
+{
+   unsigned c = 0;
+   while (nprim > 1 && c + 1 < RAST_BATCH_SIZES) {
+      nprim >>= 1;
+      c++;
+   }
+   return c;
+}
+
+/* The work of each band of rows into pool->band_w; its sum, 0 when the
+ * array cannot be had. */
+static double band_work(struct rast_pool *pool, int64_t height, size_t nb)
+{
+   if (pool->band_cap < nb + 1) {
+      double *w = realloc(pool->band_w, (nb + 1) * sizeof(*w));
+      if (!w)
+         return 0;
+      pool->band_w = w;
+      pool->band_cap = nb + 1;
+   }
+   double *bw = pool->band_w;
+   memset(bw, 0, (nb + 1) * sizeof(*bw));
+   /* a primitive's width on each of its rows as differences: a band's sum
+    * over its rows added where the primitive begins, taken off where it
+    * ends, summed below; the set-up's in the band of the top row */
+   for (size_t i = 0; i < pool->nprim; i++) {
+      const struct rast_prim *p = &pool->prim[i];
+      if (!p->rows_known || p->lo >= height || p->hi < 0)
+         continue;
+      const int64_t lo = p->lo, hi = p->hi < height ? p->hi : height - 1;
+      const size_t b0 = (size_t)(lo / RAST_BAND_ROWS), b1 = (size_t)(hi / RAST_BAND_ROWS);
+      const double w = p->width;
+      const double setup = p->culled ? RAST_CULLED_PIXELS : RAST_PRIM_SETUP_PIXELS;
+      bw[b0] += setup;
+      bw[b0 + 1] -= setup;
+      if (b0 == b1) {
+         bw[b0] += w * (double)(hi + 1 - lo);
+         bw[b0 + 1] -= w * (double)(hi + 1 - lo);
+         continue;
+      }
+      const double first = (double)((int64_t)(b0 + 1) * RAST_BAND_ROWS - lo);
+      const double last = (double)(hi + 1 - (int64_t)b1 * RAST_BAND_ROWS);
+      bw[b0] += w * first;
+      bw[b0 + 1] += w * (RAST_BAND_ROWS - first);
+      bw[b1] += w * (last - RAST_BAND_ROWS);
+      bw[b1 + 1] -= w * last;
+   }
+   double run = 0, total = 0;
+   for (size_t b = 0; b < nb; b++) {
+      run += bw[b];
+      bw[b] = run;
+      total += run;
+   }
+   return total;
+}
+
+static void split_rows(struct rast_pool *pool, const struct rast_context *rc)
+{
+   const unsigned n = pool->n;
+   const int64_t height = rc->fb.height > 0 ? rc->fb.height : 1;
+   const size_t nb = (size_t)((height + RAST_BAND_ROWS - 1) / RAST_BAND_ROWS);
+   const double total = band_work(pool, height, nb);
+   const float *slow = pool->slowness[pool->size_class = size_class(pool->nprim)];
+   size_t cut[RAST_MAX_THREADS + 1];            /* thread t: bands [cut[t], cut[t + 1]) */
+   double speed = 0;
+   for (unsigned t = 0; t < n; t++)
+      speed += 1.0 / slow[t];
+   cut[0] = 0;
+   cut[n] = nb;
+   if (total > 0) {
+      /* the cut before thread t where the work before it is that of the
+       * threads before it (a band to whichever side holds more of it) */
+      double acc = 0, ahead = 0;
+      size_t b = 0;
+      for (unsigned t = 1; t < n; t++) {
+         ahead += 1.0 / slow[t - 1];
+         const double want = total * ahead / speed;
+         while (b < nb && acc + pool->band_w[b] * 0.5 < want)
+            acc += pool->band_w[b++];
+         cut[t] = b;
+      }
+   } else {
+      for (unsigned t = 1; t < n; t++)
+         cut[t] = nb * t / n;
+   }
+   for (unsigned t = 0; t < n; t++) {
+      struct rast_context *c = pool->ctx[t];
+      c->band_lo = t == 0 ? INT64_MIN : (int64_t)cut[t] * RAST_BAND_ROWS;
+      c->band_hi = t + 1 == n ? INT64_MAX : (int64_t)cut[t + 1] * RAST_BAND_ROWS;
+      double w = 0;
+      for (size_t k = cut[t]; total > 0 && k < cut[t + 1]; k++)
+         w += pool->band_w[k];
+      pool->share[t].work = w;
+   }
+}
+
+/* What the batch just drawn says of the threads' speeds: each thread's
+ * time per unit of work against the main thread's, averaged over the
+ * batches of its size.  Shares too short to time well say nothing. */
+static void learn_speeds(struct rast_pool *pool)
+{
+   const double min_seconds = 50e-6;
+   float *slow = pool->slowness[pool->size_class];
+   if (pool->share[0].work <= 0 || pool->share[0].seconds < min_seconds)
+      return;
+   const double main_rate = pool->share[0].seconds / pool->share[0].work;
+   for (unsigned t = 1; t < pool->n; t++) {
+      if (pool->share[t].work <= 0 || pool->share[t].seconds < min_seconds)
+         continue;
+      double r = pool->share[t].seconds / pool->share[t].work / main_rate;
+      r = r < 0.25 ? 0.25 : r > 4.0 ? 4.0 : r;
+      slow[t] += 0.25f * ((float)r - slow[t]);
+   }
 }
 
 static void draw_prim(struct rast_context *rc, const struct rast_prim *p)
@@ -148,9 +320,9 @@ static void draw_share(struct rast_context *rc, const struct rast_pool *pool)
       if (rc->band_count == 1) {
          mine_setup = true;
       } else if (p->rows_known) {
-         /* the set-up is counted by the thread of the top band */
-         mine_setup = band_of(rc, p->lo) == rc->band_index;
-         if (!mine_setup && !bands_meet(rc, p->lo, p->hi))
+         /* the set-up is counted by the thread of the top row */
+         mine_setup = owns_row(rc, p->lo);
+         if (!mine_setup && (p->hi < rc->band_lo || p->lo >= rc->band_hi))
             continue;
       } else {
          mine_setup = rc->band_index == 0;
@@ -192,7 +364,9 @@ static void *worker_main(void *data)
       polls = RAST_SPIN_POLLS;
 
       fesetenv(&pool->fenv);
+      const double t0 = seconds_now();
       draw_share(pool->ctx[t], pool);
+      pool->share[t].seconds = seconds_now() - t0;
 
       if (atomic_fetch_sub_explicit(&pool->pending, 1, memory_order_acq_rel) == 1) {
          pthread_mutex_lock(&pool->mtx);
@@ -300,6 +474,7 @@ void rast_flush(struct rast_context *rc)
          pool->synced[t] = rc->state_serial;
       }
    }
+   split_rows(pool, rc);
    rc->band_count = pool->n;
    fegetenv(&pool->fenv);
    atomic_store_explicit(&pool->pending, pool->n - 1, memory_order_relaxed);
@@ -308,7 +483,9 @@ void rast_flush(struct rast_context *rc)
    pthread_cond_broadcast(&pool->go);
    pthread_mutex_unlock(&pool->mtx);
 
+   const double t0 = seconds_now();
    draw_share(rc, pool);
+   pool->share[0].seconds = seconds_now() - t0;
 
    for (unsigned i = 0; i < RAST_SPIN_POLLS &&
         atomic_load_explicit(&pool->pending, memory_order_acquire); i++)
@@ -320,6 +497,9 @@ void rast_flush(struct rast_context *rc)
       pthread_mutex_unlock(&pool->mtx);
    }
    rc->band_count = 1;
+   rc->band_lo = INT64_MIN;
+   rc->band_hi = INT64_MAX;
+   learn_speeds(pool);
    for (unsigned t = 1; t < pool->n; t++)
       stats_add(&rc->stats, &pool->ctx[t]->stats);
    pool->drawn_parallel += pool->nprim;
@@ -350,7 +530,7 @@ bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (
    p->v[1] = v1;
    p->v[2] = v2;
    double area;
-   p->rows_known = prim_rows(rc, p, &p->lo, &p->hi, &area);
+   p->rows_known = prim_rows(rc, p, &p->lo, &p->hi, &p->width, &p->culled, &area);
    pool->pixels += p->rows_known ? area : RAST_PARALLEL_MIN_PIXELS;
    return true;
 }
@@ -370,6 +550,7 @@ static void pool_destroy(struct rast_context *rc)
    pthread_cond_destroy(&pool->go);
    pthread_cond_destroy(&pool->done);
    free(pool->prim);
+   free(pool->band_w);
    free(pool);
    rc->pool = NULL;
    rc->band_index = 0;
@@ -392,6 +573,9 @@ bool rast_set_threads(struct rast_context *rc, unsigned n)
    pthread_mutex_init(&pool->mtx, NULL);
    pthread_cond_init(&pool->go, NULL);
    pthread_cond_init(&pool->done, NULL);
+   for (unsigned c = 0; c < RAST_BATCH_SIZES; c++)
+      for (unsigned t = 0; t < RAST_MAX_THREADS; t++)
+         pool->slowness[c][t] = 1.0f;
    pool->ctx[0] = rc;
    pool->n = 1;
    rc->pool = pool;

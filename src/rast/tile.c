@@ -33,11 +33,18 @@ bool rast_prim_extent(const struct rast_context *rc, enum rast_prim_kind kind,
    const float (*v[3])[4] = { v0, v1, v2 };
    unsigned nv = kind == RAST_PRIM_TRIANGLE ? 3 : kind == RAST_PRIM_LINE ? 2 : 1;
    float x0 = v[0][ps][0], x1 = x0, y0 = v[0][ps][1], y1 = y0;
+   /* fminf and fmaxf (a NaN operand gives the other), written out: the
+    * threads' queue takes every primitive's extent on the main thread, and
+    * the library calls were a measurable share of it */
+#define MIN_OF(a, b) ((b) < (a) || (a) != (a) ? (b) : (a))
+#define MAX_OF(a, b) ((b) > (a) || (a) != (a) ? (b) : (a))
    for (unsigned k = 1; k < nv; k++) {
       float x = v[k][ps][0], y = v[k][ps][1];
-      x0 = fminf(x0, x); x1 = fmaxf(x1, x);
-      y0 = fminf(y0, y); y1 = fmaxf(y1, y);
+      x0 = MIN_OF(x0, x); x1 = MAX_OF(x1, x);
+      y0 = MIN_OF(y0, y); y1 = MAX_OF(y1, y);
    }
+#undef MIN_OF
+#undef MAX_OF
    /* the snap moves a vertex by less than a pixel; lines and points grow
     * by their size */
    float m = 2.0f;
