@@ -728,20 +728,18 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
          zoff[p] = layer_of(u, q[p / TEX_QUAD].layer[p % TEX_QUAD]) * (int32_t)lv->img_stride;
    struct lanes_addr A, B;
    const bool s_col = s_by_column(cs), t_row = t_by_row(ct);
-   if (s_col) {
-      const struct dfxl sv = { __builtin_shufflevector(cs.v, cs.v, 0, 1, 4, 5, 0, 1, 4, 5) };
-      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], sv, &A, &st);
+   /* the address unit once per axis, on the columns' s or the rows' t
+    * where they are shared (one copy of its code an axis) */
+   const struct dfxl sv = { __builtin_shufflevector(cs.v, cs.v, 0, 1, 4, 5, 0, 1, 4, 5) };
+   const struct dfxl tv = { __builtin_shufflevector(ct.v, ct.v, 0, 2, 0, 2, 0, 2, 0, 2) };
+   lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], s_col ? sv : cs,
+                 &A, &st);
+   lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], t_row ? tv : ct,
+                 &B, &st);
+   if (s_col)
       A = SPREAD(A, 0, 1, 0, 1, 2, 3, 2, 3);
-   } else {
-      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], cs, &A, &st);
-   }
-   if (t_row) {
-      const struct dfxl tv = { __builtin_shufflevector(ct.v, ct.v, 0, 2, 0, 2, 0, 2, 0, 2) };
-      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], tv, &B, &st);
+   if (t_row)
       B = SPREAD(B, 0, 0, 1, 1, 0, 0, 1, 1);
-   } else {
-      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], ct, &B, &st);
-   }
    /* as pair2 above: a count in a shared lane would be counted once (the
     * copies are the same lanes again) */
    if ((s_col || t_row) && dfxl_any((st.sat | st.flush) != 0))
