@@ -34,6 +34,11 @@ struct fp_rasterizer_state {
 
 struct fp_fragment_shader {
    const struct tgsi_token *tokens;
+   /* What tgsi_exec runs: `tokens`, or with framebuffer fetch a copy that
+    * reads the fetched colour of output k from IN[fetch_first + k]
+    * (fp_fbfetch.c); fetch_mask: the colour buffers read. */
+   const struct tgsi_token *exec_tokens;
+   unsigned fetch_first, fetch_mask;
    struct tgsi_shader_info info;
    void *draw_fs;                   /* draw's copy, for wide points etc. */
    bool pixel_center_integer;
@@ -242,6 +247,13 @@ bool fp_check_render_cond(struct fp_context *fp);
  * components of input `input` the model may rebase with the samplers now
  * bound (rast_varying's rebase_mask and rebase_even). */
 void fp_rebase_scan(struct fp_fragment_shader *fs);
+/* fp_fbfetch.c: exec_tokens and fetch_mask of a shader; false when the
+ * shader cannot be run. */
+bool fp_fbfetch_prepare(struct fp_fragment_shader *fs);
+/* Drops what tgsi_to_nir cannot read (the advanced-blend property) from
+ * fs->tokens, before anything else looks at them; false: out of memory. */
+bool fp_fbfetch_strip(struct fp_fragment_shader *fs);
+void fp_fbfetch_release(struct fp_fragment_shader *fs);
 /* fp_vbuf.c: the vertex layout's rebase masks after a sampler change. */
 void fp_vbuf_update_rebase(struct fp_context *fp);
 void fp_rebase_modes(const struct fp_context *fp, unsigned input, uint8_t *mask, uint8_t *even);

@@ -72,6 +72,10 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
          break;
       }
    }
+   for (unsigned cb = 0; cb < fs->num_color_outputs; cb++)
+      if (fs->fetch_mask >> cb & 1u)
+         memcpy(&mach->Inputs[fs->fetch_first + (unsigned)fs->color_output[cb]], q->last[cb],
+                sizeof(q->last[cb]));
 
    mach->NonHelperMask = q->mask;
    unsigned mask = q->mask & tgsi_exec_machine_run(mach, 0) & 0xf;
@@ -210,6 +214,7 @@ void fp_fs_validate(struct fp_context *fp)
    rs.writes_depth = fp->fs->writes_depth;
    rs.color0_to_all = fp->fs->color0_to_all;
    rs.may_discard = fp->fs->may_discard;
+   rs.fetch_mask = fp->fs->fetch_mask;
 
    if (fp_fs_compiled(fp)) {
       for (unsigned t = 0; t < fp->num_threads; t++) {
@@ -231,7 +236,8 @@ void fp_fs_validate(struct fp_context *fp)
    for (unsigned t = 0; t < fp->num_threads; t++) {
       struct fp_fs_thread *th = &fp->fs_thread[t];
       tgsi_exec_set_constant_buffers(th->mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
-      tgsi_exec_machine_bind_shader(th->mach, fp->fs->tokens, fp_tgsi_sampler_base(th->sampler),
+      tgsi_exec_machine_bind_shader(th->mach, fp->fs->exec_tokens,
+                                    fp_tgsi_sampler_base(th->sampler),
                                     NULL, NULL);
       fp_fs_drop_input_decls(th->mach);
    }

@@ -184,6 +184,29 @@ static LLVMValueRef fp_quads_coord(struct gallivm_state *gallivm, struct lp_type
    return fp_jit_join_quads(gallivm, v, type4, nq);
 }
 
+/* Framebuffer fetch: gallivm asks for the output at `location`; the back
+ * end has put that colour buffer's contents in the quads' `last`. */
+struct fp_fs_iface {
+   struct lp_build_fs_iface base;
+   const LLVMValueRef *quads;
+   unsigned nq;
+   struct lp_type type4;
+};
+
+static void fp_fb_fetch(const struct lp_build_fs_iface *iface, struct lp_build_context *bld,
+                        int location, LLVMValueRef result[4])
+{
+   const struct fp_fs_iface *f = (const struct fp_fs_iface *)iface;
+   unsigned cb = location >= FRAG_RESULT_DATA0 ? (unsigned)(location - FRAG_RESULT_DATA0) : 0;
+   if (cb >= RAST_MAX_CBUFS)
+      cb = 0;
+   for (unsigned c = 0; c < 4; c++)
+      result[c] = fp_load_quads(bld->gallivm, f->quads, f->nq,
+                                offsetof(struct rast_quad, last) +
+                                   ((size_t)cb * 4 + c) * RAST_QUAD_SIZE * sizeof(float),
+                                f->type4);
+}
+
 /* The shader on `nq` quads: 4 lanes a quad, gallivm's quad operations
  * (derivatives) within each quad's four. */
 static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
@@ -296,6 +319,9 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
     * model's implicit LOD shares, so textureGrad(dFdx(c), dFdy(c)) samples the
     * same LOD compiled as interpreted. */
    params.tgsi_exec_derivatives = true;
+   struct fp_fs_iface fs_iface = { { NULL, fp_fb_fetch }, quads, nq, type4 };
+   if (info->uses_fbfetch)
+      params.fs_iface = &fs_iface.base;
    lp_build_nir_soa(gallivm, nir, &params, outputs);
 
    /* Outputs: what fp_fs_shade copies out of tgsi_exec's registers. */

@@ -138,8 +138,12 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 130;   /* with 4x multisampling: GL ES 3.0 (docs/driver.md) */
    case PIPE_CAP_MAX_RENDER_TARGETS:
       return RAST_MAX_CBUFS;
+   case PIPE_CAP_FBFETCH:                  /* the back end reads the target first */
+      return RAST_MAX_CBUFS;
+   case PIPE_CAP_FBFETCH_COHERENT:         /* primitives reach it in order */
+      return 1;
    case PIPE_CAP_MAX_DUAL_SOURCE_RENDER_TARGETS:
-      return 0;
+      return 1;     /* output 1 is the back end's second source (SRC1 factors) */
    case PIPE_CAP_MAX_TEXTURE_2D_SIZE:
       return s->profile->max_target;
    case PIPE_CAP_MAX_TEXTURE_3D_LEVELS:

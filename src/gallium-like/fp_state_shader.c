@@ -30,6 +30,11 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
       return NULL;
    }
    tgsi_scan_shader(fs->tokens, &fs->info);
+   if (!fp_fbfetch_strip(fs)) {
+      FREE((void *)fs->tokens);
+      FREE(fs);
+      return NULL;
+   }
    fp_rebase_scan(fs);
 
    struct pipe_shader_state dstate = *templ;
@@ -66,6 +71,12 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
          break;
       }
    }
+   if (!fp_fbfetch_prepare(fs)) {
+      draw_delete_fragment_shader(fp->draw, fs->draw_fs);
+      FREE((void *)fs->tokens);
+      FREE(fs);
+      return NULL;
+   }
    return fs;
 }
 
@@ -85,13 +96,14 @@ static void fp_delete_fs_state(struct pipe_context *pipe, void *cso)
    struct fp_fragment_shader *fs = cso;
    for (unsigned t = 0; t < fp->num_threads; t++) {
       struct tgsi_exec_machine *mach = fp->fs_thread[t].mach;
-      if (mach && mach->Tokens == fs->tokens)
+      if (mach && mach->Tokens == fs->exec_tokens)
          tgsi_exec_machine_bind_shader(mach, NULL, NULL, NULL, NULL);
    }
    if (fp->fs == fs)
       fp->fs = NULL;
    draw_delete_fragment_shader(fp->draw, fs->draw_fs);
    fp_jit_fs_destroy(fs->jit);
+   fp_fbfetch_release(fs);
    FREE((void *)fs->tokens);
    FREE(fs);
 }

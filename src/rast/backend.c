@@ -12,7 +12,9 @@
  * shader; stats.samples_passed (occlusion queries) the pixels that survive
  * the shader and the depth/stencil test.
  */
+#include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
 #include "rast/backend_priv.h"
 #include "rast/vectors.h"
 
@@ -23,6 +25,35 @@ static inline struct rast_backend *backend(struct rast_context *rc)
 
 typedef const float (*chan_quad)[RAST_QUAD_SIZE];
 
+/* Framebuffer fetch: the colour buffers the shader reads, as they are now,
+ * into the quad's `last`.  Every pixel of the quad inside the target is
+ * read, covered or not, so derivatives of the fetched colour are those of
+ * the picture; the quad's rows are this thread's, and primitives reach the
+ * back end in order, so what is read is every earlier primitive's result
+ * (coherent fetch). */
+static void fetch_targets(const struct rast_context *rc, const struct rast_backend *be,
+                          struct rast_quad *q)
+{
+   for (unsigned cb = 0; cb < RAST_MAX_CBUFS; cb++) {
+      if (!(rc->fs.fetch_mask >> cb & 1u))
+         continue;
+      memset(q->last[cb], 0, sizeof(q->last[cb]));
+      const struct rast_color_target *t = &rc->fb.cbuf[cb];
+      if (cb >= rc->fb.nr_cbufs || !t->base)
+         continue;
+      const uint8_t *plane = t->base + be->sample * t->sample_stride;
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+         const int x = rast_qx(q->x, i), y = rast_qy(q->y, i);
+         if (x < 0 || y < 0 || x >= (int)rc->fb.width || y >= (int)rc->fb.height)
+            continue;
+         float rgba[1][4];
+         t->load(plane + (ptrdiff_t)y * t->stride + (ptrdiff_t)x * (ptrdiff_t)t->cpp, 1, rgba);
+         for (unsigned c = 0; c < 4; c++)
+            q->last[cb][c][i] = rgba[0][c];
+      }
+   }
+}
+
 /* Runs the shader on the live pixels of q given by mask, its outputs to
  * `out`; returns the pixels it keeps. */
 static inline unsigned shade(struct rast_context *rc, struct rast_quad *q, unsigned mask,
@@ -30,6 +61,8 @@ static inline unsigned shade(struct rast_context *rc, struct rast_quad *q, unsig
 {
    const unsigned saved = q->mask;
    q->mask = mask;
+   if (rc->fs.fetch_mask)
+      fetch_targets(rc, backend(rc), q);
    rc->stats.pixels_shaded += rast_popcount4(mask);
    const unsigned kept = rc->fs.shade(rc->fs.ctx, q, out) & mask;
    q->mask = saved;
@@ -49,6 +82,10 @@ static inline unsigned shade_pair(struct rast_context *rc, struct rast_backend *
    const unsigned saved0 = q0->mask, saved1 = q1->mask;
    q0->mask = m0;
    q1->mask = m1;
+   if (rc->fs.fetch_mask) {
+      fetch_targets(rc, be, q0);
+      fetch_targets(rc, be, q1);
+   }
    rc->stats.pixels_shaded += rast_popcount4(m0) + rast_popcount4(m1);
    const unsigned kept = rc->fs.shade2(rc->fs.ctx, q0, q1, &be->out, &be->out2) &
                          (m0 | m1 << 4);
@@ -264,6 +301,7 @@ void rast_backend_sample(struct rast_context *rc, unsigned s)
    struct rast_backend *be = backend(rc);
    if (!be)
       return;
+   be->sample = s;
    if (be->zs_base0)
       be->zs_base = be->zs_base0 + s * be->zs_sample_stride;
    for (unsigned k = 0; k < be->ncbufs; k++)

@@ -118,6 +118,7 @@ struct rast_backend {
    bool shade_needed;             /* false: no visible effect of the shader */
    unsigned ncbufs;
    struct rast_cbuf_plan cbuf[RAST_MAX_CBUFS];
+   unsigned sample;               /* the sample plane drawn (rast_backend_sample) */
 
    /* Scratch for the shader's output: not on the stack of every quad. */
    struct rast_shaded_quad out, out2;   /* out2: the second quad of a pair */

@@ -22,6 +22,11 @@
  *                covered sample: the centroid rule of hardware) and cached
  *                for the samples after it.
  *
+ * A shader that reads the target (framebuffer fetch) reads one sample's
+ * colour, so it runs once a sample instead: no centre walk and no cache,
+ * the back end of sample k's walk shades each pixel covered at sample k
+ * with the registers at sample k, after fetching sample k's colour.
+ *
  * docs/msaa.md has the argument, the costs and what stays single-sampled.
  */
 #include <stdatomic.h>
@@ -183,10 +188,30 @@ static unsigned cached_shade(void *ctx, const struct rast_quad *q, struct rast_s
    return kept;
 }
 
+/* Once a sample (framebuffer fetch): the shader itself, alpha to coverage
+ * for this sample as cached_shade applies it. */
+static unsigned sample_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   struct rast_context *rc = ctx;
+   struct rast_msaa *m = rc->msaa;
+   unsigned kept = m->shade(m->ctx, q, out) & q->mask;
+   if (m->a2c)
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+         if (!(out->color[0][3][i] > (float)m->sample * (1.0f / RAST_MSAA_SAMPLES)))
+            kept &= ~(1u << i);
+   return kept;
+}
+
 static unsigned cached_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
                               struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
 {
    return cached_shade(ctx, q0, out0) | cached_shade(ctx, q1, out1) << 4;
+}
+
+static unsigned sample_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
+                              struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
+{
+   return sample_shade(ctx, q0, out0) | sample_shade(ctx, q1, out1) << 4;
 }
 
 /* One walk.  The set-up's counters (the primitive, its vertices) count
@@ -230,6 +255,7 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    const struct rast_shader fs = rc->fs;
    const bool counting = rc->counting;
    const bool shades = rast_backend_shades(rc);
+   const bool per_sample = fs.fetch_mask != 0;
    bool first = true;
    m->shade = fs.shade;
    m->ctx = fs.ctx;
@@ -237,8 +263,8 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    rc->msaa_busy = true;
    /* the samples' back end shades through the cache; the centre's calls
     * the shader itself (centre_quad) */
-   rc->fs.shade = cached_shade;
-   rc->fs.shade2 = fs.shade2 ? cached_shade2 : NULL;
+   rc->fs.shade = per_sample ? sample_shade : cached_shade;
+   rc->fs.shade2 = !fs.shade2 ? NULL : per_sample ? sample_shade2 : cached_shade2;
    rc->fs.ctx = rc;
 
    for (int64_t y = top; y < bot; y += MSAA_STRIP_ROWS) {
@@ -250,7 +276,7 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
          m->serial = 1;
       }
 
-      if (shades) {
+      if (shades && !per_sample) {
          fr->Hx = fr->Hy = fr->H;
          rc->quad = centre_quad;
          rc->quad2 = NULL;

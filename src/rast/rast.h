@@ -303,6 +303,10 @@ struct rast_quad {
    int64_t z[RAST_QUAD_SIZE];        /* Z register, raw profile format */
    /* [varying][component][pixel]: the layout of tgsi_exec's input vectors */
    float in[RAST_MAX_VARYINGS][4][RAST_QUAD_SIZE];
+   /* Framebuffer fetch: the colour buffers the shader reads (its
+    * fetch_mask), as they are before this quad, in the layout of `in`;
+    * the sample being drawn on a multisampled target. */
+   float last[RAST_MAX_CBUFS][4][RAST_QUAD_SIZE];
 };
 
 struct rast_shaded_quad {
@@ -329,6 +333,10 @@ struct rast_shader {
    bool writes_depth;
    bool color0_to_all;               /* gl_FragColor broadcast to every cbuf */
    bool may_discard;
+   /* Colour buffers the shader reads (framebuffer fetch): the back end
+    * fills the quad's `last` with them before shading, and a multisampled
+    * target is shaded once a sample (msaa.c). */
+   unsigned fetch_mask;
 };
 
 /* ------------------------------------------------------------------ */

@@ -215,6 +215,24 @@ void t_store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4])
       }
 }
 
+void t_plain_state(struct rast_context *rc)
+{
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof vl);
+   vl.vertex_size = 1;
+   rast_set_vertex_layout(rc, &vl);
+   struct rast_raster_state rs;
+   memset(&rs, 0, sizeof rs);
+   rs.half_pixel_center = true;
+   rs.line_width = 1.0f;
+   rs.point_size = 1.0f;
+   rast_set_raster_state(rc, &rs);
+   struct rast_blend_state b;
+   memset(&b, 0, sizeof b);
+   b.rt[0].colormask = 0xf;
+   rast_set_blend(rc, &b);
+}
+
 void t_depth_count_hits(struct rast_context *rc, enum rast_func func)
 {
    struct rast_depth_stencil_state dsa;

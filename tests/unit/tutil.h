@@ -63,6 +63,10 @@ void t_bind_rgba8_z24s8_samples(struct rast_context *rc, uint8_t *color, uint32_
 #define T_PERSP_COLOR_SLOTS 3
 void t_layout_persp_color(struct rast_context *rc);
 
+/* The plainest state around a shader: position-only vertices, GL's pixel
+ * centres, 1-pixel lines and points, colour 0 written unblended. */
+void t_plain_state(struct rast_context *rc);
+
 /* Depth tested by `func` and written; the stencil (both faces) counts
  * every hit of a pixel, passed or not (INCR_WRAP). */
 void t_depth_count_hits(struct rast_context *rc, enum rast_func func);
