@@ -14,7 +14,6 @@
  */
 #include <stddef.h>
 #include <stdlib.h>
-#include <string.h>
 #include "rast/backend_priv.h"
 #include "rast/vectors.h"
 
@@ -28,29 +27,29 @@ typedef const float (*chan_quad)[RAST_QUAD_SIZE];
 /* Framebuffer fetch: the colour buffers the shader reads, as they are now,
  * into the quad's `last`.  Every pixel of the quad inside the target is
  * read, covered or not, so derivatives of the fetched colour are those of
- * the picture; the quad's rows are this thread's, and primitives reach the
- * back end in order, so what is read is every earlier primitive's result
- * (coherent fetch). */
+ * the picture (a quad starts inside it; its right column or lower row may
+ * not be, and reads 0).  The quad's rows are this thread's, and primitives
+ * reach the back end in order, so what is read is every earlier
+ * primitive's result (coherent fetch). */
 static void fetch_targets(const struct rast_context *rc, const struct rast_backend *be,
                           struct rast_quad *q)
 {
+   const unsigned w = q->x + 1 < (int)rc->fb.width ? 2 : 1;
+   const unsigned h = q->y + 1 < (int)rc->fb.height ? 2 : 1;
    for (unsigned cb = 0; cb < RAST_MAX_CBUFS; cb++) {
       if (!(rc->fs.fetch_mask >> cb & 1u))
          continue;
-      memset(q->last[cb], 0, sizeof(q->last[cb]));
       const struct rast_color_target *t = &rc->fb.cbuf[cb];
-      if (cb >= rc->fb.nr_cbufs || !t->base)
-         continue;
-      const uint8_t *plane = t->base + be->sample * t->sample_stride;
-      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
-         const int x = rast_qx(q->x, i), y = rast_qy(q->y, i);
-         if (x < 0 || y < 0 || x >= (int)rc->fb.width || y >= (int)rc->fb.height)
-            continue;
-         float rgba[1][4];
-         t->load(plane + (ptrdiff_t)y * t->stride + (ptrdiff_t)x * (ptrdiff_t)t->cpp, 1, rgba);
-         for (unsigned c = 0; c < 4; c++)
-            q->last[cb][c][i] = rgba[0][c];
+      float rgba[RAST_QUAD_SIZE][4] = { { 0 } };   /* pixel i at [i] */
+      if (cb < rc->fb.nr_cbufs && t->base) {
+         const uint8_t *row = t->base + be->sample * t->sample_stride +
+                              (ptrdiff_t)q->y * t->stride + (ptrdiff_t)q->x * (ptrdiff_t)t->cpp;
+         for (unsigned r = 0; r < h; r++)
+            t->load(row + (ptrdiff_t)r * t->stride, w, &rgba[2 * r]);
       }
+      for (unsigned c = 0; c < 4; c++)
+         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+            q->last[cb][c][i] = rgba[i][c];
    }
 }
 

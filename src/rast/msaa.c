@@ -48,6 +48,9 @@ const float rast_sample_pos_4x[RAST_MSAA_SAMPLES][2] = {
 
 typedef unsigned (*msaa_shade_func)(void *ctx, const struct rast_quad *quad,
                                     struct rast_shaded_quad *out);
+typedef unsigned (*msaa_shade2_func)(void *ctx, const struct rast_quad *q0,
+                                     const struct rast_quad *q1, struct rast_shaded_quad *out0,
+                                     struct rast_shaded_quad *out1);
 
 struct rast_msaa {
    /* The strip's cache of shaded pixels: [row - y0][x]. */
@@ -60,6 +63,7 @@ struct rast_msaa {
    int64_t y0;                    /* the strip's first scan line, in the target */
    /* While the walks run: the real shader and the sample being drawn. */
    msaa_shade_func shade;
+   msaa_shade2_func shade2;       /* its eight-lane form, or NULL */
    void *ctx;
    unsigned sample;
    bool centre;
@@ -154,6 +158,18 @@ static void centre_quad(struct rast_context *rc, struct rast_quad *q)
    shade_into_cache(rc->msaa, q, q->mask);
 }
 
+/* Alpha to coverage keeps, of the pixels `kept`, those whose first output's
+ * alpha is above k/4 for the sample k drawn (llvmpipe's rule). */
+static inline unsigned a2c(const struct rast_msaa *m, const struct rast_shaded_quad *out,
+                           unsigned kept)
+{
+   if (m->a2c)
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+         if (!(out->color[0][3][i] > (float)m->sample * (1.0f / RAST_MSAA_SAMPLES)))
+            kept &= ~(1u << i);
+   return kept;
+}
+
 /* The shader the back end calls in a sample's walk: the cached outputs,
  * the pixels not shaded yet shaded now; alpha to coverage for this sample. */
 static unsigned cached_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
@@ -180,38 +196,31 @@ static unsigned cached_shade(void *ctx, const struct rast_quad *q, struct rast_s
          for (unsigned ch = 0; ch < 4; ch++)
             out->color[o][ch][i] = c[o * 4 + ch];
       out->depth[i] = m->depth[e];
-      bool keep = m->kept[e];
-      if (m->a2c)
-         keep = keep && out->color[0][3][i] > (float)m->sample * (1.0f / RAST_MSAA_SAMPLES);
-      kept |= (unsigned)keep << i;
+      kept |= (unsigned)m->kept[e] << i;
    }
-   return kept;
+   return a2c(m, out, kept);
 }
 
-/* Once a sample (framebuffer fetch): the shader itself, alpha to coverage
- * for this sample as cached_shade applies it. */
+/* Once a sample (framebuffer fetch): the shader itself, on one quad or,
+ * in its eight-lane form, on two; alpha to coverage as above. */
 static unsigned sample_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
-   struct rast_context *rc = ctx;
-   struct rast_msaa *m = rc->msaa;
-   unsigned kept = m->shade(m->ctx, q, out) & q->mask;
-   if (m->a2c)
-      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-         if (!(out->color[0][3][i] > (float)m->sample * (1.0f / RAST_MSAA_SAMPLES)))
-            kept &= ~(1u << i);
-   return kept;
+   const struct rast_msaa *m = ((struct rast_context *)ctx)->msaa;
+   return a2c(m, out, m->shade(m->ctx, q, out) & q->mask);
+}
+
+static unsigned sample_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
+                              struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
+{
+   const struct rast_msaa *m = ((struct rast_context *)ctx)->msaa;
+   const unsigned kept = m->shade2(m->ctx, q0, q1, out0, out1);
+   return a2c(m, out0, kept & q0->mask) | a2c(m, out1, kept >> 4 & q1->mask) << 4;
 }
 
 static unsigned cached_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
                               struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
 {
    return cached_shade(ctx, q0, out0) | cached_shade(ctx, q1, out1) << 4;
-}
-
-static unsigned sample_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
-                              struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
-{
-   return sample_shade(ctx, q0, out0) | sample_shade(ctx, q1, out1) << 4;
 }
 
 /* One walk.  The set-up's counters (the primitive, its vertices) count
@@ -258,6 +267,7 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    const bool per_sample = fs.fetch_mask != 0;
    bool first = true;
    m->shade = fs.shade;
+   m->shade2 = fs.shade2;
    m->ctx = fs.ctx;
    m->a2c = rc->blend.alpha_to_coverage;
    rc->msaa_busy = true;

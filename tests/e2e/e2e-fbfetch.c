@@ -136,28 +136,6 @@ static void scene_fetch(bool flat, int size)
    random_triangles(0xfe7c4001u, 30, 1.0f, flat, size);
 }
 
-struct msaa_fbo { GLuint fbo, color; };
-
-static void msaa_begin(struct msaa_fbo *m, int size)
-{
-   glGenRenderbuffers(1, &m->color);
-   glBindRenderbuffer(GL_RENDERBUFFER, m->color);
-   glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, size, size);
-   glGenFramebuffers(1, &m->fbo);
-   glBindFramebuffer(GL_FRAMEBUFFER, m->fbo);
-   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m->color);
-   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
-         "the 4-sample framebuffer is not complete");
-}
-
-static void msaa_resolve(const struct msaa_fbo *m, GLuint target, int size)
-{
-   glBindFramebuffer(GL_READ_FRAMEBUFFER, m->fbo);
-   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-   glBlitFramebuffer(0, 0, size, size, 0, 0, size, size, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-   glBindFramebuffer(GL_FRAMEBUFFER, target);
-}
-
 static void scene_dualsrc(int size)
 {
    static const char *fs =
@@ -221,10 +199,10 @@ int main(int argc, char **argv)
       if (!errors && !strcmp(c, "fetch")) {
          scene_fetch(false, a.size);
       } else if (!errors) {
-         struct msaa_fbo m;
-         msaa_begin(&m, a.size);
+         struct e2e_msaa m;
+         errors += e2e_msaa_create(&m, a.size);
          scene_fetch(true, a.size);
-         msaa_resolve(&m, g.fbo, a.size);
+         e2e_msaa_resolve(&m, g.fbo);
       }
    } else if (!strcmp(c, "dualsrc")) {
       check(has_extension("GL_EXT_blend_func_extended"), "GL_EXT_blend_func_extended is not exposed");

@@ -51,50 +51,17 @@ static GLuint program(void)
    return fp_gl_program(vs, fs, attr);
 }
 
-struct msaa_fbo { GLuint fbo, color, ds; };
-
-static void msaa_create(struct msaa_fbo *m, int size)
-{
-   glGenRenderbuffers(1, &m->color);
-   glBindRenderbuffer(GL_RENDERBUFFER, m->color);
-   glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, size, size);
-   glGenRenderbuffers(1, &m->ds);
-   glBindRenderbuffer(GL_RENDERBUFFER, m->ds);
-   glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH24_STENCIL8, size, size);
-   glGenFramebuffers(1, &m->fbo);
-   glBindFramebuffer(GL_FRAMEBUFFER, m->fbo);
-   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m->color);
-   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                             m->ds);
-   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
-         "the 4-sample framebuffer is not complete");
-   GLint samples = 0;
-   glGetIntegerv(GL_SAMPLES, &samples);
-   if (samples != 4)
-      printf("error: GL_SAMPLES of the multisampled framebuffer is %d, not 4\n", samples);
-   errors += samples != 4;
-   glViewport(0, 0, size, size);
-}
-
-static void resolve(const struct msaa_fbo *m, GLuint target, int size)
-{
-   glBindFramebuffer(GL_READ_FRAMEBUFFER, m->fbo);
-   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-   glBlitFramebuffer(0, 0, size, size, 0, 0, size, size, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-   glBindFramebuffer(GL_FRAMEBUFFER, target);
-}
-
 /* A white triangle on black: the resolve must hold partly covered pixels. */
 static void self_check(GLuint target, int size)
 {
-   struct msaa_fbo m;
-   msaa_create(&m, size);
+   struct e2e_msaa m;
+   errors += e2e_msaa_create(&m, size);
    glClearColor(0, 0, 0, 1);
    glClear(GL_COLOR_BUFFER_BIT);
    const float pos[] = { -0.9f, -0.8f, 0, 1, 0.85f, -0.3f, 0, 1, -0.2f, 0.9f, 0, 1 };
    const float white[4] = { 1, 1, 1, 1 };
    e2e_draw(GL_TRIANGLES, 3, pos, NULL, white);
-   resolve(&m, target, size);
+   e2e_msaa_resolve(&m, target);
    unsigned char *px = malloc((size_t)size * (size_t)size * 4);
    if (!px)
       fp_die("out of memory");
@@ -105,9 +72,7 @@ static void self_check(GLuint target, int size)
    free(px);
    printf("stat: partial=%d\n", partial);
    check(partial > size / 2, "no partly covered pixels in the resolve: not multisampled");
-   glDeleteFramebuffers(1, &m.fbo);
-   glDeleteRenderbuffers(1, &m.color);
-   glDeleteRenderbuffers(1, &m.ds);
+   e2e_msaa_delete(&m);
    glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
 
@@ -192,8 +157,8 @@ int main(int argc, char **argv)
    glUseProgram(program());
    self_check(g.fbo, a.size);
 
-   struct msaa_fbo m;
-   msaa_create(&m, a.size);
+   struct e2e_msaa m;
+   errors += e2e_msaa_create(&m, a.size);
    if (!strcmp(c, "edges"))
       scene_edges(a.size);
    else if (!strcmp(c, "coverage"))
@@ -202,7 +167,7 @@ int main(int argc, char **argv)
       scene_blend(a.size);
    else
       fp_die("--case: edges, coverage or blend");
-   resolve(&m, g.fbo, a.size);
+   e2e_msaa_resolve(&m, g.fbo);
    e2e_end(&g, &a, NULL);
    return errors ? 1 : 0;
 }

@@ -1,6 +1,7 @@
 /* Shared plumbing of the e2e test programs. */
 #include "e2e_common.h"
 #include "fp_png.h"
+#include <GLES3/gl3.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -204,4 +205,49 @@ long e2e_tri_ties(const struct e2e_tri *t, int size, unsigned char *mask)
          }
       }
    return ties;
+}
+
+int e2e_msaa_create(struct e2e_msaa *m, int size)
+{
+   int problems = 0;
+   m->size = size;
+   glGenRenderbuffers(1, &m->color);
+   glBindRenderbuffer(GL_RENDERBUFFER, m->color);
+   glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, size, size);
+   glGenRenderbuffers(1, &m->ds);
+   glBindRenderbuffer(GL_RENDERBUFFER, m->ds);
+   glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH24_STENCIL8, size, size);
+   glGenFramebuffers(1, &m->fbo);
+   glBindFramebuffer(GL_FRAMEBUFFER, m->fbo);
+   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m->color);
+   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                             m->ds);
+   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      printf("error: the 4-sample framebuffer is not complete\n");
+      problems++;
+   }
+   GLint samples = 0;
+   glGetIntegerv(GL_SAMPLES, &samples);
+   if (samples != 4) {
+      printf("error: GL_SAMPLES of the multisampled framebuffer is %d, not 4\n", samples);
+      problems++;
+   }
+   glViewport(0, 0, size, size);
+   return problems;
+}
+
+void e2e_msaa_resolve(const struct e2e_msaa *m, GLuint target)
+{
+   glBindFramebuffer(GL_READ_FRAMEBUFFER, m->fbo);
+   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+   glBlitFramebuffer(0, 0, m->size, m->size, 0, 0, m->size, m->size, GL_COLOR_BUFFER_BIT,
+                     GL_NEAREST);
+   glBindFramebuffer(GL_FRAMEBUFFER, target);
+}
+
+void e2e_msaa_delete(struct e2e_msaa *m)
+{
+   glDeleteFramebuffers(1, &m->fbo);
+   glDeleteRenderbuffers(1, &m->color);
+   glDeleteRenderbuffers(1, &m->ds);
 }

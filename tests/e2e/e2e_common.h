@@ -53,6 +53,15 @@ GLuint e2e_texture_program(void);
  * (a texture coordinate) ncomp floats. */
 void e2e_draw_uv(GLenum mode, int n, const float *pos, const float *uv, int ncomp);
 
+/* A 4-sample FBO of size x size (RGBA8 colour, depth24/stencil8), GL ES
+ * 3.0: create binds it and sets the viewport, and returns the number of
+ * problems it printed as "error:" lines (not complete, GL_SAMPLES not 4);
+ * resolve blits it into `target` (glBlitFramebuffer) and binds that. */
+struct e2e_msaa { GLuint fbo, color, ds; int size; };
+int e2e_msaa_create(struct e2e_msaa *m, int size);
+void e2e_msaa_resolve(const struct e2e_msaa *m, GLuint target);
+void e2e_msaa_delete(struct e2e_msaa *m);
+
 /* Sub-pixel grid unit -> clip-space x or y for a target of `size` pixels;
  * exact for power-of-two sizes. */
 float e2e_ndc(int32_t sub, int size);

@@ -117,12 +117,7 @@ static void scene(unsigned ntri, unsigned samples, bool pairs, unsigned threads)
 int main(int argc, char **argv)
 {
    unsigned scenes = 60;
-   for (int i = 1; i + 1 < argc; i += 2) {
-      if (!strcmp(argv[i], "--scenes"))
-         scenes = (unsigned)strtoul(argv[i + 1], NULL, 0);
-      else if (!strcmp(argv[i], "--seed"))
-         rng = strtoull(argv[i + 1], NULL, 0);
-   }
+   t_scene_args(argc, argv, "test_fetch", &scenes, &rng);
    t_seed(rng);
    for (unsigned n = 0; n < scenes; n++) {
       const unsigned ntri = 1 + n % 40;

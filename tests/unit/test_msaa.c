@@ -256,12 +256,7 @@ static void one_tri(struct shader *s, unsigned mask, bool a2c, bool discard)
 int main(int argc, char **argv)
 {
    unsigned scenes = 300;
-   for (int i = 1; i + 1 < argc; i += 2) {
-      if (!strcmp(argv[i], "--scenes"))
-         scenes = (unsigned)strtoul(argv[i + 1], NULL, 0);
-      else if (!strcmp(argv[i], "--seed"))
-         rng = strtoull(argv[i + 1], NULL, 0);
-   }
+   t_scene_args(argc, argv, "test_msaa", &scenes, &rng);
    t_seed(rng);
    static struct shader s;
    for (unsigned n = 0; n < scenes; n++) {

@@ -282,3 +282,20 @@ void t_layout_persp_color(struct rast_context *rc)
    vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_COLOR, .usage_mask = 0xf };
    rast_set_vertex_layout(rc, &vl);
 }
+
+void t_scene_args(int argc, char **argv, const char *name, unsigned *scenes, uint64_t *seed)
+{
+   for (int i = 1; i < argc; i += 2) {
+      char *end = NULL;
+      const unsigned long long v = i + 1 < argc ? strtoull(argv[i + 1], &end, 0) : 0;
+      const bool number = end && end != argv[i + 1] && !*end;
+      if (number && !strcmp(argv[i], "--scenes") && v <= 0xffffffffull) {
+         *scenes = (unsigned)v;
+      } else if (number && !strcmp(argv[i], "--seed")) {
+         *seed = (uint64_t)v;
+      } else {
+         fprintf(stderr, "usage: %s [--scenes N] [--seed S]\n", name);
+         exit(2);
+      }
+   }
+}

@@ -80,6 +80,10 @@ uint64_t t_sat_class(const struct rast_stats *s, enum rast_reg_class c);
 double t_rand(void);               /* [0, 1) */
 void t_seed(uint64_t s);
 int t_summary(const char *name);
+/* "[--scenes N] [--seed S]" of a scene test's command line into *scenes
+ * and *seed (left as they are when absent); anything else: its usage on
+ * stderr and exit(2). */
+void t_scene_args(int argc, char **argv, const char *name, unsigned *scenes, uint64_t *seed);
 
 /* The reference: exact 64-bit edge functions on the fixed-point vertices
  * (units of 2^-N), pixel centres (i*S + H, j*S + H), llvmpipe's tie rule.
