@@ -132,9 +132,22 @@ static GLuint compile(GLenum type, const char *src)
    if (!ok) {
       char log[2048] = "";
       glGetShaderInfoLog(s, sizeof(log), NULL, log);
-      fp_die("%s shader: %s", type == GL_VERTEX_SHADER ? "vertex" : "fragment", log);
+      fp_die("%s shader: %s", type == GL_VERTEX_SHADER ? "vertex"
+                              : type == GL_FRAGMENT_SHADER ? "fragment" : "compute", log);
    }
    return s;
+}
+
+static void link(GLuint p)
+{
+   glLinkProgram(p);
+   GLint ok = 0;
+   glGetProgramiv(p, GL_LINK_STATUS, &ok);
+   if (!ok) {
+      char log[2048] = "";
+      glGetProgramInfoLog(p, sizeof(log), NULL, log);
+      fp_die("link: %s", log);
+   }
 }
 
 GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
@@ -145,16 +158,19 @@ GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
    glAttachShader(p, f);
    for (GLuint i = 0; attribs && attribs[i]; i++)
       glBindAttribLocation(p, i, attribs[i]);
-   glLinkProgram(p);
-   GLint ok = 0;
-   glGetProgramiv(p, GL_LINK_STATUS, &ok);
-   if (!ok) {
-      char log[2048] = "";
-      glGetProgramInfoLog(p, sizeof(log), NULL, log);
-      fp_die("link: %s", log);
-   }
+   link(p);
    glDeleteShader(v);
    glDeleteShader(f);
+   return p;
+}
+
+GLuint fp_gl_compute_program(const char *cs)
+{
+   GLuint p = glCreateProgram();
+   GLuint c = compile(0x91B9 /* GL_COMPUTE_SHADER, GL ES 3.1 */, cs);
+   glAttachShader(p, c);
+   link(p);
+   glDeleteShader(c);
    return p;
 }
 

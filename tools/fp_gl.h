@@ -26,6 +26,8 @@ const char *fp_gl_renderer(void);
 
 /* Compiles and links; attribs[i] is bound to location i (NULL-terminated). */
 GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs);
+/* A compute program (GL ES 3.1); errors are fatal as above. */
+GLuint fp_gl_compute_program(const char *cs);
 
 /* The whole FBO as RGBA8 rows top to bottom (PNG order; GL's are bottom up). */
 void fp_gl_read_rgba(const struct fp_gl *g, unsigned char *out);

@@ -130,8 +130,21 @@ static void fp_resource_copy_region(struct pipe_context *pipe, struct pipe_resou
    }
 }
 
+/* glClearTexImage: a multisampled layer is its samples' planes, one after
+ * the other (fp_resource.h), so the box covers them all. */
+static void fp_clear_texture(struct pipe_context *pipe, struct pipe_resource *res, unsigned level,
+                             const struct pipe_box *box, const void *data)
+{
+   struct pipe_box b = *box;
+   const unsigned samples = fp_resource_samples(res);
+   b.z *= (int)samples;
+   b.depth *= (int)samples;
+   util_clear_texture(pipe, res, level, &b, data);
+}
+
 void fp_init_clear_functions(struct fp_context *fp)
 {
+   fp->pipe.clear_texture = fp_clear_texture;
    fp->pipe.clear = fp_clear;
    fp->pipe.clear_render_target = fp_clear_render_target;
    fp->pipe.clear_depth_stencil = fp_clear_depth_stencil;

@@ -246,6 +246,7 @@ static void fp_destroy(struct pipe_context *pipe)
    for (unsigned i = 0; i < PIPE_MAX_ATTRIBS; i++)
       pipe_vertex_buffer_unreference(&fp->vertex_buffer[i]);
    fp_so_release(fp);
+   fp_compute_release(fp);
 
    if (fp->draw)
       draw_destroy(fp->draw);
@@ -304,6 +305,19 @@ static void fp_set_debug_callback(struct pipe_context *pipe,
       memset(&pipe->debug, 0, sizeof(pipe->debug));
 }
 
+/* glGetMultisamplefv: the model's pattern (rast_sample_pos_4x). */
+static void fp_get_sample_position(struct pipe_context *pipe, unsigned sample_count,
+                                   unsigned sample_index, float *pos)
+{
+   (void)pipe;
+   if (sample_count == RAST_MSAA_SAMPLES && sample_index < RAST_MSAA_SAMPLES) {
+      pos[0] = rast_sample_pos_4x[sample_index][0];
+      pos[1] = rast_sample_pos_4x[sample_index][1];
+   } else {
+      pos[0] = pos[1] = 0.5f;
+   }
+}
+
 struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
                                        unsigned flags)
 {
@@ -320,6 +334,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->pipe.texture_barrier = fp_texture_barrier;
    fp->pipe.memory_barrier = fp_memory_barrier;
    fp->pipe.set_debug_callback = fp_set_debug_callback;
+   fp->pipe.get_sample_position = fp_get_sample_position;
    fp->pipe.flush_resource = fp_flush_resource;
    fp->sample_mask = ~0u;
    fp->fb_samples = 1;
@@ -336,6 +351,8 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp_init_query_functions(fp);
    fp_init_draw_functions(fp);
    fp_init_so_functions(fp);
+   if (!fp_init_compute_functions(fp))
+      goto fail;
 
    fp->rast = rast_create(s->profile);
    if (!fp->rast)

@@ -13,6 +13,9 @@ struct draw_stage;
 struct vbuf_render;
 struct tgsi_exec_machine;
 struct fp_tgsi_sampler;
+struct fp_compute_shader;
+struct tgsi_image;
+struct tgsi_buffer;
 
 struct fp_blend_state {
    struct pipe_blend_state base;
@@ -98,6 +101,7 @@ struct fp_sampler_view {
    struct pipe_sampler_view base;
    void *fetch;                     /* util_format_fetch_rgba_func_ptr */
    bool zs;                         /* depth: sampled through unpack_z_float */
+   bool stencil;                    /* stencil index, an unsigned integer */
    bool is_unorm, is_snorm;
    bool integer;                  /* pure integer texels, sampled bit for bit */
    unsigned bw, bh, bsize;          /* format block */
@@ -166,6 +170,14 @@ struct fp_context {
    uint64_t so_written[PIPE_MAX_VERTEX_STREAMS], so_generated[PIPE_MAX_VERTEX_STREAMS];
    unsigned active_primgen_queries;
 
+   /* Compute (fp_compute.c, fp_image.c): the compute stage's shader
+    * storage buffers and images; the other stages have none. */
+   struct fp_compute_shader *cs;
+   struct pipe_shader_buffer ssbo[PIPE_MAX_SHADER_BUFFERS];
+   struct pipe_image_view images[PIPE_MAX_SHADER_IMAGES];
+   struct tgsi_image *tgsi_image;
+   struct tgsi_buffer *tgsi_buffer;
+   uint64_t cs_invocations;
    bool print_stats;
    struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
@@ -201,6 +213,12 @@ void fp_vectors_start(struct fp_context *fp);
 const struct rast_stats *fp_context_stats(struct fp_context *fp);
 void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
 void fp_init_so_functions(struct fp_context *fp);        /* fp_so.c */
+/* fp_compute.c: false when out of memory; fp_compute_release at destroy */
+bool fp_init_compute_functions(struct fp_context *fp);
+void fp_compute_release(struct fp_context *fp);
+/* fp_image.c: tgsi_exec's images and storage buffers over these arrays */
+struct tgsi_image *fp_tgsi_image_create(const struct pipe_image_view *views);
+struct tgsi_buffer *fp_tgsi_buffer_create(const struct pipe_shader_buffer *buffers);
 void fp_so_release(struct fp_context *fp);
 
 /* fp_context.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */

@@ -111,9 +111,12 @@ bool fp_format_samplable(enum pipe_format format)
    const struct util_format_description *desc = util_format_description(format);
    if (!desc || format == PIPE_FORMAT_NONE)
       return false;
-   if (desc->colorspace == UTIL_FORMAT_COLORSPACE_ZS)
-      return util_format_has_depth(desc) &&
-             util_format_unpack_description(format)->unpack_z_float != NULL;
+   if (desc->colorspace == UTIL_FORMAT_COLORSPACE_ZS) {
+      const struct util_format_unpack_description *u = util_format_unpack_description(format);
+      if (util_format_has_depth(desc))
+         return u->unpack_z_float != NULL;
+      return u->unpack_s_8uint != NULL;   /* stencil texturing: the index as a uint */
+   }
    if (desc->colorspace == UTIL_FORMAT_COLORSPACE_YUV ||
        desc->layout == UTIL_FORMAT_LAYOUT_PLANAR2 ||
        desc->layout == UTIL_FORMAT_LAYOUT_PLANAR3)

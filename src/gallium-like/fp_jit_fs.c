@@ -390,6 +390,15 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
          return false;
       }
    }
+   /* textureGather: tgsi_to_nir has no TG4 (it aborts) */
+   if (info->opcode_count[TGSI_OPCODE_TG4])
+      return false;
+   /* texelFetch from multisampled textures: interpreted (the compiled
+    * code's fetch has no sample operand) */
+   for (unsigned i = 0; i < PIPE_MAX_SHADER_SAMPLER_VIEWS; i++)
+      if (info->sampler_targets[i] == TGSI_TEXTURE_2D_MSAA ||
+          info->sampler_targets[i] == TGSI_TEXTURE_2D_ARRAY_MSAA)
+         return false;
    for (unsigned i = 0; i < info->num_outputs; i++) {
       switch (info->output_semantic_name[i]) {
       case TGSI_SEMANTIC_COLOR:

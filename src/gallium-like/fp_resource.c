@@ -250,7 +250,6 @@ void fp_init_context_resource_funcs(struct pipe_context *pipe)
    pipe->buffer_subdata = u_default_buffer_subdata;
    pipe->texture_subdata = u_default_texture_subdata;
    pipe->clear_buffer = u_default_clear_buffer;
-   pipe->clear_texture = util_clear_texture;
    pipe->create_surface = fp_create_surface;
    pipe->surface_destroy = fp_surface_destroy;
 }

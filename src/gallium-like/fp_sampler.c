@@ -73,10 +73,13 @@ void fp_init_sampler_view(struct fp_sampler_view *v)
    const struct util_format_description *d = util_format_description(f);
    v->zs = d && d->colorspace == UTIL_FORMAT_COLORSPACE_ZS;
    v->fetch = v->zs ? NULL : (void *)util_format_fetch_rgba_func(f);
+   /* A stencil view (GL ES 3.1 stencil texturing: X24S8, S8X24, X32_S8X24,
+    * S8) gives the stencil index as an unsigned integer. */
+   v->stencil = v->zs && !util_format_has_depth(d) && util_format_has_stencil(d);
    if (v->zs && !util_format_has_depth(d))
-      v->zs = false;   /* stencil-only sampling: not offered, reads zero */
+      v->zs = false;
    v->is_unorm = util_format_is_unorm(f);
-   v->integer = util_format_is_pure_integer(f);
+   v->integer = util_format_is_pure_integer(f) || v->stencil;
    v->is_snorm = util_format_is_snorm(f);
    v->bw = d ? d->block.width : 1;
    v->bh = d ? d->block.height : 1;
@@ -107,6 +110,18 @@ static void fp_fetch_depth(const struct tex_view_desc *d, const struct tex_level
    util_format_unpack_z_float(v->base.format, &out[0], fp_texel_ptr(v, lv, x, y, z), 1);
    out[1] = out[2] = out[0];
    out[3] = 1.0f;
+}
+
+static void fp_fetch_stencil(const struct tex_view_desc *d, const struct tex_level *lv, int x,
+                             int y, int z, float out[4])
+{
+   const struct fp_sampler_view *v = d->fetch_ctx;
+   uint8_t s;
+   util_format_unpack_s_8uint(v->base.format, &s, fp_texel_ptr(v, lv, x, y, z), 1);
+   union { uint32_t u; float f; } c[2] = { { s }, { 1 } };
+   out[0] = c[0].f;
+   out[1] = out[2] = 0.0f;
+   out[3] = c[1].f;
 }
 
 static void fp_fetch_none(const struct tex_view_desc *d, const struct tex_level *lv, int x, int y,
@@ -161,13 +176,16 @@ static void fp_view_desc(const struct fp_sampler_view *fv, struct tex_view_desc 
    memset(d, 0, sizeof(*d));
    d->target = fp_tex_target(v->target);
    d->format = fv->zs ? TEX_FMT_CALLBACK : fp_tex_format(v->format);
-   d->fetch = fv->zs ? fp_fetch_depth : fv->fetch ? fp_fetch_util : fp_fetch_none;
+   d->fetch = fv->zs ? fp_fetch_depth : fv->stencil ? fp_fetch_stencil
+              : fv->fetch ? fp_fetch_util : fp_fetch_none;
    d->fetch_ctx = fv;
    d->depth = fv->zs;
    const unsigned first = v->u.tex.first_level;
    const unsigned last = MAX2(MIN2(v->u.tex.last_level, t->last_level), first);
    d->num_levels = MIN2(last - first + 1, TEX_MAX_LEVELS);
-   const unsigned layer0 = t->target == PIPE_TEXTURE_3D ? 0 : v->u.tex.first_layer;
+   /* a multisampled layer is its samples' planes */
+   const unsigned layer0 = t->target == PIPE_TEXTURE_3D
+                              ? 0 : v->u.tex.first_layer * fp_resource_samples(t);
    for (unsigned l = 0; l < d->num_levels; l++) {
       const unsigned lev = first + l;
       struct tex_level *lv = &d->level[l];
@@ -415,6 +433,15 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
             co[a][p] += k;
       }
    }
+   if (control == TGSI_SAMPLER_GATHER) {
+      /* tgsi_exec passes the component in the LOD operand's bits */
+      union { float f; uint32_t u; } comp = { c1[0] };
+      ts->quads++;
+      ts->texels += 4 * 4;
+      tex_unit_gather(u, &q, comp.u & 3, rgba);
+      fp_tex_stats(ts);
+      return;
+   }
    fp_unit_sample(ts, u, &q, 1, control, (float(*)[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])rgba);
 }
 
@@ -471,6 +498,30 @@ static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned s
    }
 }
 
+/* texelFetch of a multisampled view (sampler2DMS, sampler2DMSArray): the
+ * LOD operand is the sample; sample s of layer l is plane l * samples + s
+ * (fp_resource.h).  A sample out of range reads zero. */
+static void fp_texel_ms(struct tex_view_desc *vd, unsigned samples, const int i[TGSI_QUAD_SIZE],
+                        const int j[TGSI_QUAD_SIZE], const int k[TGSI_QUAD_SIZE],
+                        const int sample[TGSI_QUAD_SIZE], const int8_t offset[3],
+                        enum pipe_texture_target target, float rgba[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])
+{
+   int x[TGSI_QUAD_SIZE], y[TGSI_QUAD_SIZE], z[TGSI_QUAD_SIZE], level[TGSI_QUAD_SIZE];
+   const int layers = target == PIPE_TEXTURE_2D_ARRAY ? vd->layers : 1;
+   vd->target = TEX_TARGET_2D_ARRAY;
+   vd->layers = layers * (int)samples;
+   vd->num_levels = 1;
+   for (unsigned p = 0; p < TGSI_QUAD_SIZE; p++) {
+      const int layer = target == PIPE_TEXTURE_2D_ARRAY ? k[p] : 0;
+      x[p] = i[p] + offset[0];
+      y[p] = j[p] + offset[1];
+      z[p] = layer * (int)samples + sample[p];
+      level[p] = sample[p] >= 0 && sample[p] < (int)samples && layer >= 0 && layer < layers
+                    ? 0 : -1;
+   }
+   tex_view_texel(vd, x, y, z, level, rgba);
+}
+
 static void fp_tgsi_get_texel(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                               const int i[TGSI_QUAD_SIZE], const int j[TGSI_QUAD_SIZE],
                               const int k[TGSI_QUAD_SIZE], const int lod[TGSI_QUAD_SIZE],
@@ -487,6 +538,11 @@ static void fp_tgsi_get_texel(struct tgsi_sampler *tgsi_sampler, const unsigned 
    struct tex_view_desc vd;
    fp_view_desc(fv, &vd);
    int x[TGSI_QUAD_SIZE], y[TGSI_QUAD_SIZE], z[TGSI_QUAD_SIZE];
+   const unsigned samples = fp_resource_samples(fv->base.texture);
+   if (samples > 1) {
+      fp_texel_ms(&vd, samples, i, j, k, lod, offset, fv->base.target, rgba);
+      return;
+   }
    for (unsigned p = 0; p < TGSI_QUAD_SIZE; p++) {
       x[p] = i[p] + offset[0];
       y[p] = j[p] + offset[1];

@@ -116,7 +116,22 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_CLIP_HALFZ:               /* draw clips and maps z in [0, w] */
    case PIPE_CAP_STREAM_OUTPUT_PAUSE_RESUME:        /* draw's stream output (fp_so.c) */
    case PIPE_CAP_STREAM_OUTPUT_INTERLEAVE_BUFFERS:
+   case PIPE_CAP_TEXTURE_MULTISAMPLE:      /* the model's 4-sample planes, texelFetch */
+   case PIPE_CAP_COMPUTE:                  /* tgsi_exec (fp_compute.c) */
+   case PIPE_CAP_FRAMEBUFFER_NO_ATTACHMENT:
+   case PIPE_CAP_BUFFER_MAP_PERSISTENT_COHERENT:   /* maps are the storage itself */
+   case PIPE_CAP_CLEAR_TEXTURE:
       return 1;
+   case PIPE_CAP_ESSL_FEATURE_LEVEL:
+      return 310;   /* GL ES 3.1 (docs/compute.md) */
+   case PIPE_CAP_MAX_TEXTURE_GATHER_COMPONENTS:
+      return 4;     /* the unit's bilinear footprint (tex_gather.c) */
+   case PIPE_CAP_MIN_TEXTURE_GATHER_OFFSET:
+      return -8;
+   case PIPE_CAP_MAX_TEXTURE_GATHER_OFFSET:
+      return 7;
+   case PIPE_CAP_SHADER_BUFFER_OFFSET_ALIGNMENT:
+      return 16;
    case PIPE_CAP_MAX_STREAM_OUTPUT_BUFFERS:
       return PIPE_MAX_SO_BUFFERS;
    case PIPE_CAP_MAX_STREAM_OUTPUT_SEPARATE_COMPONENTS:
@@ -124,10 +139,8 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 16 * 4;
    case PIPE_CAP_ALPHA_TEST:                 /* st lowers it into the shader */
    case PIPE_CAP_SEAMLESS_CUBE_MAP:
-   case PIPE_CAP_TEXTURE_MULTISAMPLE:
    case PIPE_CAP_TEXTURE_BUFFER_OBJECTS:
    case PIPE_CAP_SHADER_STENCIL_EXPORT:
-   case PIPE_CAP_COMPUTE:
    case PIPE_CAP_SHAREABLE_SHADERS:         /* draw's shaders are per context */
    case PIPE_CAP_ACCELERATED:
    case PIPE_CAP_UMA:
@@ -213,6 +226,40 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
           param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
          return 0;
       return draw_get_shader_param_no_llvm(shader, param);
+   case PIPE_SHADER_COMPUTE:
+      if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
+          param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
+         return 16;
+      return tgsi_exec_get_shader_param(param);
+   default:
+      return 0;
+   }
+}
+
+/* A work group of up to 1024 invocations, as softpipe's: tgsi_exec runs
+ * them four by four (fp_compute.c). */
+static int fp_get_compute_param(struct pipe_screen *screen, enum pipe_shader_ir ir,
+                                enum pipe_compute_cap param, void *ret)
+{
+   uint64_t *v = ret;
+   (void)screen; (void)ir;
+   switch (param) {
+   case PIPE_COMPUTE_CAP_MAX_GRID_SIZE:
+      if (v)
+         v[0] = v[1] = v[2] = 65535;
+      return 3 * sizeof(uint64_t);
+   case PIPE_COMPUTE_CAP_MAX_BLOCK_SIZE:
+      if (v)
+         v[0] = v[1] = v[2] = 1024;
+      return 3 * sizeof(uint64_t);
+   case PIPE_COMPUTE_CAP_MAX_THREADS_PER_BLOCK:
+      if (v)
+         v[0] = 1024;
+      return sizeof(uint64_t);
+   case PIPE_COMPUTE_CAP_MAX_LOCAL_SIZE:
+      if (v)
+         v[0] = 32768;
+      return sizeof(uint64_t);
    default:
       return 0;
    }
@@ -244,6 +291,22 @@ static float fp_get_paramf(struct pipe_screen *screen, enum pipe_capf param)
    }
 }
 
+/* Images of compute shaders: plain colour formats util_format packs and
+ * unpacks, one sample (fp_image.c). */
+static bool fp_image_format(enum pipe_format format, const struct util_format_description *desc)
+{
+   const struct util_format_pack_description *pack = util_format_pack_description(format);
+   const struct util_format_unpack_description *unpack = util_format_unpack_description(format);
+   if (desc->layout != UTIL_FORMAT_LAYOUT_PLAIN || desc->colorspace == UTIL_FORMAT_COLORSPACE_ZS ||
+       !pack || !unpack || !unpack->unpack_rgba)
+      return false;
+   if (util_format_is_pure_uint(format))
+      return pack->pack_rgba_uint != NULL;
+   if (util_format_is_pure_sint(format))
+      return pack->pack_rgba_sint != NULL;
+   return pack->pack_rgba_float != NULL;
+}
+
 static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format format,
                                    enum pipe_texture_target target, unsigned sample_count,
                                    unsigned storage_sample_count, unsigned bind)
@@ -253,18 +316,23 @@ static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format 
 
    if (!desc)
       return false;
-   /* Multisampled: colour and depth/stencil surfaces of RAST_MSAA_SAMPLES
-    * samples a pixel, drawn by the model (msaa.c), resolved by blits.
-    * Multisampled textures (sampler2DMS) are GL ES 3.1: not offered. */
+   /* Multisampled: colour and depth/stencil surfaces and 2-D (array)
+    * textures of RAST_MSAA_SAMPLES samples a pixel, drawn by the model
+    * (msaa.c), resolved by blits, read by texelFetch (fp_sampler.c). */
    const unsigned samples = MAX2(1, sample_count);
    if (samples != MAX2(1, storage_sample_count))
       return false;
    if (samples != 1) {
       if (samples != RAST_MSAA_SAMPLES ||
-          (target != PIPE_TEXTURE_2D && target != PIPE_TEXTURE_RECT) ||
-          (bind & ~(PIPE_BIND_RENDER_TARGET | PIPE_BIND_DEPTH_STENCIL)))
+          (target != PIPE_TEXTURE_2D && target != PIPE_TEXTURE_RECT &&
+           target != PIPE_TEXTURE_2D_ARRAY) ||
+          (bind & ~(PIPE_BIND_RENDER_TARGET | PIPE_BIND_DEPTH_STENCIL | PIPE_BIND_SAMPLER_VIEW)))
          return false;
    }
+
+   /* a framebuffer without attachments: its sample counts */
+   if (format == PIPE_FORMAT_NONE)
+      return !(bind & ~PIPE_BIND_RENDER_TARGET);
 
    if (bind & (PIPE_BIND_DISPLAY_TARGET | PIPE_BIND_SCANOUT | PIPE_BIND_SHARED)) {
       if (!winsys->is_displaytarget_format_supported(winsys, bind, format))
@@ -278,7 +346,7 @@ static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format 
       if (target == PIPE_BUFFER || !fp_format_samplable(format))
          return false;
    }
-   if (bind & (PIPE_BIND_SHADER_IMAGE | PIPE_BIND_SHADER_BUFFER))
+   if ((bind & PIPE_BIND_SHADER_IMAGE) && !fp_image_format(format, desc))
       return false;
    if (target != PIPE_BUFFER && desc->nr_channels == 3 && desc->is_array &&
        (bind & (PIPE_BIND_RENDER_TARGET | PIPE_BIND_SAMPLER_VIEW)) &&
@@ -384,6 +452,7 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
    s->base.get_param = fp_get_param;
    s->base.get_shader_param = fp_get_shader_param;
    s->base.get_paramf = fp_get_paramf;
+   s->base.get_compute_param = fp_get_compute_param;
    s->base.get_timestamp = fp_get_timestamp;
    fp_init_screen_query_functions(&s->base);
    s->base.is_format_supported = fp_is_format_supported;

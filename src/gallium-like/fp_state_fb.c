@@ -85,6 +85,9 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
          rfb.samples = MAX2(rfb.samples, fp_resource_samples(fb->zsbuf->texture));
       }
    }
+   /* no attachments (GL ES 3.1): the framebuffer's own sample count */
+   if (!rfb.samples && fb->samples > 1)
+      rfb.samples = fb->samples == RAST_MSAA_SAMPLES ? RAST_MSAA_SAMPLES : 1;
    fp->fb_samples = MAX2(rfb.samples, 1);
    rast_set_framebuffer(fp->rast, &rfb);
    fp_set_polygon_offset_unit(fp, fb->zsbuf ? fb->zsbuf->format : PIPE_FORMAT_NONE);

@@ -233,6 +233,14 @@ void tex_unit_sample2(const struct tex_unit *u, const struct tex_quad q[2],
 void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
                              enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
 
+/* textureGather (tex_gather.c): channel `comp` (after the swizzle; for a
+ * depth view with comparison, the comparison) of the four texels of the
+ * base level's bilinear footprint, in GL's order: rgba[0] = (i0, j1),
+ * [1] = (i1, j1), [2] = (i1, j0), [3] = (i0, j0).  2-D, 2-D array and
+ * cube views. */
+void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                     float rgba[4][TEX_QUAD]);
+
 /* texelFetch: integer coordinates, level relative to the view; outside
  * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */
 void tex_view_texel(const struct tex_view_desc *v, const int x[TEX_QUAD], const int y[TEX_QUAD],

@@ -199,3 +199,26 @@ tex_addr_fn tex_addr_choose(enum tex_wrap wrap, enum tex_filter filter)
 {
    return addr_table[wrap < TEX_WRAP_COUNT ? wrap : TEX_WRAP_CLAMP_TO_EDGE][filter != 0];
 }
+
+/* Whether the axis's wrap mode reflects coordinate c (the fold above took
+ * the mirrored side): the linear filter's i0 and i1 are then in
+ * decreasing coordinate order, which the filter does not mind but GL's
+ * gather order does.  The floor is the one the address unit already took
+ * (and counted): not counted again. */
+bool tex_addr_mirrored(const struct tex_unit *u, unsigned axis, ns_val c)
+{
+   struct ns_stats again = { 0 };
+   uint32_t unused;
+   switch (u->samp.wrap[axis]) {
+   case TEX_WRAP_MIRROR_REPEAT: {
+      const int64_t fl = u->ns->floor_frac(u->ns, c, &unused, 0, &again);
+      return (fl & 1) != 0;   /* odd periods, and [-1, 0) */
+   }
+   case TEX_WRAP_MIRROR_CLAMP:
+   case TEX_WRAP_MIRROR_CLAMP_TO_EDGE:
+   case TEX_WRAP_MIRROR_CLAMP_TO_BORDER:
+      return tex_ns_neg(u->kind, c);
+   default:
+      return false;
+   }
+}

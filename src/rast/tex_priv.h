@@ -4,6 +4,7 @@
 #ifndef FIXPIPE_TEX_PRIV_H
 #define FIXPIPE_TEX_PRIV_H
 
+#include <math.h>
 #include "rast/tex.h"
 #include "rast/tex_ns.h"
 
@@ -33,6 +34,16 @@ static inline int32_t tex_clamp_lod(const struct tex_unit *u, int32_t l)
    return l;
 }
 
+/* The array layer of a coordinate: GL's clamp(floor(layer + 0.5), 0,
+ * layers - 1), an integer path. */
+static inline int32_t tex_layer_of(const struct tex_unit *u, float l)
+{
+   float f = floorf(l + 0.5f);
+   if (!(f > 0.0f))
+      return 0;
+   return f >= (float)(u->view.layers - 1) ? u->view.layers - 1 : (int32_t)f;
+}
+
 /* Shadow comparison of the reference with a texel's depth. */
 static inline bool tex_compare(enum tex_func func, float ref, float d)
 {
@@ -57,6 +68,7 @@ static inline ns_val tex_ns_int(const struct tex_unit *u, int64_t i)
 
 /* tex_addr.c */
 tex_addr_fn tex_addr_choose(enum tex_wrap wrap, enum tex_filter filter);
+bool tex_addr_mirrored(const struct tex_unit *u, unsigned axis, ns_val c);
 
 /* tex_lod.c */
 int32_t tex_lod_diffs(const struct tex_unit *u, ns_val c[TEX_QUAD][3], unsigned dims);

@@ -106,14 +106,6 @@ unsigned tex_cube_face(const struct tex_unit *u, ns_val rx, ns_val ry, ns_val rz
    return face;
 }
 
-static int32_t layer_of(const struct tex_unit *u, float l)
-{
-   /* GL: clamp(floor(layer + 0.5), 0, layers - 1); an integer path. */
-   float f = floorf(l + 0.5f);
-   if (!(f > 0.0f))
-      return 0;
-   return f >= (float)(u->view.layers - 1) ? u->view.layers - 1 : (int32_t)f;
-}
 
 /* Implicit LOD of a cube quad, per pixel: the quad's direction differences
  * (numsys sub) projected onto each pixel's own face, exactly as explicit
@@ -202,7 +194,7 @@ void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
       if (u->dims > 2)
          c[p][2] = nsf(u, q->r[p]);
       if (u->view.target == TEX_TARGET_1D_ARRAY || u->view.target == TEX_TARGET_2D_ARRAY)
-         layer[p] = layer_of(u, q->layer[p]);
+         layer[p] = tex_layer_of(u, q->layer[p]);
    }
 
    switch (ctl) {

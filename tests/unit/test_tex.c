@@ -842,6 +842,108 @@ static void negative_fractions(void)
    CHECK(checked > 30000, "only %lu checked", checked);
 }
 
+/* textureGather: on a texture whose texel (x, y) holds x in red and y in
+ * green, gathering red and green gives the footprint's indices, which must
+ * be the reference LINEAR taps of each axis in GL's order, (i0, j1),
+ * (i1, j1), (i1, j0), (i0, j0), with i0 = wrap(floor(u - 1/2)) before the
+ * wrap reorders them (mirrored periods), and the border where the taps
+ * leave a border mode's texture.  Coordinates within a weight step of a
+ * texel boundary, where the unit rounds to the nearer footprint (its
+ * weight 0 there for the filter), are left out.  A depth view
+ * gathers the comparison of each tap. */
+static void gather(void)
+{
+   static const enum tex_wrap wraps[] = { TEX_WRAP_REPEAT, TEX_WRAP_CLAMP_TO_EDGE,
+                                          TEX_WRAP_CLAMP_TO_BORDER, TEX_WRAP_MIRROR_REPEAT,
+                                          TEX_WRAP_MIRROR_CLAMP_TO_EDGE };
+   static const int sizes[][2] = { { 8, 8 }, { 13, 7 }, { 1, 5 }, { 64, 3 } };
+   static uint8_t tex[64 * 8 * 4];
+   const struct numsys *ns = numsys_by_name("dfx24");
+   unsigned checked = 0, swapped = 0;
+   for (unsigned wi = 0; wi < sizeof(wraps) / sizeof(wraps[0]); wi++)
+      for (unsigned si = 0; si < sizeof(sizes) / sizeof(sizes[0]); si++) {
+         const int W = sizes[si][0], H = sizes[si][1];
+         for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+               uint8_t *t = &tex[(y * W + x) * 4];
+               t[0] = (uint8_t)x; t[1] = (uint8_t)y; t[2] = 7; t[3] = 255;
+            }
+         struct tex_view_desc v;
+         struct tex_sampler_desc sd;
+         struct tex_unit u;
+         view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, tex, W, H, 1);
+         samp_init(&sd, wraps[wi], TEX_FILTER_NEAREST);   /* gather ignores the filter */
+         sd.border[0] = sd.border[1] = 200.0f / 255.0f;
+         tex_unit_bind(&u, ns, &v, &sd, &st);
+         for (int n = 0; n < 400; n++) {
+            struct tex_quad q;
+            memset(&q, 0, sizeof(q));
+            for (unsigned p = 0; p < TEX_QUAD; p++) {
+               q.s[p] = (float)(t_rand() * 5.0 - 2.0);
+               q.t[p] = (float)(t_rand() * 5.0 - 2.0);
+            }
+            float r[4][TEX_QUAD], g[4][TEX_QUAD];
+            tex_unit_gather(&u, &q, 0, r);
+            tex_unit_gather(&u, &q, 1, g);
+            for (unsigned p = 0; p < TEX_QUAD; p++) {
+               struct ref_taps a = ref_axis(wraps[wi], true, q.s[p], W, true);
+               struct ref_taps b = ref_axis(wraps[wi], true, q.t[p], H, true);
+               /* the footprint is the filter's: decided on the weight
+                * grid (2^-TEX_WEIGHT_BITS texel), rounded to nearest */
+               const double near = 1.0 / TEX_WEIGHT_ONE + 1e-4;
+               if (fabs(a.u - floor(a.u + 0.5)) < near || fabs(b.u - floor(b.u + 0.5)) < near)
+                  continue;
+               const int ix[4] = { a.i[0], a.i[1], a.i[1], a.i[0] };
+               const int iy[4] = { b.i[1], b.i[1], b.i[0], b.i[0] };
+               swapped += a.i[0] > a.i[1] || b.i[0] > b.i[1];
+               for (unsigned k = 0; k < 4; k++) {
+                  const bool border = ix[k] < 0 || iy[k] < 0;
+                  const int want_x = border ? 200 : ix[k], want_y = border ? 200 : iy[k];
+                  const int got_x = (int)lrintf(r[k][p] * 255.0f);
+                  const int got_y = (int)lrintf(g[k][p] * 255.0f);
+                  CHECK(got_x == want_x && got_y == want_y,
+                        "gather %s %dx%d (s, t) = (%.6f, %.6f) texel %u: got (%d, %d) want (%d, %d)",
+                        wrap_name[wraps[wi]], W, H, (double)q.s[p], (double)q.t[p], k, got_x,
+                        got_y, want_x, want_y);
+               }
+               checked++;
+            }
+         }
+      }
+   /* a depth view: each tap compared, 1 where ref <= depth */
+   for (int i = 0; i < 16; i++)
+      depth_tex[i / 4 * 8 + i % 4] = (float)i / 16.0f;
+   struct tex_view_desc v;
+   struct tex_sampler_desc sd;
+   struct tex_unit u;
+   view_1level(&v, TEX_TARGET_2D, TEX_FMT_CALLBACK, NULL, 4, 4, 1);
+   v.fetch = depth_fetch;
+   v.depth = true;
+   samp_init(&sd, TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_NEAREST);
+   sd.compare = true;
+   sd.func = TEX_FUNC_LEQUAL;
+   tex_unit_bind(&u, ns, &v, &sd, &st);
+   struct tex_quad q;
+   memset(&q, 0, sizeof(q));
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      q.s[p] = 0.5f;     /* u = 2: taps x 1 and 2 */
+      q.t[p] = 0.5f;     /* rows 1 and 2 */
+      q.ref[p] = (float)(4 + 2 * p) / 16.0f;
+   }
+   float c[4][TEX_QUAD];
+   tex_unit_gather(&u, &q, 2, c);
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      const int tx[4] = { 1, 2, 2, 1 }, ty[4] = { 2, 2, 1, 1 };
+      for (unsigned k = 0; k < 4; k++) {
+         const float d = depth_tex[ty[k] * 8 + tx[k]];
+         CHECK(c[k][p] == (q.ref[p] <= d ? 1.0f : 0.0f), "shadow gather pixel %u texel %u", p, k);
+      }
+   }
+   printf("  gather: %u footprints against the reference (%u with a mirrored axis)\n", checked,
+          swapped);
+   CHECK(checked > 10000 && swapped > 500, "gather: too few footprints checked");
+}
+
 int main(void)
 {
    wrap_exact_dfx24();
@@ -863,6 +965,7 @@ int main(void)
    border_colour();
    formats();
    texel_fetch_and_swizzle();
+   gather();
    printf("  range events counted: sat %llu flush %llu\n", (unsigned long long)st.sat,
           (unsigned long long)st.flush);
    return t_summary("tex");

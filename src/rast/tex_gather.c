@@ -1,0 +1,66 @@
+/*
+ * Gather (GL ES 3.1 textureGather): one channel of each of the four texels
+ * a bilinear tap of the view's base level reads, unfiltered.  The address
+ * unit is the LINEAR filter's (the sampler's wrap modes, the number
+ * system's coordinates and texel offset), so a gather returns exactly the
+ * texels the filter would have blended, and a depth view compares each of
+ * them with the reference as the filter's taps do.
+ */
+#include "rast/tex_priv.h"
+
+static inline ns_val nsf(const struct tex_unit *u, float v)
+{
+   return tex_ns_coord(u->ns, u->kind, v, u->stats);
+}
+
+/* One channel of a texel as the swizzle gives it. */
+static inline float channel(const struct tex_unit *u, const float t[4], unsigned comp)
+{
+   const unsigned s = u->view.swizzle[comp & 3];
+   return s < 4 ? t[s] : s == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
+}
+
+void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                     float rgba[4][TEX_QUAD])
+{
+   const struct tex_level *lv = &u->view.level[0];
+   const bool cube = u->view.target == TEX_TARGET_CUBE;
+   const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
+   /* a depth view's taps give the comparison in every colour channel */
+   if (u->samp.compare)
+      comp = 0;
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      ns_val s, t;
+      int layer = 0;
+      if (cube) {
+         layer = (int)tex_cube_face(u, nsf(u, q->s[p]), nsf(u, q->t[p]), nsf(u, q->r[p]), &s, &t);
+      } else {
+         s = nsf(u, q->s[p]);
+         t = nsf(u, q->t[p]);
+         if (array)
+            layer = tex_layer_of(u, q->layer[p]);
+      }
+      struct tex_addr A, B;
+      u->addr[TEX_FILTER_LINEAR][0](u, &u->axis[0][0], s, &A);
+      u->addr[TEX_FILTER_LINEAR][1](u, &u->axis[0][1], t, &B);
+      /* GL orders the footprint by the coordinate before the wrap */
+      if (tex_addr_mirrored(u, 0, s)) {
+         const int32_t i = A.i0;
+         A.i0 = A.i1;
+         A.i1 = i;
+      }
+      if (tex_addr_mirrored(u, 1, t)) {
+         const int32_t j = B.i0;
+         B.i0 = B.i1;
+         B.i1 = j;
+      }
+      /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
+      const int32_t x[4] = { A.i0, A.i1, A.i1, A.i0 };
+      const int32_t y[4] = { B.i1, B.i1, B.i0, B.i0 };
+      for (unsigned k = 0; k < 4; k++) {
+         float texel[4];
+         u->tap(u, lv, x[k], y[k], layer, q->ref[p], texel);
+         rgba[k][p] = u->samp.compare ? texel[0] : channel(u, texel, comp);
+      }
+   }
+}

@@ -1,0 +1,406 @@
+/*
+ * GL ES 3.1 (--case NAME, 64x64 unless --size says):
+ *
+ *   compute      a compute shader of 64-invocation groups: each reads its
+ *                group's 64 words of a storage buffer into shared memory,
+ *                waits at a barrier, writes s[63 - i] + s[(i + 1) % 64] back
+ *                and counts the odd results in an atomic counter; the
+ *                words are then drawn as a texture through the model
+ *   image        a compute shader writes an RGBA8 image from an r32ui one
+ *                (imageLoad, imageStore, imageAtomicAdd), drawn as above
+ *   gather       textureGather of a 16x16 random texture (green, then
+ *                alpha with a texel offset, then a depth texture with a
+ *                comparison), a band each, through the modeled unit
+ *   ms-fetch     random flat triangles into a 4-sample texture, then each
+ *                pixel shows texelFetch of sample (x + y) % 4
+ *   stencil-tex  overlapping triangles counted in a depth/stencil texture,
+ *                then sampled as GL_STENCIL_INDEX (usampler2D)
+ *
+ * Self-checks (errors fail the program on any driver): GL ES 3.1 or later,
+ * the compute case's words and counter against the CPU's, the image case's
+ * atomic sums, and the samples of a pixel a triangle edge crosses differ.
+ */
+#include "e2e_common.h"
+
+#include <GLES3/gl31.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int errors;
+
+static void check(bool ok, const char *what)
+{
+   if (!ok) {
+      printf("error: %s\n", what);
+      errors++;
+   }
+}
+
+static const char *vs =
+   "#version 310 es\n"
+   "in vec4 a_pos;\n"
+   "in vec2 a_uv;\n"
+   "out vec2 v_uv;\n"
+   "void main() { v_uv = a_uv; gl_Position = a_pos; }\n";
+
+static GLuint program(const char *fs)
+{
+   static const char *const attr[] = { "a_pos", "a_uv", NULL };
+   return fp_gl_program(vs, fs, attr);
+}
+
+/* A rectangle of clip space, texture coordinates u0..u1 over it. */
+static void draw_rect(float x0, float y0, float x1, float y1, float u0, float v0, float u1,
+                      float v1)
+{
+   const float pos[] = { x0, y0, 0, 1, x1, y0, 0, 1, x0, y1, 0, 1, x1, y1, 0, 1 };
+   const float uv[] = { u0, v0, u1, v0, u0, v1, u1, v1 };
+   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, uv, 2);
+}
+
+/* RGBA8 words as a size x size NEAREST texture over the whole target. */
+static void show_words(const uint32_t *words, int size)
+{
+   GLuint tex;
+   glGenTextures(1, &tex);
+   glBindTexture(GL_TEXTURE_2D, tex);
+   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, words);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   glUseProgram(e2e_texture_program());
+   draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+   glDeleteTextures(1, &tex);
+}
+
+static void case_compute(int size)
+{
+   static const char *cs =
+      "#version 310 es\n"
+      "layout(local_size_x = 64) in;\n"
+      "layout(std430, binding = 0) buffer Data { uint v[]; } data;\n"
+      "layout(binding = 0, offset = 0) uniform atomic_uint odd;\n"
+      "shared uint s[64];\n"
+      "void main() {\n"
+      "   uint i = gl_LocalInvocationID.x, base = gl_WorkGroupID.x * 64u;\n"
+      "   s[i] = data.v[base + i];\n"
+      "   barrier();\n"
+      "   uint r = s[63u - i] + s[(i + 1u) % 64u];\n"
+      "   data.v[base + i] = r;\n"
+      "   if ((r & 1u) == 1u) atomicCounterIncrement(odd);\n"
+      "}\n";
+   const int n = size * size;
+   uint32_t *in = malloc((size_t)n * 4), *want = malloc((size_t)n * 4);
+   if (!in || !want)
+      fp_die("out of memory");
+   uint32_t rng = 0xc0de3101u, odd = 0;
+   for (int k = 0; k < n; k++)
+      in[k] = e2e_rand(&rng);
+   for (int k = 0; k < n; k++) {
+      const int g = k / 64 * 64, i = k % 64;
+      want[k] = in[g + 63 - i] + in[g + (i + 1) % 64];
+      odd += want[k] & 1;
+   }
+   GLuint buf[2];
+   glGenBuffers(2, buf);
+   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
+   glBufferData(GL_SHADER_STORAGE_BUFFER, n * 4, in, GL_DYNAMIC_COPY);
+   const uint32_t zero = 0;
+   glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, buf[1]);
+   glBufferData(GL_ATOMIC_COUNTER_BUFFER, 4, &zero, GL_DYNAMIC_COPY);
+   glUseProgram(fp_gl_compute_program(cs));
+   glDispatchCompute((GLuint)(n / 64), 1, 1);
+   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT);
+
+   const uint32_t *got = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, n * 4, GL_MAP_READ_BIT);
+   int wrong = 0;
+   for (int k = 0; got && k < n; k++)
+      wrong += got[k] != want[k];
+   check(got && !wrong, "storage buffer words differ from the CPU's");
+   if (got)
+      memcpy(in, got, (size_t)n * 4);
+   glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+   const uint32_t *count = glMapBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, 4, GL_MAP_READ_BIT);
+   printf("stat: wrong_words=%d odd=%u counter=%u\n", wrong, odd, count ? *count : 0);
+   check(count && *count == odd, "the atomic counter is not the number of odd words");
+   glUnmapBuffer(GL_ATOMIC_COUNTER_BUFFER);
+   for (int k = 0; k < n; k++)
+      in[k] |= 0xff000000u;   /* opaque */
+   show_words(in, size);
+   glDeleteBuffers(2, buf);
+   free(in);
+   free(want);
+}
+
+static void case_image(int size)
+{
+   static const char *cs =
+      "#version 310 es\n"
+      "#extension GL_OES_shader_image_atomic : require\n"
+      "layout(local_size_x = 8, local_size_y = 8) in;\n"
+      "layout(r32ui, binding = 0) uniform highp uimage2D src;\n"
+      "layout(rgba8, binding = 1) writeonly uniform highp image2D dst;\n"
+      "layout(r32ui, binding = 2) uniform highp uimage2D sums;\n"
+      "void main() {\n"
+      "   ivec2 p = ivec2(gl_GlobalInvocationID.xy);\n"
+      "   uint v = imageLoad(src, p).x;\n"
+      "   imageAtomicAdd(sums, ivec2(p.x % 4, 0), v & 255u);\n"
+      "   imageStore(dst, p, vec4(float(v & 255u), float((v >> 8) & 255u),\n"
+      "                           float(p.x * 4), 255.0) / 255.0);\n"
+      "}\n";
+   const int n = size * size;
+   uint32_t *src = malloc((size_t)n * 4);
+   if (!src)
+      fp_die("out of memory");
+   uint32_t rng = 0x1a6e3101u, want[4] = { 0, 0, 0, 0 };
+   for (int k = 0; k < n; k++) {
+      src[k] = e2e_rand(&rng);
+      want[(k % size) % 4] += src[k] & 255;
+   }
+   GLuint tex[3];
+   glGenTextures(3, tex);
+   glBindTexture(GL_TEXTURE_2D, tex[0]);
+   glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, size, size);
+   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size, size, GL_RED_INTEGER, GL_UNSIGNED_INT, src);
+   glBindTexture(GL_TEXTURE_2D, tex[1]);
+   glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, size, size);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   glBindTexture(GL_TEXTURE_2D, tex[2]);
+   glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, 4, 1);
+   const uint32_t zero[4] = { 0, 0, 0, 0 };
+   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, zero);
+   glBindImageTexture(0, tex[0], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+   glBindImageTexture(1, tex[1], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+   glBindImageTexture(2, tex[2], 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+   glUseProgram(fp_gl_compute_program(cs));
+   glDispatchCompute((GLuint)(size / 8), (GLuint)(size / 8), 1);
+   glMemoryBarrier(GL_ALL_BARRIER_BITS);
+
+   /* the sums through a framebuffer read of the r32ui texture */
+   GLuint fbo;
+   uint32_t got[4 * 4] = { 0 };
+   glGenFramebuffers(1, &fbo);
+   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+   glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex[2], 0);
+   glReadPixels(0, 0, 4, 1, GL_RGBA_INTEGER, GL_UNSIGNED_INT, got);
+   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+   glDeleteFramebuffers(1, &fbo);
+   printf("stat: sums=%u,%u,%u,%u\n", got[0], got[4], got[8], got[12]);
+   for (int c = 0; c < 4; c++)
+      check(got[4 * c] == want[c], "imageAtomicAdd sums differ from the CPU's");
+
+   glBindTexture(GL_TEXTURE_2D, tex[1]);
+   glUseProgram(e2e_texture_program());
+   draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+   glDeleteTextures(3, tex);
+   free(src);
+}
+
+static void case_gather(int size)
+{
+   static const char *fs =
+      "#version 310 es\n"
+      "precision highp float;\n"
+      "uniform highp sampler2D u_tex;\n"
+      "uniform highp sampler2DShadow u_depth;\n"
+      "uniform int u_band;\n"
+      "in vec2 v_uv;\n"
+      "out vec4 o_color;\n"
+      "void main() {\n"
+      "   if (u_band == 0) o_color = textureGather(u_tex, v_uv, 1);\n"
+      "   else if (u_band == 1) o_color = textureGatherOffset(u_tex, v_uv, ivec2(-3, 2), 3);\n"
+      "   else o_color = textureGather(u_depth, v_uv, 0.5);\n"
+      "}\n";
+   enum { W = 16 };
+   uint32_t texels[W * W];
+   float depth[W * W];
+   uint32_t rng = 0x6a7e3101u;
+   for (int k = 0; k < W * W; k++) {
+      texels[k] = e2e_rand(&rng);
+      depth[k] = (float)e2e_rand_range(&rng, 0, 1000) / 1000.0f;
+   }
+   GLuint tex[2];
+   glGenTextures(2, tex);
+   glActiveTexture(GL_TEXTURE1);
+   glBindTexture(GL_TEXTURE_2D, tex[1]);
+   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, W, W, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                depth);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+   glActiveTexture(GL_TEXTURE0);
+   glBindTexture(GL_TEXTURE_2D, tex[0]);
+   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, W, W, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
+   GLuint p = program(fs);
+   glUseProgram(p);
+   glUniform1i(glGetUniformLocation(p, "u_tex"), 0);
+   glUniform1i(glGetUniformLocation(p, "u_depth"), 1);
+   GLint band = glGetUniformLocation(p, "u_band");
+   /* bands of a third each, edges on the sub-pixel grid (both drivers
+    * hold the vertices exactly); coordinates over more than the texture
+    * so that the wrap modes act, not on texel boundaries at pixel centres */
+   const int edge[4] = { 0, size / 3, 2 * size / 3, size };
+   for (int b = 0; b < 3; b++) {
+      glUniform1i(band, b);
+      draw_rect(-1, e2e_ndc(edge[b] * E2E_SUB, size), 1, e2e_ndc(edge[b + 1] * E2E_SUB, size),
+                -0.31f, -0.27f, 1.43f, 1.38f);
+   }
+   glDeleteTextures(2, tex);
+}
+
+/* A triangle with vertices on the sub-pixel grid inside the target. */
+static void random_triangle(uint32_t *rng, int size, float pos[12])
+{
+   for (int k = 0; k < 3; k++) {
+      pos[4 * k + 0] = e2e_ndc(e2e_rand_range(rng, 0, size * E2E_SUB), size);
+      pos[4 * k + 1] = e2e_ndc(e2e_rand_range(rng, 0, size * E2E_SUB), size);
+      pos[4 * k + 2] = 0.0f;
+      pos[4 * k + 3] = 1.0f;
+   }
+}
+
+/* Leaves the texture bound to unit 0 for the pass that reads it. */
+static void case_ms_fetch(int size)
+{
+   GLuint tex, fbo;
+   glGenTextures(1, &tex);
+   glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, tex);
+   glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, size, size, GL_TRUE);
+   glGenFramebuffers(1, &fbo);
+   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, tex, 0);
+   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
+         "the 4-sample texture FBO is not complete");
+   GLint samples = 0;
+   glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &samples);
+   check(samples == 4, "the texture does not have 4 samples");
+   glViewport(0, 0, size, size);
+   glClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+   glClear(GL_COLOR_BUFFER_BIT);
+   glUseProgram(e2e_color_program());
+   uint32_t rng = 0x3f5e3101u;
+   for (int t = 0; t < 20; t++) {
+      float pos[12], col[4];
+      random_triangle(&rng, size, pos);
+      for (int c = 0; c < 3; c++)
+         col[c] = (float)e2e_rand_range(&rng, 0, 255) / 255.0f;
+      col[3] = 1.0f;
+      e2e_draw(GL_TRIANGLES, 3, pos, NULL, col);
+   }
+   /* a pixel a vertical edge halves: its samples differ */
+   const float half[] = { e2e_ndc(0, size), -1, 0, 1, e2e_ndc(E2E_SUB / 2, size), -1, 0, 1,
+                          e2e_ndc(0, size), 1, 0, 1, e2e_ndc(E2E_SUB / 2, size), 1, 0, 1 };
+   const float red[4] = { 1, 0, 0, 1 };
+   e2e_draw(GL_TRIANGLE_STRIP, 4, half, NULL, red);
+   glDeleteFramebuffers(1, &fbo);
+}
+
+/* Leaves the texture bound to unit 0 for the pass that reads it. */
+static void case_stencil_tex(int size)
+{
+   GLuint tex, fbo;
+   glGenTextures(1, &tex);
+   glBindTexture(GL_TEXTURE_2D, tex);
+   glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH24_STENCIL8, size, size);
+   glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   glGenFramebuffers(1, &fbo);
+   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, tex, 0);
+   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
+         "the depth/stencil texture FBO is not complete");
+   glViewport(0, 0, size, size);
+   glClearStencil(0);
+   glClear(GL_STENCIL_BUFFER_BIT);
+   glEnable(GL_STENCIL_TEST);
+   glStencilFunc(GL_ALWAYS, 0, 0xff);
+   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+   glUseProgram(e2e_color_program());
+   uint32_t rng = 0x57e03101u;
+   const float white[4] = { 1, 1, 1, 1 };
+   for (int t = 0; t < 12; t++) {
+      float pos[12];
+      random_triangle(&rng, size, pos);
+      e2e_draw(GL_TRIANGLES, 3, pos, NULL, white);
+   }
+   glDisable(GL_STENCIL_TEST);
+   glDeleteFramebuffers(1, &fbo);
+}
+
+int main(int argc, char **argv)
+{
+   struct e2e_args a;
+   e2e_parse(&a, argc, argv, 64);
+   const char *c = e2e_opt(&a, "case", "");
+   struct fp_gl g;
+   e2e_begin(&g, &a);
+   GLint major = 0, minor = 0;
+   glGetIntegerv(GL_MAJOR_VERSION, &major);
+   glGetIntegerv(GL_MINOR_VERSION, &minor);
+   check(major * 10 + minor >= 31, "the context is not GL ES 3.1 or later");
+   if (errors) {
+      /* nothing more to try */
+   } else if (!strcmp(c, "compute")) {
+      case_compute(a.size);
+   } else if (!strcmp(c, "image")) {
+      case_image(a.size);
+   } else if (!strcmp(c, "gather")) {
+      case_gather(a.size);
+   } else if (!strcmp(c, "ms-fetch") || !strcmp(c, "stencil-tex")) {
+      const bool ms = !strcmp(c, "ms-fetch");
+      static const char *fs_ms =
+         "#version 310 es\n"
+         "precision highp float;\n"
+         "uniform highp sampler2DMS u_ms;\n"
+         "in vec2 v_uv;\n"
+         "out vec4 o_color;\n"
+         "void main() {\n"
+         "   ivec2 p = ivec2(gl_FragCoord.xy);\n"
+         "   o_color = texelFetch(u_ms, p, (p.x + p.y) % 4);\n"
+         "}\n";
+      static const char *fs_st =
+         "#version 310 es\n"
+         "precision highp float;\n"
+         "uniform highp usampler2D u_stencil;\n"
+         "in vec2 v_uv;\n"
+         "out vec4 o_color;\n"
+         "void main() {\n"
+         "   uint s = texelFetch(u_stencil, ivec2(gl_FragCoord.xy), 0).x;\n"
+         "   o_color = vec4(float(s * 40u % 256u) / 255.0, float(s) / 8.0, 0.0, 1.0);\n"
+         "}\n";
+      if (ms)
+         case_ms_fetch(a.size);
+      else
+         case_stencil_tex(a.size);
+      glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
+      glViewport(0, 0, a.size, a.size);
+      glUseProgram(program(ms ? fs_ms : fs_st));
+      draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+      if (ms) {
+         /* pixel (0, y) is half covered by the red strip: sample 0 (x 0.375)
+          * is red, sample 1 (0.875) is not */
+         unsigned char px[2][4];
+         glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px[0]);   /* sample 0 */
+         glReadPixels(0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px[1]);   /* sample 1 */
+         printf("stat: s0=%u,%u,%u s1=%u,%u,%u\n", px[0][0], px[0][1], px[0][2], px[1][0],
+                px[1][1], px[1][2]);
+         check(px[0][0] == 255 && px[0][1] == 0 && px[0][2] == 0, "sample 0 of the edge pixel is not red");
+         check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0), "sample 1 of the edge pixel is red");
+      }
+   } else {
+      fp_die("--case: compute, image, gather, ms-fetch or stencil-tex");
+   }
+   check(glGetError() == GL_NO_ERROR, "a GL error");
+   glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */
+   e2e_end(&g, &a, NULL);
+   return errors ? 1 : 0;
+}
