@@ -34,6 +34,10 @@ render() {
                  "$out/$name.cached.log" | awk '{ c += $1; h += $2 } END { print c + 0, h + 0 }')
     if [ "$1" -gt 0 ] && [ "$1" = "$2" ]; then
         pass "$name: $1 shaders compiled, all from the disk cache"
+    elif [ "$1" = 0 ] && [ "$2" = 0 ] && [ "$name" = es31-gather ]; then
+        # its one fragment shader gathers (TG4), which tgsi_to_nir cannot read:
+        # interpreted by design (fp_jit_shader_ok, docs/compute.md)
+        pass "$name: no shader compiled (textureGather stays interpreted)"
     else
         fail "$name: the cached run compiled $1 shaders, $2 from the disk cache"
         return 1
