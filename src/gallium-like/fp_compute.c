@@ -112,13 +112,7 @@ static void fp_launch_grid(struct pipe_context *pipe, const struct pipe_grid_inf
       return;
    struct tgsi_exec_machine **mach = CALLOC(n, sizeof(*mach));
    void *shared = cs->shared_size ? CALLOC(1, cs->shared_size) : NULL;
-   if (!mach || (cs->shared_size && !shared)) {
-      fprintf(stderr, "fixpipe: out of memory for a compute dispatch of %u invocations: "
-              "not run\n", bw * bh * bd);
-      FREE(mach);
-      FREE(shared);
-      return;
-   }
+   bool ok = mach && (shared || !cs->shared_size);
 
    struct tgsi_sampler *sampler = fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_COMPUTE]);
    const void *constants[PIPE_MAX_CONSTANT_BUFFERS];
@@ -132,14 +126,13 @@ static void fp_launch_grid(struct pipe_context *pipe, const struct pipe_grid_inf
    const int grid_v[3] = { (int)grid[0], (int)grid[1], (int)grid[2] };
    const int block_v[3] = { (int)bw, (int)bh, (int)bd };
    unsigned k = 0;
-   bool ok = true;
-   for (unsigned z = 0; z < bd; z++)
-      for (unsigned y = 0; y < bh; y++)
-         for (unsigned x = 0; x < bw; x += TGSI_QUAD_SIZE) {
+   for (unsigned z = 0; z < bd && ok; z++)
+      for (unsigned y = 0; y < bh && ok; y++)
+         for (unsigned x = 0; x < bw && ok; x += TGSI_QUAD_SIZE) {
             struct tgsi_exec_machine *m = mach[k++] = tgsi_exec_machine_create(PIPE_SHADER_COMPUTE);
             if (!m) {
                ok = false;
-               continue;
+               break;
             }
             m->LocalMem = shared;
             m->LocalMemSize = cs->shared_size;
@@ -164,13 +157,12 @@ static void fp_launch_grid(struct pipe_context *pipe, const struct pipe_grid_inf
                const int group[3] = { (int)gx, (int)gy, (int)gz };
                run_group(mach, n, group);
             }
-      fp->cs_invocations += (uint64_t)grid[0] * grid[1] * grid[2] * bw * bh * bd;
    } else {
       fprintf(stderr, "fixpipe: out of memory for a compute dispatch of %u invocations: "
               "not run\n", bw * bh * bd);
    }
 
-   for (unsigned i = 0; i < n; i++) {
+   for (unsigned i = 0; mach && i < n; i++) {
       if (!mach[i])
          continue;
       tgsi_exec_machine_bind_shader(mach[i], NULL, NULL, NULL, NULL);
@@ -188,12 +180,8 @@ static void fp_set_shader_buffers(struct pipe_context *pipe, enum pipe_shader_ty
    (void)writable;
    if (shader != PIPE_SHADER_COMPUTE)
       return;   /* the other stages have none (fp_screen.c) */
-   for (unsigned i = 0; i < count && start + i < PIPE_MAX_SHADER_BUFFERS; i++) {
-      struct pipe_shader_buffer *sb = &fp->ssbo[start + i];
-      pipe_resource_reference(&sb->buffer, buffers ? buffers[i].buffer : NULL);
-      sb->buffer_offset = buffers ? buffers[i].buffer_offset : 0;
-      sb->buffer_size = buffers ? buffers[i].buffer_size : 0;
-   }
+   for (unsigned i = 0; i < count && start + i < PIPE_MAX_SHADER_BUFFERS; i++)
+      util_copy_shader_buffer(&fp->ssbo[start + i], buffers ? &buffers[i] : NULL);
 }
 
 static void fp_set_shader_images(struct pipe_context *pipe, enum pipe_shader_type shader,
@@ -203,18 +191,8 @@ static void fp_set_shader_images(struct pipe_context *pipe, enum pipe_shader_typ
    struct fp_context *fp = fp_context(pipe);
    if (shader != PIPE_SHADER_COMPUTE)
       return;
-   for (unsigned i = 0; i < count + unbind_trailing && start + i < PIPE_MAX_SHADER_IMAGES; i++) {
-      struct pipe_image_view *iv = &fp->images[start + i];
-      struct pipe_resource *res = images && i < count ? images[i].resource : NULL;
-      pipe_resource_reference(&iv->resource, NULL);
-      if (res) {
-         *iv = images[i];
-         iv->resource = NULL;
-         pipe_resource_reference(&iv->resource, res);
-      } else {
-         memset(iv, 0, sizeof(*iv));
-      }
-   }
+   for (unsigned i = 0; i < count + unbind_trailing && start + i < PIPE_MAX_SHADER_IMAGES; i++)
+      util_copy_image_view(&fp->images[start + i], images && i < count ? &images[i] : NULL);
 }
 
 void fp_compute_release(struct fp_context *fp)

@@ -177,7 +177,6 @@ struct fp_context {
    struct pipe_image_view images[PIPE_MAX_SHADER_IMAGES];
    struct tgsi_image *tgsi_image;
    struct tgsi_buffer *tgsi_buffer;
-   uint64_t cs_invocations;
    bool print_stats;
    struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */

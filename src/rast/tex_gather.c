@@ -8,11 +8,6 @@
  */
 #include "rast/tex_priv.h"
 
-static inline ns_val nsf(const struct tex_unit *u, float v)
-{
-   return tex_ns_coord(u->ns, u->kind, v, u->stats);
-}
-
 /* One channel of a texel as the swizzle gives it. */
 static inline float channel(const struct tex_unit *u, const float t[4], unsigned comp)
 {
@@ -33,10 +28,10 @@ void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigne
       ns_val s, t;
       int layer = 0;
       if (cube) {
-         layer = (int)tex_cube_face(u, nsf(u, q->s[p]), nsf(u, q->t[p]), nsf(u, q->r[p]), &s, &t);
+         layer = (int)tex_cube_face(u, tex_nsf(u, q->s[p]), tex_nsf(u, q->t[p]), tex_nsf(u, q->r[p]), &s, &t);
       } else {
-         s = nsf(u, q->s[p]);
-         t = nsf(u, q->t[p]);
+         s = tex_nsf(u, q->s[p]);
+         t = tex_nsf(u, q->t[p]);
          if (array)
             layer = tex_layer_of(u, q->layer[p]);
       }

@@ -34,6 +34,12 @@ static inline int32_t tex_clamp_lod(const struct tex_unit *u, int32_t l)
    return l;
 }
 
+/* A float coordinate into the unit's number system (tex_ns_coord). */
+static inline ns_val tex_nsf(const struct tex_unit *u, float v)
+{
+   return tex_ns_coord(u->ns, u->kind, v, u->stats);
+}
+
 /* The array layer of a coordinate: GL's clamp(floor(layer + 0.5), 0,
  * layers - 1), an integer path. */
 static inline int32_t tex_layer_of(const struct tex_unit *u, float l)

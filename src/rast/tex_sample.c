@@ -7,11 +7,6 @@
 #include <string.h>
 #include "rast/tex_priv.h"
 
-static inline ns_val nsf(const struct tex_unit *u, float v)
-{
-   return tex_ns_coord(u->ns, u->kind, v, u->stats);
-}
-
 static inline ns_val neg(const struct tex_unit *u, ns_val a)
 {
    return u->ns->sub(u->ns, u->k_zero, a, u->stats);
@@ -133,9 +128,9 @@ int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q)
 {
    ns_val c[TEX_QUAD][3];
    for (unsigned p = 0; p < TEX_QUAD; p++) {
-      c[p][0] = nsf(u, q->s[p]);
-      c[p][1] = nsf(u, q->t[p]);
-      c[p][2] = nsf(u, q->r[p]);
+      c[p][0] = tex_nsf(u, q->s[p]);
+      c[p][1] = tex_nsf(u, q->t[p]);
+      c[p][2] = tex_nsf(u, q->r[p]);
    }
    if (u->view.target == TEX_TARGET_CUBE) {
       int face[TEX_QUAD];
@@ -182,17 +177,17 @@ void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
    for (unsigned p = 0; p < TEX_QUAD; p++) {
       layer[p] = 0;
       if (cube) {
-         dir[p][0] = nsf(u, q->s[p]);
-         dir[p][1] = nsf(u, q->t[p]);
-         dir[p][2] = nsf(u, q->r[p]);
+         dir[p][0] = tex_nsf(u, q->s[p]);
+         dir[p][1] = tex_nsf(u, q->t[p]);
+         dir[p][2] = tex_nsf(u, q->r[p]);
          layer[p] = (int)tex_cube_face(u, dir[p][0], dir[p][1], dir[p][2], &c[p][0], &c[p][1]);
          continue;
       }
-      c[p][0] = nsf(u, q->s[p]);
+      c[p][0] = tex_nsf(u, q->s[p]);
       if (u->dims > 1)
-         c[p][1] = nsf(u, q->t[p]);
+         c[p][1] = tex_nsf(u, q->t[p]);
       if (u->dims > 2)
-         c[p][2] = nsf(u, q->r[p]);
+         c[p][2] = tex_nsf(u, q->r[p]);
       if (u->view.target == TEX_TARGET_1D_ARRAY || u->view.target == TEX_TARGET_2D_ARRAY)
          layer[p] = tex_layer_of(u, q->layer[p]);
    }
@@ -224,8 +219,8 @@ void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
          for (unsigned a = 0; a < n; a++) {
             dx[a] = q->ddx[a][p];
             dy[a] = q->ddy[a][p];
-            gx[a] = nsf(u, dx[a]);
-            gy[a] = nsf(u, dy[a]);
+            gx[a] = tex_nsf(u, dx[a]);
+            gy[a] = tex_nsf(u, dy[a]);
             scale[a] = u->axis[0][a].scale;
          }
          lod[p] = cube ? cube_lod_grads(u, (unsigned)layer[p], dir[p], gx, gy)

@@ -609,6 +609,14 @@ static void depth_fetch(const struct tex_view_desc *v, const struct tex_level *l
    out[3] = 1.0f;
 }
 
+/* A w x h depth view of depth_tex (at most 8 x 8). */
+static void depth_view(struct tex_view_desc *v, int w, int h)
+{
+   view_1level(v, TEX_TARGET_2D, TEX_FMT_CALLBACK, NULL, w, h, 1);
+   v->fetch = depth_fetch;
+   v->depth = true;
+}
+
 static bool ref_cmp(enum tex_func f, double r, double d)
 {
    switch (f) {
@@ -634,9 +642,7 @@ static void shadow(void)
          struct tex_view_desc v;
          struct tex_sampler_desc s;
          struct tex_unit u;
-         view_1level(&v, TEX_TARGET_2D, TEX_FMT_CALLBACK, NULL, 8, 8, 1);
-         v.fetch = depth_fetch;
-         v.depth = true;
+         depth_view(&v, 8, 8);
          samp_init(&s, TEX_WRAP_CLAMP_TO_BORDER, (enum tex_filter)f);
          s.compare = true;
          s.func = (enum tex_func)fn;
@@ -916,9 +922,7 @@ static void gather(void)
    struct tex_view_desc v;
    struct tex_sampler_desc sd;
    struct tex_unit u;
-   view_1level(&v, TEX_TARGET_2D, TEX_FMT_CALLBACK, NULL, 4, 4, 1);
-   v.fetch = depth_fetch;
-   v.depth = true;
+   depth_view(&v, 4, 4);
    samp_init(&sd, TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_NEAREST);
    sd.compare = true;
    sd.func = TEX_FUNC_LEQUAL;
