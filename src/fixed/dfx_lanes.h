@@ -249,22 +249,43 @@ DFXL_INLINE void dfxl_merge_where(struct dfxl_stats *st, const struct dfxl_stats
  * |x| less one step of its bits, where zero becomes a NaN, which
  * dfxl_mind passes over.  It takes x's zero as it is: only a product is
  * ever -0 (dfxl_mul makes it +0). */
+/* x truncated to its digit's grid: the bits below it cleared, a mask
+ * that depends on the biased exponent e mod 4 only.  With 512-bit
+ * vectors, a table of the masks indexed by e mod 8 (the permutation reads
+ * the low three bits of each index, and the sign above e leaves those
+ * alone): one shift and one permutation where the count is four
+ * operations and a variable shift. */
+DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
+{
+#if defined(DFXL_AVX512)
+#define DFXL_GRID_MASK(i) ((int64_t)(~UINT64_C(0) << (37 - (((i) + 1) & 3))))
+   const __m512i masks = _mm512_set_epi64(DFXL_GRID_MASK(7), DFXL_GRID_MASK(6),
+                                          DFXL_GRID_MASK(5), DFXL_GRID_MASK(4),
+                                          DFXL_GRID_MASK(3), DFXL_GRID_MASK(2),
+                                          DFXL_GRID_MASK(1), DFXL_GRID_MASK(0));
+#undef DFXL_GRID_MASK
+   const dfxl_i e = dfxl_shr((dfxl_i)x, dfxl_splat(52));
+   return (dfxl_d)((dfxl_i)x & (dfxl_i)_mm512_permutexvar_epi64((__m512i)e, masks));
+#else
+   return dfxl_clear_low(x, 37 - ((dfxl_shr((dfxl_i)x, dfxl_splat(52)) + 1) & 3));
+#endif
+}
+
 DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, struct dfxl_stats *st)
 {
    const dfxl_d ax = dfxl_abs(x);
-   const dfxl_i c = 37 - ((dfxl_shr((dfxl_i)x, dfxl_splat(52)) + 1) & 3);
    if (st->optimistic) {
       const dfxl_d l = (dfxl_d)((dfxl_i)ax - 1);
       st->hi = dfxl_maxd(ax, st->hi);
       st->lo = dfxl_mind(l, st->lo);
-      struct dfxl o = { dfxl_clear_low(x, c) };
+      struct dfxl o = { dfxl_to_grid(x) };
       return o;
    }
    const dfxl_i nz = ax != 0;
    const dfxl_i sat = ax >= 0x1p32, flush = nz & (ax < 0x1p-32);
    st->sat -= sat;
    st->flush -= flush;
-   dfxl_d r = dfxl_clear_low(x, c);
+   dfxl_d r = dfxl_to_grid(x);
    const dfxl_d big = (dfxl_d)((dfxl_i)dfxl_splatd(DFXL_MAX_MAG) |
                                ((dfxl_i)x & dfxl_splat(INT64_MIN)));
    r = dfxl_seld(sat, big, r);

@@ -89,10 +89,11 @@ typedef void (*fr_pair_func)(struct rast_context *rc, struct rast_front *fr, int
  * is carried from one pixel to the next.  The functions are chosen per
  * number system at validation. */
 typedef void (*fr_tex_begin_func)(struct rast_front *fr, int64_t x, int64_t y);
-/* divide: the quad has covered pixels; divide_next: so has the next quad
- * of the row (the lanes divide the two together) */
+/* divide: the quad has covered pixels; ahead: how many of the next three
+ * quads of the row have too, one after the other (the lanes divide them
+ * with this one) */
 typedef void (*fr_tex_quad_func)(struct rast_front *fr, struct rast_quad *q, bool divide,
-                                 bool divide_next);
+                                 unsigned ahead);
 
 /* One plane in the system: its value at V0 and the differences to V1, V2. */
 struct fr_plane {
@@ -153,10 +154,11 @@ struct fr_tex {
    float cval[FR_MAX_COMP];
    uint64_t n_const_w, n_const_comp;    /* moved to rast_stats per quad row */
    uint64_t n_divided;                  /* quads divided, the same */
-   /* the lanes' quads in pairs: the next quad's planes, divided with this
-    * one's, wait in `next` (rast_quad.in's layout, the planes' offsets) */
-   bool pending;
-   float next[RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE];
+   /* the lanes' quads in pairs or fours: the next quads' planes, divided
+    * with this one's, wait in `next` (rast_quad.in's layout, the planes'
+    * offsets), `pending` of them from next[n_next - pending] */
+   unsigned pending, n_next;
+   float next[3][RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE];
 };
 
 /* The per-pixel independent interpolators of Z and colour (seeds 001,

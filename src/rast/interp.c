@@ -259,7 +259,7 @@ static void tex_begin(struct rast_front *fr, int64_t x, int64_t y)
    t->bn[0] = t->e1x * py - t->e1y * px;
    t->an[1] = t->an[0] + t->a_dy;
    t->bn[1] = t->bn[0] + t->b_dy;
-   t->pending = false;
+   t->pending = 0;
 }
 
 /* The numerators' registers moved on to the next quad. */
@@ -335,28 +335,33 @@ tex_quad_impl(struct rast_front *fr, struct rast_quad *q, bool divide, const enu
 }
 
 static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divide,
-                           bool divide_next)
+                           unsigned ahead)
 {
-   (void)divide_next;
+   (void)ahead;
    tex_quad_impl(fr, q, divide, TEX_DFX19);
 }
 
 /* With the skips taken, two quads of a row that both divide are divided
  * together (persp2_dfx19), the second one's planes kept for its turn. */
 static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, bool divide,
-                                 bool divide_next)
+                                 unsigned ahead)
 {
    struct fr_tex *t = &fr->tex;
    if (t->pending) {
       float *in = &q->in[0][0][0];
+      const float *next = t->next[t->n_next - t->pending];
       for (unsigned i = t->w_const ? 0 : 1; i < t->ln; i++)
-         memcpy(in + t->lout[i], t->next + t->lout[i], sizeof(float[RAST_QUAD_SIZE]));
+         memcpy(in + t->lout[i], next + t->lout[i], sizeof(float[RAST_QUAD_SIZE]));
       for (unsigned i = 0; i < t->n_const; i++)
-         memcpy(in + t->cout[i], t->next + t->cout[i], sizeof(float[RAST_QUAD_SIZE]));
-      t->pending = false;
-   } else if (divide && divide_next && t->skip) {
-      rast_lanes()->persp2_dfx19(fr, &q->in[0][0][0], t->next);
-      t->pending = true;
+         memcpy(in + t->cout[i], next + t->cout[i], sizeof(float[RAST_QUAD_SIZE]));
+      t->pending--;
+   } else if (divide && ahead >= 3 && t->skip && rast_lanes()->persp4_dfx19) {
+      float *const in[4] = { &q->in[0][0][0], t->next[0], t->next[1], t->next[2] };
+      rast_lanes()->persp4_dfx19(fr, in);
+      t->pending = t->n_next = 3;
+   } else if (divide && ahead && t->skip) {
+      rast_lanes()->persp2_dfx19(fr, &q->in[0][0][0], t->next[0]);
+      t->pending = t->n_next = 1;
    } else if (divide) {
       rast_lanes()->persp_dfx19(fr, q);
    }
@@ -366,23 +371,23 @@ static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, boo
 /* The reference for binary32: tex_quad_float must give its bits and range
  * events (test_persp_fast). */
 static void tex_quad_float_ref(struct rast_front *fr, struct rast_quad *q, bool divide,
-                               bool divide_next)
+                               unsigned ahead)
 {
-   (void)divide_next;
+   (void)ahead;
    tex_quad_impl(fr, q, divide, TEX_FLOAT);
 }
 
 static void tex_quad_dfx(struct rast_front *fr, struct rast_quad *q, bool divide,
-                         bool divide_next)
+                         unsigned ahead)
 {
-   (void)divide_next;
+   (void)ahead;
    tex_quad_impl(fr, q, divide, TEX_DFX);
 }
 
 static void tex_quad_ns(struct rast_front *fr, struct rast_quad *q, bool divide,
-                        bool divide_next)
+                        unsigned ahead)
 {
-   (void)divide_next;
+   (void)ahead;
    tex_quad_impl(fr, q, divide, TEX_NS);
 }
 
@@ -404,9 +409,9 @@ static inline void tex_fplane4(const struct fr_plane *p, const float a[RAST_QUAD
 }
 
 static void tex_quad_float(struct rast_front *fr, struct rast_quad *q, bool divide,
-                           bool divide_next)
+                           unsigned ahead)
 {
-   (void)divide_next;
+   (void)ahead;
    struct fr_tex *t = &fr->tex;
    int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
    tex_numerators(t, an, bn);
@@ -659,8 +664,11 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    const unsigned flt_lin_end = 1 + (has_lin ? fr->nlin : 0);
    const unsigned frac = rc->profile->xy.frac_bits;
 
-   int64_t fix[2][FR_MAX_FIX] = {{0}};
-   float flt[2][FR_MAX_FLT] = {{0}};
+   /* the registers of both scan lines; only the first nfix and nflt are
+    * started and read (zeroing both arrays whole, 3 KiB, took a tenth of
+    * this function's time) */
+   int64_t fix[2][FR_MAX_FIX];
+   float flt[2][FR_MAX_FLT];
    /* A scan line with no covered pixel in this quad row holds only helpers:
     * each of them is computed from an unclamped base, so one that clamps
     * cannot shift the next. */
@@ -761,8 +769,14 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          }
       }
       if (has_persp) {
-         const unsigned next = x + 2 <= xe ? span_bits(r0, x + 2) | (span_bits(r1, x + 2) << 2) : 0;
-         fr->tex.quad(fr, q, mask != 0, next != 0);
+         /* the covered quads that follow, for the lanes to divide with
+          * this one (not needed while they hold divided ones) */
+         unsigned ahead = 0;
+         if (mask && !fr->tex.pending)
+            for (int64_t nx = x + 2; ahead < 3 && nx <= xe && (span_bits(r0, nx) | span_bits(r1, nx));
+                 nx += 2)
+               ahead++;
+         fr->tex.quad(fr, q, mask != 0, ahead);
          fr->tex.n_divided += mask != 0;
       }
       if (!mask)

@@ -46,9 +46,8 @@ store(struct dfxl v, float *const *in, unsigned k, unsigned off)
 #if DFXL_N == 8
    float f[8];
    dfxl_to_float(v, f);
-   memcpy(in[0] + off, f, 4 * sizeof(float));
-   memcpy(in[1] + off, f + 4, 4 * sizeof(float));
-   (void)k;
+   memcpy(in[2 * k] + off, f, 4 * sizeof(float));
+   memcpy(in[2 * k + 1] + off, f + 4, 4 * sizeof(float));
 #else
    dfxl_to_float(v, in[k] + off);
 #endif
@@ -62,7 +61,8 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
 
 /* `nq` quads (1, or 2 side by side on a row: their operations interleave,
  * each quad's chain of dependent operations being long and the two
- * independent; or one vector with both), each lane a pixel's operations as
+ * independent; or one vector with both; or, 512-bit set, 4: two vectors
+ * of two, interleaved the same way), each lane a pixel's operations as
  * the scalar path does them; quad k's planes go to in[k] + the component's
  * offset, and an[v], bn[v] are vector v's numerators.
  * `optimistic` (dfx_lanes.h): false, leaving nothing counted, when a lane
@@ -132,9 +132,11 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
 
 /* The optimistic quads for the common plane counts. */
 #define PERSP_N(nn)                                                                           \
-   static bool persp_##nn(struct rast_front *fr, float *const in[2], const dfxl_i an[2],     \
+   static bool persp_##nn(struct rast_front *fr, float *const *in, const dfxl_i an[2],        \
                           const dfxl_i bn[2], unsigned nq)                                    \
    {                                                                                          \
+      if (QPV == 2 && nq == 4)                                                               \
+         return persp(fr, in, an, bn, true, nn, 4);                                          \
       return nq == 2 || QPV == 2 ? persp(fr, in, an, bn, true, nn, 2)                       \
                                  : persp(fr, in, an, bn, true, nn, 1);                       \
    }
@@ -147,7 +149,7 @@ PERSP_N(6)
 PERSP_N(7)
 PERSP_N(8)
 
-static bool persp_optimistic(struct rast_front *fr, float *const in[2], const dfxl_i an[2],
+static bool persp_optimistic(struct rast_front *fr, float *const *in, const dfxl_i an[2],
                              const dfxl_i bn[2], unsigned nq)
 {
    switch (fr->tex.ln) {
@@ -160,6 +162,8 @@ static bool persp_optimistic(struct rast_front *fr, float *const in[2], const df
    case 7: return persp_7(fr, in, an, bn, nq);
    case 8: return persp_8(fr, in, an, bn, nq);
    default:
+      if (QPV == 2 && nq == 4)
+         return persp(fr, in, an, bn, true, fr->tex.ln, 4);
       return nq == 2 || QPV == 2 ? persp(fr, in, an, bn, true, fr->tex.ln, 2)
                      : persp(fr, in, an, bn, true, fr->tex.ln, 1);
    }
@@ -218,3 +222,18 @@ void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
    persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
    persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
 }
+
+#if DFXL_N == 8
+/* Four quads of a row: the numerators of quads 0-1 in one vector, 2-3 in
+ * the other; a range event in either: all four the careful way. */
+void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4])
+{
+   struct fr_tex *t = &fr->tex;
+   dfxl_i an[2], bn[2];
+   numerators(t, 0, &an[0], &bn[0]);
+   numerators(t, 2, &an[1], &bn[1]);
+   if (persp_optimistic(fr, in, an, bn, 4))
+      return;
+   persp(fr, in, an, bn, false, t->ln, 4);
+}
+#endif

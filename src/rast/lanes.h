@@ -28,6 +28,11 @@ struct rast_lanes {
     * in0 and in1 (rast_quad.in's layout).  The caller moves the registers
     * on by one quad after each. */
    void (*persp2_dfx19)(struct rast_front *fr, float *in0, float *in1);
+   /* The same for four quads of a row, two vectors of two (the 512-bit
+    * set only; NULL elsewhere): their step-by-step operations overlap
+    * where one vector leaves the processor waiting on the division's long
+    * chain of dependent operations. */
+   void (*persp4_dfx19)(struct rast_front *fr, float *const in[4]);
    /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
     * rectangle), specialised for the unit's state; `nolod`: the one that
     * leaves out the LOD (tex_unit_lod_unused); `noskip`: the one that

@@ -174,11 +174,26 @@ lanes_frac_of(struct dfxl c, dfxl_i *odd, dfxl_i *below, struct dfxl_stats *st)
    return f;
 }
 
-static inline __attribute__((always_inline)) struct dfxl
-clamp(struct dfxl c, const double lh[3])
+/* An axis's constants on the lanes (tex_bind.c's laxis, the size): the
+ * same in every lane, or, where both axes go through the address unit in
+ * one vector, each lane its own axis's. */
+struct lanes_axis {
+   dfxl_d scale, lo, hi;
+   lanes_i size;
+};
+
+static inline __attribute__((always_inline)) struct lanes_axis
+axis_of(const struct tex_unit *u, unsigned l, unsigned a)
 {
-   const double l = lh[1], h = lh[2];
-   c.v = dfxl_seld(c.v < l, splat(l).v, dfxl_seld(c.v > h, splat(h).v, c.v));
+   const struct lanes_axis r = { dfxl_splatd(u->laxis[l][a][0]), dfxl_splatd(u->laxis[l][a][1]),
+                                 dfxl_splatd(u->laxis[l][a][2]), splat_i(u->axis[l][a].size) };
+   return r;
+}
+
+static inline __attribute__((always_inline)) struct dfxl
+clamp(struct dfxl c, const struct lanes_axis *ax)
+{
+   c.v = dfxl_seld(c.v < ax->lo, ax->lo, dfxl_seld(c.v > ax->hi, ax->hi, c.v));
    return c;
 }
 
@@ -189,15 +204,15 @@ static inline __attribute__((always_inline)) lanes_i seli(lanes_i mask, lanes_i 
 }
 
 /* tex_clampi and tex_inside on the lanes. */
-static inline __attribute__((always_inline)) lanes_i clampi(lanes_i i, int32_t lo, int32_t hi)
+static inline __attribute__((always_inline)) lanes_i clampi(lanes_i i, int32_t lo, lanes_i h)
 {
-   const lanes_i l = splat_i(lo), h = splat_i(hi);
+   const lanes_i l = splat_i(lo);
    return seli(i < l, l, seli(i > h, h, i));
 }
 
-static inline __attribute__((always_inline)) lanes_i inside(lanes_i i, int32_t size)
+static inline __attribute__((always_inline)) lanes_i inside(lanes_i i, lanes_i size)
 {
-   return seli((i >= 0) & (i < splat_i(size)), i, splat_i(-1));
+   return seli((i >= 0) & (i < size), i, splat_i(-1));
 }
 
 /* One axis of the lanes' addresses: the two texel indices (-1: the
@@ -208,29 +223,31 @@ struct lanes_addr {
 
 /* tex_fast_path.h's addr on the quad. */
 static inline __attribute__((always_inline)) void
-lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const struct tex_axis *ax,
-              const double lax[3], struct dfxl c, struct lanes_addr *a, struct dfxl_stats *st)
+lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap,
+              const struct lanes_axis *ax, struct dfxl c, struct lanes_addr *a,
+              struct dfxl_stats *st)
 {
    bool border = false, bounded = false;
    dfxl_i odd;
    lanes_i i, w;
-   const int32_t size = ax->size;
+   const lanes_i size = ax->size, last = size - 1;
    const lanes_i zero = splat_i(0);
    switch (wrap) {
    case TEX_WRAP_REPEAT: {
       dfxl_i below;
-      const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, &below, st), splat(lax[0]), st);
+      const struct dfxl s = dfxl_mul(lanes_frac_of(c, &odd, &below, st), (struct dfxl){ ax->scale },
+                                     st);
       const lanes_i period = __builtin_convertvector(below, lanes_i) & size;
       if (!linear) {
          floor_frac(s, false, &i, &w, st);
-         a->i0 = a->i1 = clampi(i + period, 0, size - 1);
+         a->i0 = a->i1 = clampi(i + period, 0, last);
          a->w = zero;
          return;
       }
       floor_frac(sub_texel_offset(s, st), false, &i, &w, st);
-      const lanes_i k = clampi(i + period, -1, size - 1);
-      a->i0 = seli(k < 0, splat_i(size - 1), k);
-      a->i1 = seli(k + 1 >= splat_i(size), zero, k + 1);
+      const lanes_i k = clampi(i + period, -1, last);
+      a->i0 = seli(k < 0, last, k);
+      a->i1 = seli(k + 1 >= size, zero, k + 1);
       a->w = w;
       return;
    }
@@ -249,15 +266,15 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       clamp_mode(wrap, linear, &mirror, &border);
       if (mirror)
          c.v = dfxl_abs(c.v);
-      c = clamp(c, lax);
+      c = clamp(c, ax);
       bounded = true;
       break;
    }
    }
-   struct dfxl s = dfxl_mul(c, splat(lax[0]), st);
+   struct dfxl s = dfxl_mul(c, (struct dfxl){ ax->scale }, st);
    if (!linear) {
       floor_frac(s, bounded, &i, &w, st);
-      a->i0 = a->i1 = border ? inside(i, size) : clampi(i, 0, size - 1);
+      a->i0 = a->i1 = border ? inside(i, size) : clampi(i, 0, last);
       a->w = zero;
       return;
    }
@@ -271,8 +288,8 @@ lanes_addr_of(const struct tex_unit *u, const bool linear, unsigned wrap, const 
       a->i0 = inside(i, size);
       a->i1 = inside(i1, size);
    } else {
-      a->i0 = clampi(i, 0, size - 1);
-      a->i1 = clampi(i1, 0, size - 1);
+      a->i0 = clampi(i, 0, last);
+      a->i1 = clampi(i1, 0, last);
    }
 }
 
@@ -401,12 +418,10 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
        lanes_v4f out[4], struct dfxl_stats *st)
 {
    const struct tex_level *lv = &u->view.level[l];
-   const struct tex_axis *ax = u->axis[l];
+   const struct lanes_axis ax[2] = { axis_of(u, l, 0), axis_of(u, l, 1) };
    struct lanes_addr A, B;
-   lanes_addr_of(u, linear, k.ws < 0 ? u->samp.wrap[0] : (unsigned)k.ws, &ax[0],
-                 u->laxis[l][0], cs, &A, st);
-   lanes_addr_of(u, linear, k.wt < 0 ? u->samp.wrap[1] : (unsigned)k.wt, &ax[1],
-                 u->laxis[l][1], ct, &B, st);
+   lanes_addr_of(u, linear, k.ws < 0 ? u->samp.wrap[0] : (unsigned)k.ws, &ax[0], cs, &A, st);
+   lanes_addr_of(u, linear, k.wt < 0 ? u->samp.wrap[1] : (unsigned)k.wt, &ax[1], ct, &B, st);
    if (k.soa > 0 || (k.soa < 0 && u->lanes_soa)) {
       const lanes_i zoff = { layer[0], layer[1], layer[2], layer[3] };
       soa_level2(u, linear, may_border(k.ws, linear) || may_border(k.wt, linear), l, &A, &B,
@@ -642,28 +657,27 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
             zoff[i][p] = layer_of(u, q[i].layer[p]) * (int32_t)lv->img_stride;
    }
    /* each axis once per column or row where its coordinate follows it */
+   const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
    struct lanes_addr A[2], B[2];
    const bool s_col = s_by_column(cs), t_row = t_by_row(ct);
    if (s_col) {
       struct lanes_addr SA;
       const struct dfxl sv = { { cs[0].v[0], cs[0].v[1], cs[1].v[0], cs[1].v[1] } };
-      lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], sv, &SA, &st);
+      lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], sv, &SA, &st);
       A[0] = columns(&SA, 0);
       A[1] = columns(&SA, 2);
    } else {
       for (unsigned i = 0; i < 2; i++)
-         lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], cs[i], &A[i],
-                       &st);
+         lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], cs[i], &A[i], &st);
    }
    if (t_row) {
       struct lanes_addr TB;
       const struct dfxl tv = { { ct[0].v[0], ct[0].v[2], ct[0].v[0], ct[0].v[2] } };
-      lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], tv, &TB, &st);
+      lanes_addr_of(u, linear, (unsigned)k.wt, &ax[1], tv, &TB, &st);
       B[0] = B[1] = rows(&TB);
    } else {
       for (unsigned i = 0; i < 2; i++)
-         lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], ct[i], &B[i],
-                       &st);
+         lanes_addr_of(u, linear, (unsigned)k.wt, &ax[1], ct[i], &B[i], &st);
    }
    /* a count (a saturating floor) of a lane shared by several pixels would
     * be counted once: such a pair (rare) is taken quad by quad.  The counts
@@ -728,18 +742,36 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
          zoff[p] = layer_of(u, q[p / TEX_QUAD].layer[p % TEX_QUAD]) * (int32_t)lv->img_stride;
    struct lanes_addr A, B;
    const bool s_col = s_by_column(cs), t_row = t_by_row(ct);
-   /* the address unit once per axis, on the columns' s or the rows' t
-    * where they are shared (one copy of its code an axis) */
-   const struct dfxl sv = { __builtin_shufflevector(cs.v, cs.v, 0, 1, 4, 5, 0, 1, 4, 5) };
-   const struct dfxl tv = { __builtin_shufflevector(ct.v, ct.v, 0, 2, 0, 2, 0, 2, 0, 2) };
-   lanes_addr_of(u, linear, (unsigned)k.ws, &u->axis[0][0], u->laxis[0][0], s_col ? sv : cs,
-                 &A, &st);
-   lanes_addr_of(u, linear, (unsigned)k.wt, &u->axis[0][1], u->laxis[0][1], t_row ? tv : ct,
-                 &B, &st);
-   if (s_col)
-      A = SPREAD(A, 0, 1, 0, 1, 2, 3, 2, 3);
-   if (t_row)
-      B = SPREAD(B, 0, 0, 1, 1, 0, 0, 1, 1);
+   const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
+   if (s_col && t_row && k.ws == k.wt) {
+      /* both shared, as a 2-D window's coordinates are: the four columns'
+       * s in lanes 0-3 and the two rows' t in lanes 4-7 (twice) through
+       * the address unit at once, each lane with its own axis's constants:
+       * one pass of the unit where each axis alone would fill a vector
+       * with copies */
+#define BOTH(a, b) __builtin_shufflevector(a, b, 0, 1, 2, 3, 8, 9, 10, 11)
+      const struct lanes_axis both = { BOTH(ax[0].scale, ax[1].scale), BOTH(ax[0].lo, ax[1].lo),
+                                       BOTH(ax[0].hi, ax[1].hi),
+                                       __builtin_shufflevector(ax[0].size, ax[1].size, 0, 1, 2,
+                                                               3, 8, 9, 10, 11) };
+#undef BOTH
+      const struct dfxl st_v = { __builtin_shufflevector(cs.v, ct.v, 0, 1, 4, 5, 8, 10, 8, 10) };
+      struct lanes_addr AB;
+      lanes_addr_of(u, linear, (unsigned)k.ws, &both, st_v, &AB, &st);
+      A = SPREAD(AB, 0, 1, 0, 1, 2, 3, 2, 3);
+      B = SPREAD(AB, 4, 4, 5, 5, 4, 4, 5, 5);
+   } else {
+      /* the address unit once per axis, on the columns' s or the rows' t
+       * where they are shared (one copy of its code an axis) */
+      const struct dfxl sv = { __builtin_shufflevector(cs.v, cs.v, 0, 1, 4, 5, 0, 1, 4, 5) };
+      const struct dfxl tv = { __builtin_shufflevector(ct.v, ct.v, 0, 2, 0, 2, 0, 2, 0, 2) };
+      lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], s_col ? sv : cs, &A, &st);
+      lanes_addr_of(u, linear, (unsigned)k.wt, &ax[1], t_row ? tv : ct, &B, &st);
+      if (s_col)
+         A = SPREAD(A, 0, 1, 0, 1, 2, 3, 2, 3);
+      if (t_row)
+         B = SPREAD(B, 0, 0, 1, 1, 0, 0, 1, 1);
+   }
    /* as pair2 above: a count in a shared lane would be counted once (the
     * copies are the same lanes again) */
    if ((s_col || t_row) && dfxl_any((st.sat | st.flush) != 0))
