@@ -235,20 +235,6 @@ DFXL_INLINE void dfxl_merge_where(struct dfxl_stats *st, const struct dfxl_stats
    }
 }
 
-/* dfx_finish_i after the data path: the exact result x truncated toward
- * zero to its digit's grid; above L = 15 the largest magnitude, below
- * L = 0 zero, both counted.  An exact zero is +0.
- *
- * With x's leading one at 2^p, L = floor((p + 32) / 4) and the grid is
- * 2^(4L - 47), so p - g = ((p + 32) mod 4) + 15: the mantissa keeps 16 to
- * 19 bits, and with the biased exponent e = p + 1023 the bits to clear are
- * 37 - ((e + 1) mod 4) (the sign above e's eleven bits leaves that alone).
- * L > 15 is |x| >= 2^32, L < 0 is |x| < 2^-32.
- *
- * The optimistic way keeps the bounds: the largest |x|, and the smallest
- * |x| less one step of its bits, where zero becomes a NaN, which
- * dfxl_mind passes over.  It takes x's zero as it is: only a product is
- * ever -0 (dfxl_mul makes it +0). */
 /* x truncated to its digit's grid: the bits below it cleared, a mask
  * that depends on the biased exponent e mod 4 only.  With 512-bit
  * vectors, a table of the masks indexed by e mod 8 (the permutation reads
@@ -271,6 +257,20 @@ DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
 #endif
 }
 
+/* dfx_finish_i after the data path: the exact result x truncated toward
+ * zero to its digit's grid; above L = 15 the largest magnitude, below
+ * L = 0 zero, both counted.  An exact zero is +0.
+ *
+ * With x's leading one at 2^p, L = floor((p + 32) / 4) and the grid is
+ * 2^(4L - 47), so p - g = ((p + 32) mod 4) + 15: the mantissa keeps 16 to
+ * 19 bits, and with the biased exponent e = p + 1023 the bits to clear are
+ * 37 - ((e + 1) mod 4) (the sign above e's eleven bits leaves that alone).
+ * L > 15 is |x| >= 2^32, L < 0 is |x| < 2^-32.
+ *
+ * The optimistic way keeps the bounds: the largest |x|, and the smallest
+ * |x| less one step of its bits, where zero becomes a NaN, which
+ * dfxl_mind passes over.  It takes x's zero as it is: only a product is
+ * ever -0 (dfxl_mul makes it +0). */
 DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, struct dfxl_stats *st)
 {
    const dfxl_d ax = dfxl_abs(x);

@@ -158,6 +158,7 @@ struct fr_tex {
     * with this one's, wait in `next` (rast_quad.in's layout, the planes'
     * offsets), `pending` of them from next[n_next - pending] */
    unsigned pending, n_next;
+   unsigned lookahead;                  /* quads the lanes divide ahead: 0, 1 or 3 */
    float next[3][RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE];
 };
 

@@ -355,11 +355,11 @@ static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, boo
       for (unsigned i = 0; i < t->n_const; i++)
          memcpy(in + t->cout[i], next + t->cout[i], sizeof(float[RAST_QUAD_SIZE]));
       t->pending--;
-   } else if (divide && ahead >= 3 && t->skip && rast_lanes()->persp4_dfx19) {
+   } else if (divide && ahead >= 3) {          /* t->lookahead: the skips, and persp4 */
       float *const in[4] = { &q->in[0][0][0], t->next[0], t->next[1], t->next[2] };
       rast_lanes()->persp4_dfx19(fr, in);
       t->pending = t->n_next = 3;
-   } else if (divide && ahead && t->skip) {
+   } else if (divide && ahead) {
       rast_lanes()->persp2_dfx19(fr, &q->in[0][0][0], t->next[0]);
       t->pending = t->n_next = 1;
    } else if (divide) {
@@ -463,6 +463,9 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
    t->w_const = t->w_one = false;
    t->lanes = !t->reference && !(rc->opts & RAST_OPT_SCALAR) && !t->any_color &&
               ns->dfx.mant_bits == DFX_MANT_BITS_SEED;
+   /* how many following quads the span processor looks for: the lanes
+    * divide 2 or 4 at once with the skips taken, nothing else does */
+   t->lookahead = !t->lanes || !t->skip ? 0 : rast_lanes()->persp4_dfx19 ? 3 : 1;
    if (t->lanes)
       t->quad = tex_quad_dfx19_lanes;
    else if (t->reference)
@@ -773,7 +776,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
           * this one (not needed while they hold divided ones) */
          unsigned ahead = 0;
          if (mask && !fr->tex.pending)
-            for (int64_t nx = x + 2; ahead < 3 && nx <= xe && (span_bits(r0, nx) | span_bits(r1, nx));
+            for (int64_t nx = x + 2;
+                 ahead < fr->tex.lookahead && nx <= xe && (span_bits(r0, nx) | span_bits(r1, nx));
                  nx += 2)
                ahead++;
          fr->tex.quad(fr, q, mask != 0, ahead);
