@@ -246,13 +246,13 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                struct rast_context *rc);
 void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
-/* Two quads whose operands compiled code laid out as tgsi_exec's
- * get_samples would have (fp_jit_sample.c); control is an enum
- * tgsi_sampler_control. */
+/* `max` quads (2 or 4) whose operands compiled code laid out as
+ * tgsi_exec's get_samples would have (fp_jit_sample.c), `quads` of them
+ * real; control is an enum tgsi_sampler_control. */
 struct tex_quad;
-void fp_tgsi_sample_quad2(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
-                          uint32_t control, uint32_t quads, const struct tex_quad *q,
-                          float rgba[2][4][4]);
+void fp_tgsi_sample_quads(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
+                          uint32_t control, uint32_t quads, uint32_t max,
+                          const struct tex_quad *q, float rgba[][4][4]);
 /* What it counted so far, into rc's counters (not while rc's thread draws). */
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s, struct rast_context *rc);
 void fp_init_sampler_view(struct fp_sampler_view *view);

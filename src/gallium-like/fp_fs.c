@@ -97,36 +97,45 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
    return mask;
 }
 
-/* The compiled function on q0 and q1 with the pixels `live` (q0's in bits
- * 0-3, q1's in 4-7); `quads` 1: q1 is q0 again, every lane of it off, and
- * not sampled again (fp_jit_context.quads).  Returns the pixels kept. */
-static unsigned fp_fs_run_jit(struct fp_fs_thread *th, const struct rast_quad *q0,
-                              const struct rast_quad *q1, struct rast_shaded_quad *out0,
-                              struct rast_shaded_quad *out1, unsigned live, unsigned quads)
+/* The compiled function on the n quads q[i], their outputs to out[i]
+ * (n up to the variant's quads a call).  The code's other quads are q[0]
+ * again with every lane off, their outputs to `spare`, and not sampled
+ * (fp_jit_context.quads).  Returns the pixels kept, quad i's in bits 4i
+ * to 4i + 3. */
+static unsigned fp_fs_run_jit(struct fp_fs_thread *th, const struct rast_quad *const q[],
+                              struct rast_shaded_quad *const out[], unsigned n)
 {
-   int32_t lanes[2 * RAST_QUAD_SIZE];
-   for (unsigned p = 0; p < 2 * RAST_QUAD_SIZE; p++)
+   const struct fp_jit_variant *v = th->fp->fs->jit;
+   const struct rast_quad *qs[FP_JIT_MAX_QUADS];
+   struct rast_shaded_quad *outs[FP_JIT_MAX_QUADS];
+   int32_t lanes[FP_JIT_MAX_QUADS * RAST_QUAD_SIZE];
+   unsigned live = 0;
+   for (unsigned k = 0; k < v->quads; k++) {
+      qs[k] = k < n ? q[k] : q[0];
+      outs[k] = k < n ? out[k] : &th->spare;
+      live |= (k < n ? q[k]->mask : 0u) << 4 * k;
+   }
+   for (unsigned p = 0; p < v->quads * RAST_QUAD_SIZE; p++)
       lanes[p] = (live >> p & 1) ? ~0 : 0;
-   th->jit_ctx.quads = quads;
-   th->fp->fs->jit->func(&th->jit_ctx, q0, q1, out0, out1, lanes);
-   th->quads_jit += quads;
+   th->jit_ctx.quads = n;
+   v->func(&th->jit_ctx, qs, outs, lanes);
+   th->quads_jit += n;
    unsigned mask = 0;
-   for (unsigned p = 0; p < 2 * RAST_QUAD_SIZE; p++)
+   for (unsigned p = 0; p < v->quads * RAST_QUAD_SIZE; p++)
       mask |= (unsigned)(lanes[p] != 0) << p;
    return mask & live;
 }
 
 static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
-   struct fp_fs_thread *th = ctx;
-   return fp_fs_run_jit(th, q, q, out, &th->spare, q->mask, 1);
+   return fp_fs_run_jit(ctx, &q, &out, 1);
 }
 
-/* Two quads of a primitive, one call of the eight-lane code. */
-static unsigned fp_fs_shade2_jit(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
-                                 struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
+/* Quads of a primitive, one call of the eight- or sixteen-lane code. */
+static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
+                                  struct rast_shaded_quad *const out[], unsigned n)
 {
-   return fp_fs_run_jit(ctx, q0, q1, out0, out1, q0->mask | q1->mask << 4, 2);
+   return fp_fs_run_jit(ctx, q, out, n);
 }
 
 /* Compiles the bound shader when it is due; false leaves it interpreted. */
@@ -226,8 +235,10 @@ void fp_fs_validate(struct fp_context *fp)
          fp_jit_context_init_sampler(&th->jit_ctx, fp_tgsi_sampler_base(th->sampler));
       }
       rs.shade = fp_fs_shade_jit;
-      if (fp->fs->jit->quads == 2)
-         rs.shade2 = fp_fs_shade2_jit;
+      if (fp->fs->jit->quads >= 2) {
+         rs.shade_n = fp_fs_shade_n_jit;
+         rs.group = fp->fs->jit->quads;
+      }
       rast_set_shader(fp->rast, &rs);
       fp->fs_dirty = false;
       return;

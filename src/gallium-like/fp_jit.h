@@ -40,28 +40,33 @@ struct fp_jit_context {
                   float derivs[3][2][RAST_QUAD_SIZE], const int32_t offsets[3][RAST_QUAD_SIZE],
                   float rgba[4][RAST_QUAD_SIZE]);
    void (*size)(struct tgsi_sampler *s, uint32_t texture, int32_t lod, int32_t dims[4]);
-   /* plain 2-D samples: the two quads laid out by the code, in one call
-    * (fp_tgsi_sample_quad2: `quads` of them real) */
-   void (*sample_quad2)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
-                        uint32_t control, uint32_t quads, const struct tex_quad *q,
-                        float rgba[2][4][RAST_QUAD_SIZE]);
-   /* the quads a call of the eight-lane function shades: 2, or 1 when its
-    * second four lanes repeat the first (a quad alone) */
+   /* plain 2-D samples: the quads laid out by the code, in one call
+    * (fp_tgsi_sample_quads: `quads` of them real) */
+   void (*sample_quads)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
+                        uint32_t control, uint32_t quads, uint32_t max,
+                        const struct tex_quad *q, float rgba[][4][RAST_QUAD_SIZE]);
+   /* the quads a call of the function shades: up to its quads a call, the
+    * lanes of the others repeating the first quad's (a quad alone, the
+    * last of a primitive) */
    uint32_t quads;
 };
 
-/* The compiled function on FP_JIT_QUADS quads (their lanes one after the
- * other, quad i from q[i], its outputs to out[i]); with one quad, q1 and
- * out1 are not read.  mask: in, the covered pixels (lane = ~0); out, those
- * that survive discard. */
-typedef void (*fp_jit_fs_func)(const struct fp_jit_context *ctx, const struct rast_quad *q0,
-                               const struct rast_quad *q1, struct rast_shaded_quad *out0,
-                               struct rast_shaded_quad *out1, int32_t *mask);
+/* Quads a call of the compiled code at most: sixteen lanes. */
+#define FP_JIT_MAX_QUADS 4
+
+/* The compiled function on its quads a call (their lanes one after the
+ * other, quad i from q[i], its outputs to out[i]).  mask: in, the covered
+ * pixels (lane = ~0); out, those that survive discard. */
+typedef void (*fp_jit_fs_func)(const struct fp_jit_context *ctx, const struct rast_quad *const *q,
+                               struct rast_shaded_quad *const *out, int32_t *mask);
 
 struct fp_jit_variant {
    struct gallivm_state *gallivm;
    fp_jit_fs_func func;
-   unsigned quads;                  /* 2: eight lanes, two quads a call; 1 (noskip) */
+   /* quads a call: 4 (sixteen lanes) for a shader that samples a texture
+    * where the texture unit has its four-quad functions, else 2; 1 with
+    * noskip */
+   unsigned quads;
    double compile_ms;
    bool cache_hit;                  /* code from Mesa's on-disk shader cache */
 };
@@ -84,7 +89,7 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
  * and the vector of nq quads' lanes from each quad's four. */
 LLVMValueRef fp_jit_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
                               unsigned nq);
-LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[2],
+LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[],
                                struct lp_type type4, unsigned nq);
 
 /* Quads a fragment shader, vertices a vertex shader, is interpreted for

@@ -40,6 +40,7 @@
 #include "fp_context.h"
 #include "fp_jit.h"
 #include "fp_screen.h"
+#include "rast/lanes.h"
 
 /* llvmpipe's NIR options (lp_screen.c, gallivm_nir_options): what
  * lp_build_nir_soa expects to see lowered. */
@@ -149,7 +150,7 @@ static void fp_store(struct gallivm_state *gallivm, LLVMValueRef base, size_t of
 static LLVMValueRef fp_load_quads(struct gallivm_state *gallivm, const LLVMValueRef *quads,
                                   unsigned nq, size_t offset, struct lp_type type4)
 {
-   LLVMValueRef v[2];
+   LLVMValueRef v[FP_JIT_MAX_QUADS];
    for (unsigned k = 0; k < nq; k++)
       v[k] = fp_load_vec(gallivm, quads[k], offset, lp_build_vec_type(gallivm, type4));
    return fp_jit_join_quads(gallivm, v, type4, nq);
@@ -178,7 +179,7 @@ static LLVMValueRef fp_quads_coord(struct gallivm_state *gallivm, struct lp_type
                                    const LLVMValueRef *quads, unsigned nq, size_t offset,
                                    const float step[4], float centre)
 {
-   LLVMValueRef v[2];
+   LLVMValueRef v[FP_JIT_MAX_QUADS];
    for (unsigned k = 0; k < nq; k++)
       v[k] = fp_quad_coord(gallivm, type4, quads[k], offset, step, centre);
    return fp_jit_join_quads(gallivm, v, type4, nq);
@@ -222,22 +223,29 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
    LLVMTypeRef fvec = lp_build_vec_type(gallivm, type);
    LLVMTypeRef ivec = lp_build_int_vec_type(gallivm, type);
    LLVMTypeRef i8p = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
-   LLVMTypeRef args[6] = { i8p, i8p, i8p, i8p, i8p, LLVMPointerType(ivec, 0) };
-   LLVMTypeRef func_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), args, 6, 0);
+   LLVMTypeRef i8pp = LLVMPointerType(i8p, 0);
+   LLVMTypeRef args[4] = { i8p, i8pp, i8pp, LLVMPointerType(ivec, 0) };
+   LLVMTypeRef func_type = LLVMFunctionType(LLVMVoidTypeInContext(lc), args, 4, 0);
    LLVMValueRef func = LLVMAddFunction(gallivm->module, "fp_fs", func_type);
    LLVMSetFunctionCallConv(func, LLVMCCallConv);
    LLVMValueRef ctx = LLVMGetParam(func, 0);
-   const LLVMValueRef quads[2] = { LLVMGetParam(func, 1), LLVMGetParam(func, 2) };
-   const LLVMValueRef outs[2] = { LLVMGetParam(func, 3), LLVMGetParam(func, 4) };
-   LLVMValueRef mask_ptr = LLVMGetParam(func, 5);
-   /* q0 and q1 are the same quad when it is alone: read-only, they may alias */
+   LLVMValueRef mask_ptr = LLVMGetParam(func, 3);
    lp_add_function_attr(func, 1, LP_FUNC_ATTR_NOALIAS);
    lp_add_function_attr(func, 4, LP_FUNC_ATTR_NOALIAS);
-   lp_add_function_attr(func, 5, LP_FUNC_ATTR_NOALIAS);
-   lp_add_function_attr(func, 6, LP_FUNC_ATTR_NOALIAS);
 
    LLVMBasicBlockRef block = LLVMAppendBasicBlockInContext(lc, func, "entry");
    LLVMPositionBuilderAtEnd(b, block);
+
+   /* the quads and their outputs: q[k], out[k] (the quads repeat the first
+    * where fewer are real: read-only, they may alias) */
+   LLVMValueRef quads[FP_JIT_MAX_QUADS], outs[FP_JIT_MAX_QUADS];
+   for (unsigned k = 0; k < nq; k++) {
+      LLVMValueRef idx = lp_build_const_int32(gallivm, (int)k);
+      quads[k] = LLVMBuildLoad2(b, i8p, LLVMBuildGEP2(b, i8p, LLVMGetParam(func, 1), &idx, 1, ""),
+                                "");
+      outs[k] = LLVMBuildLoad2(b, i8p, LLVMBuildGEP2(b, i8p, LLVMGetParam(func, 2), &idx, 1, ""),
+                               "");
+   }
 
    struct lp_build_mask_context mask;
    LLVMValueRef mask_in = LLVMBuildLoad2(b, ivec, mask_ptr, "");
@@ -411,23 +419,41 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
    return true;
 }
 
+/* Quads a call (docs/jit.md): four (sixteen lanes) where the shader
+ * samples a texture and the texture unit has its four-quad functions (the
+ * 512-bit lanes: their two vectors of pairs overlap a sample's long chain
+ * of latencies), two otherwise (a shader without a texture gains nothing
+ * from sixteen lanes, and a primitive's last group would leave more of
+ * them idle); one with noskip. */
+static unsigned fp_jit_quads_a_call(const struct tgsi_shader_info *info)
+{
+   const unsigned debug = fp_env_debug();
+   if (debug & FP_DEBUG_NOSKIP)
+      return 1;
+   if ((info->file_count[TGSI_FILE_SAMPLER] > 0 || info->file_count[TGSI_FILE_SAMPLER_VIEW] > 0) &&
+       !(debug & FP_DEBUG_SCALAR) &&
+       rast_lanes()->tex_group == 4)
+      return 4;
+   return 2;
+}
+
 /* The shader's key in the on-disk cache: what the generated code depends on.
  * The driver's own layout (rast_quad, fp_jit_context) is in the cache's id. */
 static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
-                             const int *color_output, unsigned num_color_outputs,
+                             const int *color_output, unsigned num_color_outputs, unsigned quads,
                              unsigned char key[CACHE_KEY_SIZE], struct disk_cache *cache)
 {
    struct mesa_sha1 ctx;
    unsigned char sha1[20];
    /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad;
-    * 4: two quads a call */
-   static const char version[] = "fixpipe fs quad 4";
-   /* noskip leaves the quads laid out by the code out (fp_jit_sample.c)
-    * and shades one quad a call */
-   const bool noskip = fp_env_debug() & FP_DEBUG_NOSKIP;
+    * 4: two quads a call; 5: the quads by pointer arrays, four a call for
+    * texturing shaders */
+   static const char version[] = "fixpipe fs quad 5";
+   /* the quads a call (noskip: one, which also leaves the quads laid out
+    * by the code out: fp_jit_sample.c) */
    _mesa_sha1_init(&ctx);
    _mesa_sha1_update(&ctx, version, sizeof(version));
-   _mesa_sha1_update(&ctx, &noskip, sizeof(noskip));
+   _mesa_sha1_update(&ctx, &quads, sizeof(quads));
    _mesa_sha1_update(&ctx, tokens, tgsi_num_tokens(tokens) * sizeof(struct tgsi_token));
    _mesa_sha1_update(&ctx, &depth_output, sizeof(depth_output));
    _mesa_sha1_update(&ctx, &num_color_outputs, sizeof(num_color_outputs));
@@ -471,7 +497,8 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    struct lp_cached_code cached = { 0 };
    unsigned char key[CACHE_KEY_SIZE];
    if (cache) {
-      fp_jit_cache_key(tokens, depth_output, color_output, num_color_outputs, key, cache);
+      fp_jit_cache_key(tokens, depth_output, color_output, num_color_outputs,
+                       fp_jit_quads_a_call(info), key, cache);
       size_t size = 0;
       cached.data = disk_cache_get(cache, key, &size);
       cached.data_size = cached.data ? size : 0;
@@ -487,8 +514,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
       FREE(v);
       return NULL;
    }
-   /* two quads a call (docs/jit.md); noskip: one at a time */
-   v->quads = (fp_env_debug() & FP_DEBUG_NOSKIP) ? 1 : 2;
+   v->quads = fp_jit_quads_a_call(info);
    LLVMValueRef func = fp_build_fs(v->gallivm, nir, info, sampler, depth_output, color_output,
                                    num_color_outputs, v->quads);
    gallivm_compile_module(v->gallivm);

@@ -138,7 +138,7 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
    ctx->sampler = s;
    ctx->sample = fp_jit_sample;
    ctx->size = fp_jit_size;
-   ctx->sample_quad2 = fp_tgsi_sample_quad2;
+   ctx->sample_quads = fp_tgsi_sample_quads;
    ctx->quads = 2;
 }
 
@@ -220,7 +220,7 @@ LLVMValueRef fp_jit_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, uns
    return lp_build_extract_range(gallivm, v, k * RAST_QUAD_SIZE, RAST_QUAD_SIZE);
 }
 
-LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[2],
+LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[],
                                struct lp_type type4, unsigned nq)
 {
    return nq == 1 ? v[0] : lp_build_concat(gallivm, v, type4, nq);
@@ -232,7 +232,7 @@ static void fp_load_texels(struct gallivm_state *gallivm, struct lp_type type4,
 {
    LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
    for (unsigned c = 0; c < 4; c++) {
-      LLVMValueRef v[2];
+      LLVMValueRef v[FP_JIT_MAX_QUADS];
       for (unsigned k = 0; k < nq; k++) {
          LLVMValueRef idx = lp_build_const_int32(gallivm, k * 4 + c);
          v[k] = LLVMBuildLoad2(gallivm->builder, fvec,
@@ -254,7 +254,7 @@ static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
           fp_control(key) != TGSI_SAMPLER_DERIVS_EXPLICIT;
 }
 
-/* A plain 2-D sample on the two quads of a call: the struct tex_quad
+/* A plain 2-D sample on the quads of a call: the struct tex_quad
  * fp_tgsi_get_samples would build, one a quad, stored by the code, and one
  * call into the unit's glue. */
 static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_sampler_params *params)
@@ -287,9 +287,10 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
    LLVMValueRef ctl = lp_build_const_int32(gallivm, control);
    LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
                                         offsetof(struct fp_jit_context, quads), i32);
-   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, vp, vp };
-   LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, q, rgba };
-   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quad2),
+   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, i32, vp, vp };
+   LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, lp_build_const_int32(gallivm, nq),
+                           q, rgba };
+   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quads),
                     arg_types, args, ARRAY_SIZE(args));
    fp_load_texels(gallivm, type4, rgba, nq, params);
 }
@@ -369,32 +370,34 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
    /* noskip compiles one quad a call and sends every instruction through
     * get_samples; a dynamic unit index, which may differ between the two
     * quads, takes the call per quad below */
-   if (nq == 2 && fp_plain_2d(target, params->sample_key) && !params->texture_index_offset) {
+   if (nq >= 2 && fp_plain_2d(target, params->sample_key) && !params->texture_index_offset) {
       fp_emit_tex_quad(gallivm, params);
       return;
    }
 
-   /* quad by quad; the second only where it is not the first again (a quad
-    * alone: fp_jit_context.quads), its texels zero there */
+   /* quad by quad; the later ones only where they are real (not the first
+    * again: fp_jit_context.quads), their texels zero otherwise */
    struct lp_type type4 = params->type;
    type4.length = RAST_QUAD_SIZE;
    LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
    LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
    fp_emit_tex_general(js, gallivm, params, key, 0, nq, rgba);
-   if (nq == 2) {
+   if (nq > 1) {
       LLVMBuilderRef b = gallivm->builder;
       LLVMTypeRef i32 = LLVMInt32TypeInContext(gallivm->context);
-      for (unsigned c = 0; c < 4; c++)
-         fp_store_vec(gallivm, rgba, fvec, 4 + c, NULL);
+      for (unsigned i = 4; i < 4 * nq; i++)
+         fp_store_vec(gallivm, rgba, fvec, i, NULL);
       LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
                                            offsetof(struct fp_jit_context, quads), i32);
-      struct lp_build_if_state ifs;
-      lp_build_if(&ifs, gallivm, LLVMBuildICmp(b, LLVMIntEQ, quads,
-                                               lp_build_const_int32(gallivm, 2), ""));
-      LLVMValueRef idx = lp_build_const_int32(gallivm, 4);
-      fp_emit_tex_general(js, gallivm, params, key, 1, nq,
-                          LLVMBuildGEP2(b, fvec, rgba, &idx, 1, ""));
-      lp_build_endif(&ifs);
+      for (unsigned k = 1; k < nq; k++) {
+         struct lp_build_if_state ifs;
+         lp_build_if(&ifs, gallivm, LLVMBuildICmp(b, LLVMIntUGT, quads,
+                                                  lp_build_const_int32(gallivm, k), ""));
+         LLVMValueRef idx = lp_build_const_int32(gallivm, 4 * k);
+         fp_emit_tex_general(js, gallivm, params, key, k, nq,
+                             LLVMBuildGEP2(b, fvec, rgba, &idx, 1, ""));
+         lp_build_endif(&ifs);
+      }
    }
    fp_load_texels(gallivm, type4, rgba, nq, params);
 }

@@ -349,7 +349,7 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
    return fp_tex_bind(ts, sview_index, fv, ss);
 }
 
-/* `n` quads through the unit (one, or two in one call), and their counts. */
+/* `n` quads through the unit (one, or up to four in one call), and their counts. */
 static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_unit *u,
                                   const struct tex_quad *q, unsigned n,
                                   enum tgsi_sampler_control control,
@@ -361,10 +361,12 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
    ts->quads += n;
    ts->texels += n * 4 * u->taps;
    ts->skip_lod += n * (u->lod_skipped && lod_from_diffs);
-   if (n == 2)
+   if (n == 1)
+      tex_unit_sample(u, q, ctl, rgba[0]);
+   else if (n == 2)
       tex_unit_sample2(u, q, ctl, rgba);
    else
-      tex_unit_sample(u, q, ctl, rgba[0]);
+      tex_unit_sample4(u, q, n, ctl, rgba);
    if (unlikely(ts->fp->vectors_on))
       rast_vectors_tex(ts->rast, u, q, n, ctl, (const float (*)[4][4])rgba);
    fp_tex_stats(ts);
@@ -445,22 +447,26 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
    fp_unit_sample(ts, u, &q, 1, control, (float(*)[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])rgba);
 }
 
-/* Two quads the compiled code laid out itself (fp_jit_sample.c: a plain
+/* The quads the compiled code laid out itself (fp_jit_sample.c: a plain
  * 2-D sample, the operands fp_tgsi_get_samples would have built), in one
- * call of the unit.  `quads` 1: the second is the first again (a quad
- * shaded alone on eight lanes) and is not sampled, its texels zero. */
-void fp_tgsi_sample_quad2(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
+ * call of the unit: `quads` of them real, `max` laid out.  The others
+ * repeat the first (a quad shaded alone, the last of a primitive) and are
+ * not sampled, their texels zero. */
+void fp_tgsi_sample_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
                           uint32_t sampler_index, uint32_t control, uint32_t quads,
-                          const struct tex_quad *q, float rgba[2][4][TGSI_QUAD_SIZE])
+                          uint32_t max, const struct tex_quad *q,
+                          float rgba[][4][TGSI_QUAD_SIZE])
 {
    struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
    const struct fp_sampler_view *fv;
    const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
-   if (!u || quads < 2)
-      memset(rgba, 0, sizeof(float) * 2 * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
+   const unsigned n = quads < 1 ? 1 : quads > max ? max : quads;
+   if (!u || n < max)
+      memset(rgba[u ? n : 0], 0, sizeof(float) * (max - (u ? n : 0)) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
    if (u)
-      fp_unit_sample(ts, u, q, quads < 2 ? 1 : 2, (enum tgsi_sampler_control)control, rgba);
+      fp_unit_sample(ts, u, q, n, (enum tgsi_sampler_control)control, rgba);
 }
+
 
 static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                              int level, int dims[4])

@@ -68,29 +68,51 @@ static inline unsigned shade(struct rast_context *rc, struct rast_quad *q, unsig
    return kept;
 }
 
-/* The same on two quads, in one call of the shader where both have live
- * pixels (m0, m1), their outputs to be->out and be->out2; returns the
- * pixels kept, q0's in bits 0-3 and q1's in bits 4-7. */
-static inline unsigned shade_pair(struct rast_context *rc, struct rast_backend *be,
-                                  struct rast_quad *q0, unsigned m0, struct rast_quad *q1,
-                                  unsigned m1)
+/* The same on n quads of a primitive, in one call of the shader for those
+ * with live pixels (quad i's in bits 4i to 4i + 3 of `masks`), quad i's
+ * outputs to be->out[i]; returns the pixels kept, in the same bits.  A
+ * quad left without live pixels (the early tests) is not shaded. */
+static inline unsigned shade_group(struct rast_context *rc, struct rast_backend *be,
+                                   struct rast_quad *const q[], unsigned n, unsigned masks)
 {
-   if (!m0 || !m1)
-      return (m0 ? shade(rc, q0, m0, &be->out) : 0) |
-             (m1 ? shade(rc, q1, m1, &be->out2) << 4 : 0);
-   const unsigned saved0 = q0->mask, saved1 = q1->mask;
-   q0->mask = m0;
-   q1->mask = m1;
-   if (rc->fs.fetch_mask) {
-      fetch_targets(rc, be, q0);
-      fetch_targets(rc, be, q1);
+   struct rast_quad *live[RAST_GROUP_MAX];
+   struct rast_shaded_quad *out[RAST_GROUP_MAX];
+   unsigned saved[RAST_GROUP_MAX], at[RAST_GROUP_MAX], nl = 0;
+   for (unsigned i = 0; i < n; i++) {
+      const unsigned m = masks >> 4 * i & 15;
+      if (!m)
+         continue;
+      saved[nl] = q[i]->mask;
+      q[i]->mask = m;
+      at[nl] = i;
+      live[nl] = q[i];
+      out[nl++] = &be->out[i];
+      if (rc->fs.fetch_mask)
+         fetch_targets(rc, be, q[i]);
+      rc->stats.pixels_shaded += rast_popcount4(m);
    }
-   rc->stats.pixels_shaded += rast_popcount4(m0) + rast_popcount4(m1);
-   const unsigned kept = rc->fs.shade2(rc->fs.ctx, q0, q1, &be->out, &be->out2) &
-                         (m0 | m1 << 4);
-   q0->mask = saved0;
-   q1->mask = saved1;
+   unsigned got;
+   if (nl >= 2)
+      got = rc->fs.shade_n(rc->fs.ctx, (const struct rast_quad *const *)live, out, nl);
+   else if (nl == 1)
+      got = rc->fs.shade(rc->fs.ctx, live[0], out[0]);
+   else
+      return 0;
+   unsigned kept = 0;
+   for (unsigned j = 0; j < nl; j++) {
+      kept |= (got >> 4 * j & live[j]->mask) << 4 * at[j];
+      live[j]->mask = saved[j];
+   }
    return kept;
+}
+
+/* The masks of a group's quads, quad i's in bits 4i to 4i + 3. */
+static inline unsigned group_masks(struct rast_quad *const q[], unsigned n)
+{
+   unsigned m = 0;
+   for (unsigned i = 0; i < n; i++)
+      m |= q[i]->mask << 4 * i;
+   return m;
 }
 
 static inline void color_stage(const struct rast_backend *be, const struct rast_shaded_quad *out,
@@ -120,28 +142,32 @@ static void quad_count(struct rast_context *rc, struct rast_quad *q)
 static void quad_color(struct rast_context *rc, struct rast_quad *q)
 {
    struct rast_backend *be = backend(rc);
-   const unsigned mask = shade(rc, q, q->mask, &be->out);
+   const unsigned mask = shade(rc, q, q->mask, &be->out[0]);
    rc->stats.samples_passed += rast_popcount4(mask);
    if (mask)
-      color_stage(be, &be->out, q->x, q->y, mask);
+      color_stage(be, &be->out[0], q->x, q->y, mask);
 }
 
-/* color_stage for a pair, `kept` as shade_pair returns it. */
-static inline void color_stage_pair(const struct rast_backend *be, const struct rast_quad *q0,
-                                    const struct rast_quad *q1, unsigned kept)
+/* color_stage for a group, `kept` as shade_group returns it. */
+static inline void color_stage_group(const struct rast_backend *be, struct rast_quad *const q[],
+                                     unsigned n, unsigned kept)
 {
-   if (kept & 15)
-      color_stage(be, &be->out, q0->x, q0->y, kept & 15);
-   if (kept >> 4)
-      color_stage(be, &be->out2, q1->x, q1->y, kept >> 4);
+   for (unsigned i = 0; i < n; i++)
+      if (kept >> 4 * i & 15)
+         color_stage(be, &be->out[i], q[i]->x, q[i]->y, kept >> 4 * i & 15);
 }
 
-static void pair_color(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
+static inline unsigned popcount_group(unsigned kept)
+{
+   return (unsigned)__builtin_popcount(kept);
+}
+
+static void group_color(struct rast_context *rc, struct rast_quad *const q[], unsigned n)
 {
    struct rast_backend *be = backend(rc);
-   const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask);
-   rc->stats.samples_passed += rast_popcount4(kept & 15) + rast_popcount4(kept >> 4);
-   color_stage_pair(be, q0, q1, kept);
+   const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n));
+   rc->stats.samples_passed += popcount_group(kept);
+   color_stage_group(be, q, n, kept);
 }
 
 /* No depth/stencil, no blend, all channels, one 8-bit target. */
@@ -149,24 +175,22 @@ static void pair_color(struct rast_context *rc, struct rast_quad *q0, struct ras
    static void quad_fast_##NAME(struct rast_context *rc, struct rast_quad *q) \
    { \
       struct rast_backend *be = backend(rc); \
-      const unsigned mask = shade(rc, q, q->mask, &be->out); \
+      const unsigned mask = shade(rc, q, q->mask, &be->out[0]); \
       rc->stats.samples_passed += rast_popcount4(mask); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
       rast_store8_quad(p->base, p->stride, q->x, q->y, mask, \
-                       (chan_quad)be->out.color[p->src], R, G, B, A, X8); \
+                       (chan_quad)be->out[0].color[p->src], R, G, B, A, X8); \
    } \
-   static void pair_fast_##NAME(struct rast_context *rc, struct rast_quad *q0, \
-                                struct rast_quad *q1) \
+   static void group_fast_##NAME(struct rast_context *rc, struct rast_quad *const q[], \
+                                 unsigned n) \
    { \
       struct rast_backend *be = backend(rc); \
-      const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask); \
-      const unsigned k0 = kept & 15, k1 = kept >> 4; \
-      rc->stats.samples_passed += rast_popcount4(k0) + rast_popcount4(k1); \
+      const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n)); \
+      rc->stats.samples_passed += popcount_group(kept); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
-      rast_store8_quad(p->base, p->stride, q0->x, q0->y, k0, \
-                       (chan_quad)be->out.color[p->src], R, G, B, A, X8); \
-      rast_store8_quad(p->base, p->stride, q1->x, q1->y, k1, \
-                       (chan_quad)be->out2.color[p->src], R, G, B, A, X8); \
+      for (unsigned i = 0; i < n; i++) \
+         rast_store8_quad(p->base, p->stride, q[i]->x, q[i]->y, kept >> 4 * i & 15, \
+                          (chan_quad)be->out[i].color[p->src], R, G, B, A, X8); \
    }
 
 QUAD_FAST8(RGBA8, 0, 1, 2, 3, false)
@@ -191,18 +215,20 @@ static void quad_early(struct rast_context *rc, struct rast_quad *q)
    unsigned mask = early_zs(rc, be, q);
    if (!mask || !be->shade_needed)
       return;
-   mask = shade(rc, q, mask, &be->out);
+   mask = shade(rc, q, mask, &be->out[0]);
    if (mask)
-      color_stage(be, &be->out, q->x, q->y, mask);
+      color_stage(be, &be->out[0], q->x, q->y, mask);
 }
 
-static void pair_early(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
+static void group_early(struct rast_context *rc, struct rast_quad *const q[], unsigned n)
 {
    struct rast_backend *be = backend(rc);
-   const unsigned m0 = early_zs(rc, be, q0), m1 = early_zs(rc, be, q1);
-   if (!(m0 | m1) || !be->shade_needed)
+   unsigned masks = 0;
+   for (unsigned i = 0; i < n; i++)
+      masks |= early_zs(rc, be, q[i]) << 4 * i;
+   if (!masks || !be->shade_needed)
       return;
-   color_stage_pair(be, q0, q1, shade_pair(rc, be, q0, m0, q1, m1));
+   color_stage_group(be, q, n, shade_group(rc, be, q, n, masks));
 }
 
 /* The shader first: it may discard or write depth. */
@@ -222,19 +248,18 @@ static inline void late_zs_color(struct rast_context *rc, struct rast_backend *b
 static void quad_late(struct rast_context *rc, struct rast_quad *q)
 {
    struct rast_backend *be = backend(rc);
-   const unsigned mask = shade(rc, q, q->mask, &be->out);
+   const unsigned mask = shade(rc, q, q->mask, &be->out[0]);
    if (mask)
-      late_zs_color(rc, be, q, &be->out, mask);
+      late_zs_color(rc, be, q, &be->out[0], mask);
 }
 
-static void pair_late(struct rast_context *rc, struct rast_quad *q0, struct rast_quad *q1)
+static void group_late(struct rast_context *rc, struct rast_quad *const q[], unsigned n)
 {
    struct rast_backend *be = backend(rc);
-   const unsigned kept = shade_pair(rc, be, q0, q0->mask, q1, q1->mask);
-   if (kept & 15)
-      late_zs_color(rc, be, q0, &be->out, kept & 15);
-   if (kept >> 4)
-      late_zs_color(rc, be, q1, &be->out2, kept >> 4);
+   const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n));
+   for (unsigned i = 0; i < n; i++)
+      if (kept >> 4 * i & 15)
+         late_zs_color(rc, be, q[i], &be->out[i], kept >> 4 * i & 15);
 }
 
 static void backend_choose(struct rast_context *rc);
@@ -249,7 +274,7 @@ void rast_backend_validate(struct rast_context *rc)
 static void backend_choose(struct rast_context *rc)
 {
    struct rast_backend *be = backend(rc);
-   rc->quad2 = NULL;
+   rc->quads = NULL;
    if (!be) {
       be = calloc(1, sizeof *be);
       rc->back_priv = be;
@@ -270,29 +295,29 @@ static void backend_choose(struct rast_context *rc)
    const bool a2c = rc->blend.alpha_to_coverage && rc->fb.samples > 1;
    be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard || a2c;
 
-   rast_quad2_func pair = NULL;
+   rast_quads_func group = NULL;
    if (be->zs) {
       const bool late = rc->fs.writes_depth || rc->fs.may_discard || a2c;
       rc->quad = late ? quad_late : quad_early;
-      pair = late ? pair_late : pair_early;
+      group = late ? group_late : group_early;
    } else if (!be->shade_needed) {
       rc->quad = quad_count;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_RGBA8) {
       rc->quad = quad_fast_RGBA8;
-      pair = pair_fast_RGBA8;
+      group = group_fast_RGBA8;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_BGRA8) {
       rc->quad = quad_fast_BGRA8;
-      pair = pair_fast_BGRA8;
+      group = group_fast_BGRA8;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_BGRX8) {
       rc->quad = quad_fast_BGRX8;
-      pair = pair_fast_BGRX8;
+      group = group_fast_BGRX8;
    } else {
       rc->quad = quad_color;
-      pair = pair_color;
+      group = group_color;
    }
-   /* pairs only where the shader has its eight-lane form; noskip: one by one */
-   if (rc->fs.shade2 && !(rc->opts & RAST_OPT_NOSKIP))
-      rc->quad2 = pair;
+   /* groups only where the shader has its wide form; noskip: one by one */
+   if (rc->fs.shade_n && !(rc->opts & RAST_OPT_NOSKIP))
+      rc->quads = group;
 }
 
 void rast_backend_sample(struct rast_context *rc, unsigned s)
@@ -318,5 +343,5 @@ void rast_backend_destroy(struct rast_context *rc)
    free(rc->back_priv);
    rc->back_priv = NULL;
    rc->quad = NULL;
-   rc->quad2 = NULL;
+   rc->quads = NULL;
 }

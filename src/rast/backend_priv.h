@@ -121,7 +121,7 @@ struct rast_backend {
    unsigned sample;               /* the sample plane drawn (rast_backend_sample) */
 
    /* Scratch for the shader's output: not on the stack of every quad. */
-   struct rast_shaded_quad out, out2;   /* out2: the second quad of a pair */
+   struct rast_shaded_quad out[RAST_GROUP_MAX];   /* [i]: the i-th quad of a group */
 };
 
 /* backend_zs.c */

@@ -218,24 +218,35 @@ struct rast_front {
    unsigned nsec;
 
    struct fr_row row[2];       /* the two scan lines of a quad row */
-   /* The span processor fills quad[cur].  With rc->quad2 a covered quad
-    * waits in `pending` for the next one of its primitive, and the two go
-    * to the back end together (the shader on eight lanes); what the
-    * primitive sets once (constants, facing) is in both. */
-   struct rast_quad quad[2];
-   unsigned cur;
-   struct rast_quad *pending;
+   /* The span processor fills quad[npending].  With rc->quads a covered
+    * quad waits among the `npending` for the next ones of its primitive,
+    * and a full group (rc->fs.group) goes to the back end together (the
+    * shader on eight or sixteen lanes); what the primitive sets once
+    * (constants, facing) is in every quad. */
+   struct rast_quad quad[RAST_GROUP_MAX];
+   struct rast_quad *group[RAST_GROUP_MAX];   /* &quad[i] */
+   unsigned npending;
 };
 
-/* The quad left waiting at the end of a primitive goes alone.  It is of
- * this thread's rows, so it counts here whoever's row came last. */
+/* The primitive's facing, in every quad of a group. */
+static inline void fr_set_facing(struct rast_front *fr, bool front)
+{
+   for (unsigned i = 0; i < RAST_GROUP_MAX; i++)
+      fr->quad[i].front_facing = front;
+}
+
+/* The quads left waiting at the end of a primitive go as they are.  They
+ * are of this thread's rows, so they count here whoever's row came last. */
 static inline void fr_quads_flush(struct rast_context *rc, struct rast_front *fr)
 {
-   if (fr->pending) {
+   if (fr->npending) {
       const bool counting = rc->counting;
       rast_count_stretch(rc, true);
-      rc->quad(rc, fr->pending);
-      fr->pending = NULL;
+      if (fr->npending == 1)
+         rc->quad(rc, &fr->quad[0]);
+      else
+         rc->quads(rc, fr->group, fr->npending);
+      fr->npending = 0;
       rast_count_stretch(rc, counting);
    }
 }

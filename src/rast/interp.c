@@ -712,7 +712,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          count_modes(rc, mode, nq, nfix);
    }
 
-   struct rast_quad *q = &fr->quad[fr->cur];
+   struct rast_quad *q = &fr->quad[fr->npending];
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
    if (has_persp)
@@ -789,16 +789,16 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       q->mask = mask;
       rc->stats.quads++;
       rc->stats.pixels_covered += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
-      if (!rc->quad2) {
+      if (!rc->quads) {
          rc->quad(rc, q);
-      } else if (!fr->pending) {
-         fr->pending = q;
-         fr->cur ^= 1;
-         q = &fr->quad[fr->cur];
+      } else if (++fr->npending < rc->fs.group) {
+         q = &fr->quad[fr->npending];
          q->y = qy;
       } else {
-         rc->quad2(rc, fr->pending, q);
-         fr->pending = NULL;
+         rc->quads(rc, fr->group, fr->npending);
+         fr->npending = 0;
+         q = &fr->quad[0];
+         q->y = qy;
       }
    }
    if (has_persp)

@@ -40,9 +40,14 @@ struct rast_lanes {
     * (not optimistically, dfx_lanes.h).
     * `pair`: the function for two quads of that unit in one call, their
     * operations side by side, or NULL where the state has none (then the
-    * quad function twice). */
+    * quad function twice); `four`: the function for four quads, two
+    * vectors of pairs step by step (the 512-bit set), or NULL (then the
+    * pair function twice). */
    tex_quad_fn (*tex_dfx19_2d)(const struct tex_unit *u, bool noskip, bool nolod,
-                               tex_quad2_fn *pair);
+                               tex_quad2_fn *pair, tex_quad4_fn *four);
+   /* the most quads tex_dfx19_2d's functions take in one call: 4 where
+    * it has four-quad functions, else 2 */
+   unsigned tex_group;
 };
 
 #define LANES_GLUE2(a, b) a##b

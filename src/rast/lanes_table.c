@@ -20,6 +20,9 @@ const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
    .persp2_dfx19 = LANES_FN(persp2_dfx19_lanes),
 #if defined(DFXL_N) && DFXL_N == 8
    .persp4_dfx19 = LANES_FN(persp4_dfx19_lanes),
+   .tex_group = 4,
+#else
+   .tex_group = 2,
 #endif
    .tex_dfx19_2d = LANES_FN(tex_dfx19_2d_lanes),
 };

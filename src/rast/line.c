@@ -249,8 +249,7 @@ void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (
    rast_interp_modes_setup(rc, fr, 0, 1, 3);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 3);
-   fr->quad[0].front_facing = fr->quad[1].front_facing =
-      !rc->vl.has_face || o1[rc->vl.face_slot][0] != 0.0f;
+   fr_set_facing(fr, !rc->vl.has_face || o1[rc->vl.face_slot][0] != 0.0f);
    rast_setup_constants(fr, rc->rs.flatshade_first ? o1 : o2);
    rast_scan_convex(rc, fr);
 }

@@ -48,9 +48,8 @@ const float rast_sample_pos_4x[RAST_MSAA_SAMPLES][2] = {
 
 typedef unsigned (*msaa_shade_func)(void *ctx, const struct rast_quad *quad,
                                     struct rast_shaded_quad *out);
-typedef unsigned (*msaa_shade2_func)(void *ctx, const struct rast_quad *q0,
-                                     const struct rast_quad *q1, struct rast_shaded_quad *out0,
-                                     struct rast_shaded_quad *out1);
+typedef unsigned (*msaa_shade_n_func)(void *ctx, const struct rast_quad *const q[],
+                                      struct rast_shaded_quad *const out[], unsigned n);
 
 struct rast_msaa {
    /* The strip's cache of shaded pixels: [row - y0][x]. */
@@ -63,7 +62,7 @@ struct rast_msaa {
    int64_t y0;                    /* the strip's first scan line, in the target */
    /* While the walks run: the real shader and the sample being drawn. */
    msaa_shade_func shade;
-   msaa_shade2_func shade2;       /* its eight-lane form, or NULL */
+   msaa_shade_n_func shade_n;     /* its wide form, or NULL */
    void *ctx;
    unsigned sample;
    bool centre;
@@ -202,25 +201,31 @@ static unsigned cached_shade(void *ctx, const struct rast_quad *q, struct rast_s
 }
 
 /* Once a sample (framebuffer fetch): the shader itself, on one quad or,
- * in its eight-lane form, on two; alpha to coverage as above. */
+ * in its wide form, on several; alpha to coverage as above. */
 static unsigned sample_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    const struct rast_msaa *m = ((struct rast_context *)ctx)->msaa;
    return a2c(m, out, m->shade(m->ctx, q, out) & q->mask);
 }
 
-static unsigned sample_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
-                              struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
+static unsigned sample_shade_n(void *ctx, const struct rast_quad *const q[],
+                               struct rast_shaded_quad *const out[], unsigned n)
 {
    const struct rast_msaa *m = ((struct rast_context *)ctx)->msaa;
-   const unsigned kept = m->shade2(m->ctx, q0, q1, out0, out1);
-   return a2c(m, out0, kept & q0->mask) | a2c(m, out1, kept >> 4 & q1->mask) << 4;
+   const unsigned got = m->shade_n(m->ctx, q, out, n);
+   unsigned kept = 0;
+   for (unsigned i = 0; i < n; i++)
+      kept |= a2c(m, out[i], got >> 4 * i & q[i]->mask) << 4 * i;
+   return kept;
 }
 
-static unsigned cached_shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
-                              struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
+static unsigned cached_shade_n(void *ctx, const struct rast_quad *const q[],
+                               struct rast_shaded_quad *const out[], unsigned n)
 {
-   return cached_shade(ctx, q0, out0) | cached_shade(ctx, q1, out1) << 4;
+   unsigned kept = 0;
+   for (unsigned i = 0; i < n; i++)
+      kept |= cached_shade(ctx, q[i], out[i]) << 4 * i;
+   return kept;
 }
 
 /* One walk.  The set-up's counters (the primitive, its vertices) count
@@ -260,21 +265,21 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    top &= ~(int64_t)1;
 
    const rast_quad_func quad = rc->quad;
-   const rast_quad2_func quad2 = rc->quad2;
+   const rast_quads_func quads = rc->quads;
    const struct rast_shader fs = rc->fs;
    const bool counting = rc->counting;
    const bool shades = rast_backend_shades(rc);
    const bool per_sample = fs.fetch_mask != 0;
    bool first = true;
    m->shade = fs.shade;
-   m->shade2 = fs.shade2;
+   m->shade_n = fs.shade_n;
    m->ctx = fs.ctx;
    m->a2c = rc->blend.alpha_to_coverage;
    rc->msaa_busy = true;
    /* the samples' back end shades through the cache; the centre's calls
     * the shader itself (centre_quad) */
    rc->fs.shade = per_sample ? sample_shade : cached_shade;
-   rc->fs.shade2 = !fs.shade2 ? NULL : per_sample ? sample_shade2 : cached_shade2;
+   rc->fs.shade_n = !fs.shade_n ? NULL : per_sample ? sample_shade_n : cached_shade_n;
    rc->fs.ctx = rc;
 
    for (int64_t y = top; y < bot; y += MSAA_STRIP_ROWS) {
@@ -289,12 +294,12 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
       if (shades && !per_sample) {
          fr->Hx = fr->Hy = fr->H;
          rc->quad = centre_quad;
-         rc->quad2 = NULL;
+         rc->quads = NULL;
          one_pass(rc, kind, v0, v1, v2, &first);
       }
 
       rc->quad = quad;
-      rc->quad2 = quad2;
+      rc->quads = quads;
       for (unsigned k = 0; k < RAST_MSAA_SAMPLES; k++) {
          if (!(samples >> k & 1u))
             continue;

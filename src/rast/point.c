@@ -174,8 +174,7 @@ void rast_point_pass(struct rast_context *rc, const float (*v)[4])
    }
 
    rast_interp_modes_off(fr);
-   fr->quad[0].front_facing = fr->quad[1].front_facing =
-      !rc->vl.has_face || v[rc->vl.face_slot][0] != 0.0f;
+   fr_set_facing(fr, !rc->vl.has_face || v[rc->vl.face_slot][0] != 0.0f);
    rast_setup_constants(fr, v);
    rast_scan_convex(rc, fr);
    rc->clip = clip;

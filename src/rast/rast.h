@@ -28,6 +28,7 @@
 #define RAST_MAX_VARYINGS 32
 #define RAST_MAX_CBUFS    8
 #define RAST_MAX_THREADS  64
+#define RAST_GROUP_MAX    4   /* quads a call of a shader's wide form (rast_shader.shade_n) */
 #define RAST_QUAD_SIZE    4   /* pixel i of a quad: 0 (x,y) 1 (x+1,y) 2 (x,y+1) 3 (x+1,y+1) */
 
 /* ------------------------------------------------------------------ */
@@ -324,11 +325,13 @@ struct rast_shader {
    void *thread_ctx[RAST_MAX_THREADS];
    unsigned (*shade)(void *ctx, const struct rast_quad *quad,
                      struct rast_shaded_quad *out);
-   /* Two quads of one primitive in one call, where the shader has a form
-    * eight lanes wide (NULL: one quad at a time): the pixels kept, q0's in
-    * bits 0-3 and q1's in bits 4-7. */
-   unsigned (*shade2)(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
-                      struct rast_shaded_quad *out0, struct rast_shaded_quad *out1);
+   /* Up to `group` quads of one primitive in one call, where the shader
+    * has a form eight or sixteen lanes wide (NULL: one quad at a time):
+    * quad i from q[i], its outputs to out[i]; returns the pixels kept,
+    * quad i's in bits 4i to 4i + 3.  n is 2 to `group`. */
+   unsigned (*shade_n)(void *ctx, const struct rast_quad *const q[], struct rast_shaded_quad *const out[],
+                       unsigned n);
+   unsigned group;                   /* 2 or 4 with shade_n */
    unsigned num_outputs;             /* colour outputs written */
    bool writes_depth;
    bool color0_to_all;               /* gl_FragColor broadcast to every cbuf */

@@ -13,8 +13,8 @@ struct rast_context;
 /* The back end's entry, chosen by rast_backend_validate(): the quad's mask is
  * already clipped to the scissor and the framebuffer. */
 typedef void (*rast_quad_func)(struct rast_context *rc, struct rast_quad *q);
-typedef void (*rast_quad2_func)(struct rast_context *rc, struct rast_quad *q0,
-                                struct rast_quad *q1);
+typedef void (*rast_quads_func)(struct rast_context *rc, struct rast_quad *const q[],
+                                unsigned n);
 
 struct rast_context {
    const struct rast_profile *profile;
@@ -59,7 +59,8 @@ struct rast_context {
    struct rast_scissor clip;
    int64_t org_x, org_y;
    rast_quad_func quad;             /* back end */
-   rast_quad2_func quad2;           /* the same on two quads of a primitive; NULL: one by one */
+   /* the same on 2 to fs.group quads of a primitive; NULL: one by one */
+   rast_quads_func quads;
    /* RTL test vectors (vectors.c): recording or replaying; the quads of the
     * triangle being scanned go through the wrapper to vec_next_quad */
    struct rast_vectors *vec;

@@ -61,6 +61,8 @@ void rast_front_validate(struct rast_context *rc)
          abort();
    }
    struct rast_front *fr = rast_front(rc);
+   for (unsigned i = 0; i < RAST_GROUP_MAX; i++)
+      fr->group[i] = &fr->quad[i];
    const struct rast_profile *prof = rc->profile;
 
    fr->S = fx_one(prof->xy);
@@ -242,8 +244,9 @@ void rast_setup_constants(struct rast_front *fr, const float (*pv)[4])
    for (unsigned i = 0; i < fr->nconst; i++) {
       const struct fr_comp *c = &fr->cnst[i];
       float val = pv[c->slot][c->chan];
-      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-         fr->quad[0].in[c->var][c->chan][p] = fr->quad[1].in[c->var][c->chan][p] = val;
+      for (unsigned g = 0; g < RAST_GROUP_MAX; g++)
+         for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+            fr->quad[g].in[c->var][c->chan][p] = val;
    }
 }
 
@@ -387,7 +390,7 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
    bool front;
    if (!rast_triangle_counted(rc, rast_det(fr->X, fr->Y), &front))
       return;
-   fr->quad[0].front_facing = fr->quad[1].front_facing = front;
+   fr_set_facing(fr, front);
 
    rast_setup_rebase(rc, fr, v, 3);
    for (unsigned k = 0; k < 3; k++)
@@ -419,7 +422,7 @@ void rast_vec_replay_triangle(struct rast_context *rc, const struct rast_vec_tri
    bool front;
    if (!rast_triangle_counted(rc, rast_det(fr->X, fr->Y), &front))
       return;
-   fr->quad[0].front_facing = fr->quad[1].front_facing = front;
+   fr_set_facing(fr, front);
    /* the layout (replay_state) has no LINEAR component: vflt[] is 1/w, then
     * the PERSPECTIVE components' A/w */
    for (unsigned k = 0; k < 3; k++) {

@@ -154,6 +154,8 @@ typedef void (*tex_quad_fn)(const struct tex_unit *u, const struct tex_quad *q,
                             enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
 typedef void (*tex_quad2_fn)(const struct tex_unit *u, const struct tex_quad q[2],
                              enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD]);
+typedef void (*tex_quad4_fn)(const struct tex_unit *u, const struct tex_quad q[4],
+                             enum tex_lod_control ctl, float rgba[4][4][TEX_QUAD]);
 
 struct tex_unit {
    const struct numsys *ns;
@@ -173,6 +175,8 @@ struct tex_unit {
    /* two quads in one call, their operations side by side (the lanes'
     * specialised quads); NULL: quad twice */
    tex_quad2_fn quad2;
+   /* four quads in one call, two pairs step by step; NULL: quad2 twice */
+   tex_quad4_fn quad4;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
    uint32_t bind_serial;          /* which binding: RTL vectors dump a binding once */
    /* texel reads a pixel, for the counters: the minification filter's taps
@@ -226,6 +230,11 @@ void tex_unit_sample(const struct tex_unit *u, const struct tex_quad *q,
 /* Two quads: the same bits and range events as tex_unit_sample on each. */
 void tex_unit_sample2(const struct tex_unit *u, const struct tex_quad q[2],
                       enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD]);
+
+/* `n` quads (up to four; four in one call where the unit has quad4): the
+ * same bits and range events as tex_unit_sample on each. */
+void tex_unit_sample4(const struct tex_unit *u, const struct tex_quad *q, unsigned n,
+                      enum tex_lod_control ctl, float rgba[][4][TEX_QUAD]);
 
 /* The table path (struct numsys calls, the functions above) whatever the
  * number system: what tex_unit_sample does without u->quad, for tests

@@ -74,10 +74,11 @@ QUAD_FN(quad_float_2d, TEX_FK_FLOAT, 2)
 QUAD_FN(quad_float_3d, TEX_FK_FLOAT, 3)
 
 tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod,
-                            tex_quad2_fn *pair)
+                            tex_quad2_fn *pair, tex_quad4_fn *four)
 {
    *nolod = false;
    *pair = NULL;
+   *four = NULL;
    static const tex_quad_fn table[2][3] = {
       { quad_dfx19_1d, quad_dfx19_2d, quad_dfx19_3d },
       { quad_float_1d, quad_float_2d, quad_float_3d },
@@ -87,7 +88,7 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
    if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED) {
       if (!scalar && u->dims == 2 && rast_lanes()->tex_dfx19_2d) {
          *nolod = !noskip && tex_unit_lod_unused(u);
-         return rast_lanes()->tex_dfx19_2d(u, noskip, *nolod, pair);
+         return rast_lanes()->tex_dfx19_2d(u, noskip, *nolod, pair, four);
       }
       return table[0][u->dims - 1];
    }

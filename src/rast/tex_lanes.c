@@ -722,25 +722,17 @@ static inline __attribute__((always_inline)) bool t_by_row(struct dfxl ct)
                          __builtin_shufflevector((a).i1, (a).i1, __VA_ARGS__),              \
                          __builtin_shufflevector((a).w, (a).w, __VA_ARGS__) })
 
-/* pair2 above with both quads in one vector: each of its operations is
- * one instruction for the eight pixels, the same operations on the same
- * registers lane by lane.  Where s follows the columns, the four columns'
- * s go through the address unit (four lanes of eight, the others a copy),
- * where t follows the rows, the two rows'. */
-static inline __attribute__((always_inline)) bool
-pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX_QUAD],
-      const struct quad_kind k, const bool linear, unsigned *shared)
+/* The addresses of a pair in one vector (pair2 below, and each vector
+ * of pairs4): where s follows the columns, the four columns' s go through
+ * the address unit (four lanes of eight, the others a copy), where t
+ * follows the rows, the two rows'.  Returns how many of the two axes were
+ * shared, or -1 where a count fell in a shared lane (it would be counted
+ * once for the several pixels: such a pair, rare, is taken quad by quad). */
+static inline __attribute__((always_inline)) int
+pair_addr(const struct tex_unit *u, const struct quad_kind k, const bool linear,
+          struct dfxl cs, struct dfxl ct, struct lanes_addr *A, struct lanes_addr *B,
+          struct dfxl_stats *st)
 {
-   struct tex_fst x = { { 0, 0 }, { 0, 0 } };
-   struct dfxl_stats st = DFXL_STATS(true);
-   struct dfxl cs, ct;
-   lanes_i zoff = splat_i(0);
-   const struct tex_level *lv = &u->view.level[0];
-   coords(u, q, &cs, &ct, &x);
-   if (u->view.target == TEX_TARGET_2D_ARRAY)
-      for (unsigned p = 0; p < DFXL_N; p++)
-         zoff[p] = layer_of(u, q[p / TEX_QUAD].layer[p % TEX_QUAD]) * (int32_t)lv->img_stride;
-   struct lanes_addr A, B;
    const bool s_col = s_by_column(cs), t_row = t_by_row(ct);
    const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
    if (s_col && t_row && k.ws == k.wt) {
@@ -757,38 +749,119 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
 #undef BOTH
       const struct dfxl st_v = { __builtin_shufflevector(cs.v, ct.v, 0, 1, 4, 5, 8, 10, 8, 10) };
       struct lanes_addr AB;
-      lanes_addr_of(u, linear, (unsigned)k.ws, &both, st_v, &AB, &st);
-      A = SPREAD(AB, 0, 1, 0, 1, 2, 3, 2, 3);
-      B = SPREAD(AB, 4, 4, 5, 5, 4, 4, 5, 5);
+      lanes_addr_of(u, linear, (unsigned)k.ws, &both, st_v, &AB, st);
+      *A = SPREAD(AB, 0, 1, 0, 1, 2, 3, 2, 3);
+      *B = SPREAD(AB, 4, 4, 5, 5, 4, 4, 5, 5);
    } else {
       /* the address unit once per axis, on the columns' s or the rows' t
        * where they are shared (one copy of its code an axis) */
       const struct dfxl sv = { __builtin_shufflevector(cs.v, cs.v, 0, 1, 4, 5, 0, 1, 4, 5) };
       const struct dfxl tv = { __builtin_shufflevector(ct.v, ct.v, 0, 2, 0, 2, 0, 2, 0, 2) };
-      lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], s_col ? sv : cs, &A, &st);
-      lanes_addr_of(u, linear, (unsigned)k.wt, &ax[1], t_row ? tv : ct, &B, &st);
+      lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], s_col ? sv : cs, A, st);
+      lanes_addr_of(u, linear, (unsigned)k.wt, &ax[1], t_row ? tv : ct, B, st);
       if (s_col)
-         A = SPREAD(A, 0, 1, 0, 1, 2, 3, 2, 3);
+         *A = SPREAD(*A, 0, 1, 0, 1, 2, 3, 2, 3);
       if (t_row)
-         B = SPREAD(B, 0, 0, 1, 1, 0, 0, 1, 1);
+         *B = SPREAD(*B, 0, 0, 1, 1, 0, 0, 1, 1);
    }
-   /* as pair2 above: a count in a shared lane would be counted once (the
-    * copies are the same lanes again) */
-   if ((s_col || t_row) && dfxl_any((st.sat | st.flush) != 0))
-      return false;
-   *shared = (unsigned)s_col + (unsigned)t_row;
-   const bool border = may_border(k.ws, linear) || may_border(k.wt, linear);
-   lanes_f out[4];
-   soa_level2(u, linear, border, 0, &A, &B, zoff, out);
-   if (dfxl_any(dfxl_trouble(&st)))
-      return false;
+   /* the counts are numbers, not masks: compared with zero first */
+   if ((s_col || t_row) && dfxl_any((st->sat | st->flush) != 0))
+      return -1;
+   return (int)s_col + (int)t_row;
+}
+
+/* A vector's pixels' layers, as byte offsets. */
+static inline __attribute__((always_inline)) lanes_i pair_layers(const struct tex_unit *u,
+                                                                 const struct tex_quad q[2])
+{
+   lanes_i zoff = splat_i(0);
+   if (u->view.target == TEX_TARGET_2D_ARRAY)
+      for (unsigned p = 0; p < DFXL_N; p++)
+         zoff[p] = layer_of(u, q[p / TEX_QUAD].layer[p % TEX_QUAD]) *
+                   (int32_t)u->view.level[0].img_stride;
+   return zoff;
+}
+
+/* A vector's results to its two quads' arrays. */
+static inline __attribute__((always_inline)) void pair_store(const lanes_f out[4],
+                                                             float rgba[2][4][TEX_QUAD])
+{
    for (unsigned ch = 0; ch < 4; ch++) {
       const lanes_v4f lo = __builtin_shufflevector(out[ch], out[ch], 0, 1, 2, 3),
                       hi = __builtin_shufflevector(out[ch], out[ch], 4, 5, 6, 7);
       memcpy(rgba[0][ch], &lo, sizeof(lo));
       memcpy(rgba[1][ch], &hi, sizeof(hi));
    }
+}
+
+/* pair2 above with both quads in one vector: each of its operations is
+ * one instruction for the eight pixels, the same operations on the same
+ * registers lane by lane. */
+static inline __attribute__((always_inline)) bool
+pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX_QUAD],
+      const struct quad_kind k, const bool linear, unsigned *shared)
+{
+   struct tex_fst x = { { 0, 0 }, { 0, 0 } };
+   struct dfxl_stats st = DFXL_STATS(true);
+   struct dfxl cs, ct;
+   coords(u, q, &cs, &ct, &x);
+   const lanes_i zoff = pair_layers(u, q);
+   struct lanes_addr A, B;
+   const int sh = pair_addr(u, k, linear, cs, ct, &A, &B, &st);
+   if (sh < 0)
+      return false;
+   *shared = (unsigned)sh;
+   const bool border = may_border(k.ws, linear) || may_border(k.wt, linear);
+   lanes_f out[4];
+   soa_level2(u, linear, border, 0, &A, &B, zoff, out);
+   if (dfxl_any(dfxl_trouble(&st)))
+      return false;
+   pair_store(out, rgba);
    dfxl_stats_add(&x.d, st);
+   tex_fst_flush(&x, u->stats);
+   return true;
+}
+
+/* Four quads, two vectors of pair2, each step for both vectors before the
+ * next: a pair's chain of dependent operations (coordinate input,
+ * addressing, offsets, gathers, filter) is long, and one chain a call
+ * leaves the processor waiting on its latencies where two side by side
+ * overlap.  Each vector is pair2's operations on its own registers and
+ * bounds; false, leaving nothing counted, where either would have
+ * returned false (the caller then takes each pair alone, which decides
+ * exactly as pair2 does). */
+static inline __attribute__((always_inline)) bool
+pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TEX_QUAD],
+       const struct quad_kind k, const bool linear, unsigned *shared)
+{
+   struct tex_fst x = { { 0, 0 }, { 0, 0 } };
+   struct dfxl_stats st[2] = { DFXL_STATS(true), DFXL_STATS(true) };
+   struct dfxl cs[2], ct[2];
+   lanes_i zoff[2];
+   struct lanes_addr A[2], B[2];
+   int sh[2];
+   const bool border = may_border(k.ws, linear) || may_border(k.wt, linear);
+   lanes_f out[2][4];
+#pragma GCC unroll 2
+   for (unsigned v = 0; v < 2; v++) {
+      coords(u, &q[2 * v], &cs[v], &ct[v], &x);
+      zoff[v] = pair_layers(u, &q[2 * v]);
+   }
+#pragma GCC unroll 2
+   for (unsigned v = 0; v < 2; v++)
+      sh[v] = pair_addr(u, k, linear, cs[v], ct[v], &A[v], &B[v], &st[v]);
+   if ((sh[0] | sh[1]) < 0)
+      return false;
+#pragma GCC unroll 2
+   for (unsigned v = 0; v < 2; v++)
+      soa_level2(u, linear, border, 0, &A[v], &B[v], zoff[v], out[v]);
+   if (dfxl_any(dfxl_trouble(&st[0]) | dfxl_trouble(&st[1])))
+      return false;
+   *shared = (unsigned)(sh[0] + sh[1]);
+   pair_store(out[0], &rgba[0]);
+   pair_store(out[1], &rgba[2]);
+   dfxl_stats_add(&x.d, st[0]);
+   dfxl_stats_add(&x.d, st[1]);
    tex_fst_flush(&x, u->stats);
    return true;
 }
@@ -822,30 +895,63 @@ PAIR2_FN(pair2_rr_nolod, quad2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT)
 PAIR2_FN(pair2_ee_nolod, quad2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE)
 PAIR2_FN(pair2_mm_nolod, quad2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT)
 
-/* The states with a pair function. */
+#if DFXL_N == 8
+/* The four-quad functions; where pairs4 declines, each pair alone. */
+#define PAIRS4_FN(name, pair_fn, ws, wt)                                                     \
+   static void name(const struct tex_unit *u, const struct tex_quad q[4],                    \
+                    enum tex_lod_control ctl, float rgba[4][4][TEX_QUAD])                    \
+   {                                                                                         \
+      const struct quad_kind k = { ws, wt, 1, true };                                        \
+      unsigned sh = 0;                                                                       \
+      if (ctl != TEX_LOD_DERIVS &&                                                           \
+          (u->samp.mag_filter != TEX_FILTER_NEAREST ? pairs4(u, q, rgba, k, true, &sh)       \
+                                                    : pairs4(u, q, rgba, k, false, &sh))) {  \
+         if (u->axes_shared)                                                                 \
+            *u->axes_shared += 2 * sh;                                                       \
+         return;                                                                             \
+      }                                                                                      \
+      pair_fn(u, &q[0], ctl, &rgba[0]);                                                      \
+      pair_fn(u, &q[2], ctl, &rgba[2]);                                                      \
+   }
+
+PAIRS4_FN(pairs4_rr_nolod, pair2_rr_nolod, TEX_WRAP_REPEAT, TEX_WRAP_REPEAT)
+PAIRS4_FN(pairs4_ee_nolod, pair2_ee_nolod, TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE)
+PAIRS4_FN(pairs4_mm_nolod, pair2_mm_nolod, TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT)
+#define FOUR(fn) fn
+#else
+#define FOUR(fn) NULL
+#endif
+
+/* The states with a pair function, and with the 512-bit set a four-quad one. */
 static const struct {
    enum tex_wrap ws, wt;
    tex_quad2_fn pair_nolod;
+   tex_quad4_fn four_nolod;
 } pairs[] = {
-   { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, pair2_rr_nolod },
-   { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, pair2_ee_nolod },
-   { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, pair2_mm_nolod },
+   { TEX_WRAP_REPEAT, TEX_WRAP_REPEAT, pair2_rr_nolod, FOUR(pairs4_rr_nolod) },
+   { TEX_WRAP_CLAMP_TO_EDGE, TEX_WRAP_CLAMP_TO_EDGE, pair2_ee_nolod, FOUR(pairs4_ee_nolod) },
+   { TEX_WRAP_MIRROR_REPEAT, TEX_WRAP_MIRROR_REPEAT, pair2_mm_nolod, FOUR(pairs4_mm_nolod) },
 };
+#undef FOUR
 
-static tex_quad2_fn pair_of(const struct tex_unit *u, bool nolod)
+static tex_quad2_fn pair_of(const struct tex_unit *u, bool nolod, tex_quad4_fn *four)
 {
+   *four = NULL;
    if (u->lanes_soa && nolod)
       for (unsigned i = 0; i < sizeof(pairs) / sizeof(pairs[0]); i++)
-         if (u->samp.wrap[0] == pairs[i].ws && u->samp.wrap[1] == pairs[i].wt)
+         if (u->samp.wrap[0] == pairs[i].ws && u->samp.wrap[1] == pairs[i].wt) {
+            *four = pairs[i].four_nolod;
             return pairs[i].pair_nolod;
+         }
    return NULL;
 }
 
 #if DFXL_N == 4
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
-                                        tex_quad2_fn *pair)
+                                        tex_quad2_fn *pair, tex_quad4_fn *four)
 {
    *pair = NULL;
+   *four = NULL;
    if (noskip)
       return quad2_precise;
    static const struct {
@@ -859,7 +965,7 @@ tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, 
    if (u->lanes_soa)
       for (unsigned i = 0; i < sizeof(special) / sizeof(special[0]); i++)
          if (u->samp.wrap[0] == special[i].ws && u->samp.wrap[1] == special[i].wt) {
-            *pair = pair_of(u, nolod);
+            *pair = pair_of(u, nolod, four);
             return special[i].fn[nolod];
          }
    return nolod ? quad2_generic_nolod : quad2_generic;
@@ -868,11 +974,11 @@ tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, 
 /* A lone quad fills half a vector: the AVX2 set's quad functions, and the
  * pairs here where that set has one. */
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
-                                        tex_quad2_fn *pair)
+                                        tex_quad2_fn *pair, tex_quad4_fn *four)
 {
-   const tex_quad_fn quad = tex_dfx19_2d_lanes_avx2(u, noskip, nolod, pair);
+   const tex_quad_fn quad = tex_dfx19_2d_lanes_avx2(u, noskip, nolod, pair, four);
    if (*pair)
-      *pair = pair_of(u, nolod);
+      *pair = pair_of(u, nolod, four);
    return quad;
 }
 #endif

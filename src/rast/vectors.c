@@ -375,7 +375,7 @@ void rast_vec_wrap_backend(struct rast_context *rc)
 {
    rc->vec_next_quad = rc->quad;
    rc->quad = vec_quad;
-   rc->quad2 = NULL;     /* one quad at a time: the order the unit emits them */
+   rc->quads = NULL;     /* one quad at a time: the order the unit emits them */
 }
 
 /* ---- the texture unit ---- */

@@ -5,7 +5,7 @@
  *
  *  - single-sampled: every pixel's red is its stencil count, which holds
  *    only if each quad read what every earlier triangle wrote (in order,
- *    also with pairs of quads and on two threads);
+ *    also with groups of two and of four quads and on two threads);
  *  - four samples: every sample's red is that sample's stencil count: the
  *    shader ran once a covered sample, reading that sample's plane;
  *  - the green channel, which the shader copies from the fetch, keeps the
@@ -37,17 +37,21 @@ static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_q
    return q->mask;
 }
 
-static unsigned shade2(void *ctx, const struct rast_quad *q0, const struct rast_quad *q1,
-                       struct rast_shaded_quad *out0, struct rast_shaded_quad *out1)
+static unsigned shade_n(void *ctx, const struct rast_quad *const q[],
+                        struct rast_shaded_quad *const out[], unsigned n)
 {
-   return shade(ctx, q0, out0) | shade(ctx, q1, out1) << 4;
+   unsigned kept = 0;
+   for (unsigned i = 0; i < n; i++)
+      kept |= shade(ctx, q[i], out[i]) << 4 * i;
+   return kept;
 }
 
 static uint8_t color[NS][PLANE * 4];
 static uint64_t total_hits;
 static uint32_t zs[NS][PLANE];
 
-static struct rast_context *target(unsigned samples, bool pairs, unsigned threads)
+/* group: quads a call of shade_n (0: one at a time) */
+static struct rast_context *target(unsigned samples, unsigned group, unsigned threads)
 {
    char err[128];
    static struct rast_profile_buf prof;
@@ -59,7 +63,8 @@ static struct rast_context *target(unsigned samples, bool pairs, unsigned thread
    struct rast_shader fs;
    memset(&fs, 0, sizeof fs);
    fs.shade = shade;
-   fs.shade2 = pairs ? shade2 : NULL;
+   fs.shade_n = group ? shade_n : NULL;
+   fs.group = group;
    fs.num_outputs = 1;
    fs.fetch_mask = 1;
    rast_set_shader(rc, &fs);
@@ -79,10 +84,10 @@ static struct rast_context *target(unsigned samples, bool pairs, unsigned thread
 
 static float coord(float lo, float hi) { return (float)(lo + (hi - lo) * t_rand()); }
 
-static void scene(unsigned ntri, unsigned samples, bool pairs, unsigned threads)
+static void scene(unsigned ntri, unsigned samples, unsigned group, unsigned threads)
 {
    static float v[40][3][1][4];
-   struct rast_context *rc = target(samples, pairs, threads);
+   struct rast_context *rc = target(samples, group, threads);
    for (unsigned t = 0; t < ntri; t++) {
       const float cx = coord(-4, W + 4), cy = coord(-4, H + 4);
       const float r = t % 3 == 0 ? 60.0f : 12.0f;
@@ -108,7 +113,7 @@ static void scene(unsigned ntri, unsigned samples, bool pairs, unsigned threads)
    }
    total_hits += hits;
    CHECK(bad_red == 0, "%u sample(s) whose fetched count is not their hit count (%u samples, "
-         "%s, %u threads)", bad_red, samples, pairs ? "pairs" : "quads", threads);
+         "groups of %u, %u threads)", bad_red, samples, group, threads);
    CHECK(bad_green == 0, "%u sample(s) whose fetched green is not what they held", bad_green);
    CHECK(bad_untouched == 0, "%u sample(s) written that no triangle covers", bad_untouched);
    rast_destroy(rc);
@@ -121,11 +126,12 @@ int main(int argc, char **argv)
    t_seed(rng);
    for (unsigned n = 0; n < scenes; n++) {
       const unsigned ntri = 1 + n % 40;
-      scene(ntri, 1, n & 1, 1);
-      scene(ntri, NS, n & 1, 1);
+      static const unsigned groups[3] = { 0, 2, 4 };
+      scene(ntri, 1, groups[n % 3], 1);
+      scene(ntri, NS, groups[n % 3], 1);
       if (n % 4 == 0) {
-         scene(ntri, 1, true, 2);
-         scene(ntri, NS, false, 2);
+         scene(ntri, 1, groups[1 + n / 4 % 2], 2);
+         scene(ntri, NS, 0, 2);
       }
    }
    CHECK(total_hits > 1000, "the scenes covered almost nothing (%llu hits)",

@@ -273,7 +273,7 @@ static void axis_pair(struct tex_quad two[2], const struct tex_unit *u)
       }
 }
 
-static uint64_t quads, fast_quads, lanes_quads, nolod_quads, pair_quads, axes_quads;
+static uint64_t quads, fast_quads, lanes_quads, nolod_quads, pair_quads, axes_quads, four_calls;
 
 /* LANES_BEST: the CPU's set (AVX-512 where it has it: lanes.h) */
 enum mode { LANES_BEST, LANES_SSE2, SCALAR, LANES_AVX2 };
@@ -362,11 +362,48 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
                   (double)two[0].s[0], (double)two[0].t[0], (double)one_by_one[0][0][0],
                   (double)paired[0][0][0]);
          pair_quads += u.quad2 != NULL;
+         /* four quads in one call (two of them the pair above, the quad
+          * function's bits and range events on each; the quad-axes shared
+          * as the two pairs alone count them), and three */
+         struct tex_quad four[4] = { two[0], two[1], q, q };
+         rand_quad(&four[3], &u);
+         if (j % 3 != 1)
+            axis_pair(&four[2], &u);
+         float each[2][2][4][TEX_QUAD], together[4][4][TEX_QUAD];   /* each: two pairs */
+         struct ns_stats s_each = { 0, 0 }, s_four = { 0, 0 };
+         uint64_t axes_each = 0, axes_four = 0;
+         const unsigned n4 = j % 5 == 4 ? 3 : 4;
+         u.stats = &s_each;
+         u.axes_shared = &axes_each;
+         tex_unit_sample2(&u, &four[0], ctl, each[0]);
+         if (n4 == 4)
+            tex_unit_sample2(&u, &four[2], ctl, each[1]);
+         else
+            tex_unit_sample(&u, &four[2], ctl, each[1][0]);
+         u.stats = &s_four;
+         u.axes_shared = &axes_four;
+         tex_unit_sample4(&u, four, n4, ctl, together);
+         u.axes_shared = NULL;
+         const bool ok4 = !memcmp(each, together, n4 * sizeof(together[0])) &&
+                          s_each.sat == s_four.sat && s_each.flush == s_four.flush &&
+                          axes_each == axes_four;
+         if (!ok4 && bad++ < 5)
+            CHECK(ok4, "%s unit %u quad %u: %u quads in one call (%s) differ from the pairs "
+                  "(wrap %d/%d filt %d/%d, ctl %d; sat %llu vs %llu, flush %llu vs %llu, "
+                  "axes %llu vs %llu)",
+                  name, i, j, n4, u.quad4 ? "four-quad function" : "pairs", u.samp.wrap[0],
+                  u.samp.wrap[1], u.samp.min_filter, u.samp.mag_filter, ctl,
+                  (unsigned long long)s_each.sat, (unsigned long long)s_four.sat,
+                  (unsigned long long)s_each.flush, (unsigned long long)s_four.flush,
+                  (unsigned long long)axes_each, (unsigned long long)axes_four);
+         four_calls += n4 == 4 && u.quad4 != NULL;
          quads++;
          fast_quads += u.quad != NULL;
          tex_quad2_fn pair;
+         tex_quad4_fn four_fn;
          lanes_quads += u.quad && u.dims == 2 && u.kind == TEX_NS_DFX &&
-                        u.quad == rast_lanes()->tex_dfx19_2d(&u, j & 1, u.lod_skipped, &pair);
+                        u.quad == rast_lanes()->tex_dfx19_2d(&u, j & 1, u.lod_skipped, &pair,
+                                                             &four_fn);
       }
    }
    CHECK(bad == 0, "%s: %u of %u quads differ", name, bad, units * per_unit);
@@ -401,6 +438,11 @@ int main(void)
    printf("  %llu pairs of quads through a pair function\n", (unsigned long long)pair_quads);
    CHECK(pair_quads > 5000, "only %llu pairs took a pair function",
          (unsigned long long)pair_quads);
+   printf("  %llu calls of four quads through a four-quad function\n",
+          (unsigned long long)four_calls);
+   if (rast_lanes_have_avx512())
+      CHECK(four_calls > 2000, "only %llu calls took a four-quad function",
+            (unsigned long long)four_calls);
    printf("  %llu quad-axes of pairs addressed once per column or row\n",
           (unsigned long long)axes_quads);
    CHECK(axes_quads > 4000, "only %llu quad-axes of pairs were addressed per column or row",
