@@ -137,7 +137,7 @@ int main(int argc, char **argv)
                }
             else
                for (long n = 0; n < nquads; n += 4) {
-                  tex_unit_sample4(&u, &q[n % SCREEN], 4, TEX_LOD_IMPLICIT, rgba);
+                  tex_unit_sample_quads(&u, &q[n % SCREEN], 4, TEX_LOD_IMPLICIT, rgba);
                   check += rgba[3][0][3];
                }
             const double t = cpu_seconds() - t0;

@@ -97,45 +97,51 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
    return mask;
 }
 
-/* The compiled function on the n quads q[i], their outputs to out[i]
- * (n up to the variant's quads a call).  The code's other quads are q[0]
- * again with every lane off, their outputs to `spare`, and not sampled
+/* A quad's four lanes from its mask (lane = ~0 where the pixel is live). */
+#define FP_LANES(m) { -((m) & 1), -((m) >> 1 & 1), -((m) >> 2 & 1), -((m) >> 3 & 1) }
+static const int32_t fp_quad_lanes[16][RAST_QUAD_SIZE] = {
+   FP_LANES(0),  FP_LANES(1),  FP_LANES(2),  FP_LANES(3),  FP_LANES(4),  FP_LANES(5),
+   FP_LANES(6),  FP_LANES(7),  FP_LANES(8),  FP_LANES(9),  FP_LANES(10), FP_LANES(11),
+   FP_LANES(12), FP_LANES(13), FP_LANES(14), FP_LANES(15),
+};
+#undef FP_LANES
+
+/* The compiled function on the n quads q[i] of a primitive, their outputs
+ * to out[i] (n up to the variant's quads a call: one call of the eight- or
+ * sixteen-lane code).  The code's other quads are q[0] again with every
+ * lane off, their outputs to `spare`, and not sampled
  * (fp_jit_context.quads).  Returns the pixels kept, quad i's in bits 4i
  * to 4i + 3. */
-static unsigned fp_fs_run_jit(struct fp_fs_thread *th, const struct rast_quad *const q[],
-                              struct rast_shaded_quad *const out[], unsigned n)
+static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
+                                  struct rast_shaded_quad *const out[], unsigned n)
 {
+   struct fp_fs_thread *th = ctx;
    const struct fp_jit_variant *v = th->fp->fs->jit;
    const struct rast_quad *qs[FP_JIT_MAX_QUADS];
    struct rast_shaded_quad *outs[FP_JIT_MAX_QUADS];
-   int32_t lanes[FP_JIT_MAX_QUADS * RAST_QUAD_SIZE];
-   unsigned live = 0;
-   for (unsigned k = 0; k < v->quads; k++) {
+   int32_t lanes[FP_JIT_MAX_QUADS][RAST_QUAD_SIZE];
+   /* all of them: the code reads its quads a call, at most these */
+   for (unsigned k = 0; k < FP_JIT_MAX_QUADS; k++) {
       qs[k] = k < n ? q[k] : q[0];
       outs[k] = k < n ? out[k] : &th->spare;
-      live |= (k < n ? q[k]->mask : 0u) << 4 * k;
+      memcpy(lanes[k], fp_quad_lanes[k < n ? q[k]->mask & 15 : 0], sizeof(lanes[k]));
    }
-   for (unsigned p = 0; p < v->quads * RAST_QUAD_SIZE; p++)
-      lanes[p] = (live >> p & 1) ? ~0 : 0;
    th->jit_ctx.quads = n;
-   v->func(&th->jit_ctx, qs, outs, lanes);
+   v->func(&th->jit_ctx, qs, outs, &lanes[0][0]);
    th->quads_jit += n;
-   unsigned mask = 0;
-   for (unsigned p = 0; p < v->quads * RAST_QUAD_SIZE; p++)
-      mask |= (unsigned)(lanes[p] != 0) << p;
-   return mask & live;
+   unsigned kept = 0;
+   for (unsigned k = 0; k < n; k++) {
+      unsigned m = 0;
+      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+         m |= (unsigned)(lanes[k][p] != 0) << p;
+      kept |= (m & q[k]->mask) << 4 * k;
+   }
+   return kept;
 }
 
 static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
-   return fp_fs_run_jit(ctx, &q, &out, 1);
-}
-
-/* Quads of a primitive, one call of the eight- or sixteen-lane code. */
-static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
-                                  struct rast_shaded_quad *const out[], unsigned n)
-{
-   return fp_fs_run_jit(ctx, q, out, n);
+   return fp_fs_shade_n_jit(ctx, &q, &out, 1);
 }
 
 /* Compiles the bound shader when it is due; false leaves it interpreted. */

@@ -478,6 +478,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    struct fp_jit_variant *v = CALLOC_STRUCT(fp_jit_variant);
    if (!v)
       return NULL;
+   v->quads = fp_jit_quads_a_call(info);
 
    /* tgsi_to_nir takes the NIR options and the final passes from the
     * screen: give it gallivm's (the screen's own are for st's NIR-to-TGSI
@@ -497,8 +498,8 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    struct lp_cached_code cached = { 0 };
    unsigned char key[CACHE_KEY_SIZE];
    if (cache) {
-      fp_jit_cache_key(tokens, depth_output, color_output, num_color_outputs,
-                       fp_jit_quads_a_call(info), key, cache);
+      fp_jit_cache_key(tokens, depth_output, color_output, num_color_outputs, v->quads, key,
+                       cache);
       size_t size = 0;
       cached.data = disk_cache_get(cache, key, &size);
       cached.data_size = cached.data ? size : 0;
@@ -514,7 +515,6 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
       FREE(v);
       return NULL;
    }
-   v->quads = fp_jit_quads_a_call(info);
    LLVMValueRef func = fp_build_fs(v->gallivm, nir, info, sampler, depth_output, color_output,
                                    num_color_outputs, v->quads);
    gallivm_compile_module(v->gallivm);

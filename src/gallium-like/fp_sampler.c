@@ -361,12 +361,7 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
    ts->quads += n;
    ts->texels += n * 4 * u->taps;
    ts->skip_lod += n * (u->lod_skipped && lod_from_diffs);
-   if (n == 1)
-      tex_unit_sample(u, q, ctl, rgba[0]);
-   else if (n == 2)
-      tex_unit_sample2(u, q, ctl, rgba);
-   else
-      tex_unit_sample4(u, q, n, ctl, rgba);
+   tex_unit_sample_quads(u, q, n, ctl, rgba);
    if (unlikely(ts->fp->vectors_on))
       rast_vectors_tex(ts->rast, u, q, n, ctl, (const float (*)[4][4])rgba);
    fp_tex_stats(ts);
@@ -461,8 +456,9 @@ void fp_tgsi_sample_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_inde
    const struct fp_sampler_view *fv;
    const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
    const unsigned n = quads < 1 ? 1 : quads > max ? max : quads;
-   if (!u || n < max)
-      memset(rgba[u ? n : 0], 0, sizeof(float) * (max - (u ? n : 0)) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
+   const unsigned sampled = u ? n : 0;     /* the others' texels are zero */
+   if (sampled < max)
+      memset(rgba[sampled], 0, sizeof(float) * (max - sampled) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
    if (u)
       fp_unit_sample(ts, u, q, n, (enum tgsi_sampler_control)control, rgba);
 }

@@ -73,7 +73,7 @@ static inline unsigned shade(struct rast_context *rc, struct rast_quad *q, unsig
  * outputs to be->out[i]; returns the pixels kept, in the same bits.  A
  * quad left without live pixels (the early tests) is not shaded. */
 static inline unsigned shade_group(struct rast_context *rc, struct rast_backend *be,
-                                   struct rast_quad *const q[], unsigned n, unsigned masks)
+                                   struct rast_quad *q, unsigned n, unsigned masks)
 {
    struct rast_quad *live[RAST_GROUP_MAX];
    struct rast_shaded_quad *out[RAST_GROUP_MAX];
@@ -82,13 +82,13 @@ static inline unsigned shade_group(struct rast_context *rc, struct rast_backend 
       const unsigned m = masks >> 4 * i & 15;
       if (!m)
          continue;
-      saved[nl] = q[i]->mask;
-      q[i]->mask = m;
+      saved[nl] = q[i].mask;
+      q[i].mask = m;
       at[nl] = i;
-      live[nl] = q[i];
+      live[nl] = &q[i];
       out[nl++] = &be->out[i];
       if (rc->fs.fetch_mask)
-         fetch_targets(rc, be, q[i]);
+         fetch_targets(rc, be, &q[i]);
       rc->stats.pixels_shaded += rast_popcount4(m);
    }
    unsigned got;
@@ -107,11 +107,11 @@ static inline unsigned shade_group(struct rast_context *rc, struct rast_backend 
 }
 
 /* The masks of a group's quads, quad i's in bits 4i to 4i + 3. */
-static inline unsigned group_masks(struct rast_quad *const q[], unsigned n)
+static inline unsigned group_masks(const struct rast_quad *q, unsigned n)
 {
    unsigned m = 0;
    for (unsigned i = 0; i < n; i++)
-      m |= q[i]->mask << 4 * i;
+      m |= q[i].mask << 4 * i;
    return m;
 }
 
@@ -149,24 +149,19 @@ static void quad_color(struct rast_context *rc, struct rast_quad *q)
 }
 
 /* color_stage for a group, `kept` as shade_group returns it. */
-static inline void color_stage_group(const struct rast_backend *be, struct rast_quad *const q[],
+static inline void color_stage_group(const struct rast_backend *be, const struct rast_quad *q,
                                      unsigned n, unsigned kept)
 {
    for (unsigned i = 0; i < n; i++)
       if (kept >> 4 * i & 15)
-         color_stage(be, &be->out[i], q[i]->x, q[i]->y, kept >> 4 * i & 15);
+         color_stage(be, &be->out[i], q[i].x, q[i].y, kept >> 4 * i & 15);
 }
 
-static inline unsigned popcount_group(unsigned kept)
-{
-   return (unsigned)__builtin_popcount(kept);
-}
-
-static void group_color(struct rast_context *rc, struct rast_quad *const q[], unsigned n)
+static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n)
 {
    struct rast_backend *be = backend(rc);
    const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n));
-   rc->stats.samples_passed += popcount_group(kept);
+   rc->stats.samples_passed += (unsigned)__builtin_popcount(kept);
    color_stage_group(be, q, n, kept);
 }
 
@@ -181,15 +176,14 @@ static void group_color(struct rast_context *rc, struct rast_quad *const q[], un
       rast_store8_quad(p->base, p->stride, q->x, q->y, mask, \
                        (chan_quad)be->out[0].color[p->src], R, G, B, A, X8); \
    } \
-   static void group_fast_##NAME(struct rast_context *rc, struct rast_quad *const q[], \
-                                 unsigned n) \
+   static void group_fast_##NAME(struct rast_context *rc, struct rast_quad *q, unsigned n) \
    { \
       struct rast_backend *be = backend(rc); \
       const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n)); \
-      rc->stats.samples_passed += popcount_group(kept); \
+      rc->stats.samples_passed += (unsigned)__builtin_popcount(kept); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
       for (unsigned i = 0; i < n; i++) \
-         rast_store8_quad(p->base, p->stride, q[i]->x, q[i]->y, kept >> 4 * i & 15, \
+         rast_store8_quad(p->base, p->stride, q[i].x, q[i].y, kept >> 4 * i & 15, \
                           (chan_quad)be->out[i].color[p->src], R, G, B, A, X8); \
    }
 
@@ -220,12 +214,12 @@ static void quad_early(struct rast_context *rc, struct rast_quad *q)
       color_stage(be, &be->out[0], q->x, q->y, mask);
 }
 
-static void group_early(struct rast_context *rc, struct rast_quad *const q[], unsigned n)
+static void group_early(struct rast_context *rc, struct rast_quad *q, unsigned n)
 {
    struct rast_backend *be = backend(rc);
    unsigned masks = 0;
    for (unsigned i = 0; i < n; i++)
-      masks |= early_zs(rc, be, q[i]) << 4 * i;
+      masks |= early_zs(rc, be, &q[i]) << 4 * i;
    if (!masks || !be->shade_needed)
       return;
    color_stage_group(be, q, n, shade_group(rc, be, q, n, masks));
@@ -253,13 +247,13 @@ static void quad_late(struct rast_context *rc, struct rast_quad *q)
       late_zs_color(rc, be, q, &be->out[0], mask);
 }
 
-static void group_late(struct rast_context *rc, struct rast_quad *const q[], unsigned n)
+static void group_late(struct rast_context *rc, struct rast_quad *q, unsigned n)
 {
    struct rast_backend *be = backend(rc);
    const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n));
    for (unsigned i = 0; i < n; i++)
       if (kept >> 4 * i & 15)
-         late_zs_color(rc, be, q[i], &be->out[i], kept >> 4 * i & 15);
+         late_zs_color(rc, be, &q[i], &be->out[i], kept >> 4 * i & 15);
 }
 
 static void backend_choose(struct rast_context *rc);

@@ -224,7 +224,6 @@ struct rast_front {
     * shader on eight or sixteen lanes); what the primitive sets once
     * (constants, facing) is in every quad. */
    struct rast_quad quad[RAST_GROUP_MAX];
-   struct rast_quad *group[RAST_GROUP_MAX];   /* &quad[i] */
    unsigned npending;
 };
 
@@ -245,7 +244,7 @@ static inline void fr_quads_flush(struct rast_context *rc, struct rast_front *fr
       if (fr->npending == 1)
          rc->quad(rc, &fr->quad[0]);
       else
-         rc->quads(rc, fr->group, fr->npending);
+         rc->quads(rc, fr->quad, fr->npending);
       fr->npending = 0;
       rast_count_stretch(rc, counting);
    }

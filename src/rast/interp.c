@@ -795,7 +795,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          q = &fr->quad[fr->npending];
          q->y = qy;
       } else {
-         rc->quads(rc, fr->group, fr->npending);
+         rc->quads(rc, fr->quad, fr->npending);
          fr->npending = 0;
          q = &fr->quad[0];
          q->y = qy;

@@ -61,8 +61,6 @@ void rast_front_validate(struct rast_context *rc)
          abort();
    }
    struct rast_front *fr = rast_front(rc);
-   for (unsigned i = 0; i < RAST_GROUP_MAX; i++)
-      fr->group[i] = &fr->quad[i];
    const struct rast_profile *prof = rc->profile;
 
    fr->S = fx_one(prof->xy);

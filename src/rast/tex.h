@@ -233,8 +233,8 @@ void tex_unit_sample2(const struct tex_unit *u, const struct tex_quad q[2],
 
 /* `n` quads (up to four; four in one call where the unit has quad4): the
  * same bits and range events as tex_unit_sample on each. */
-void tex_unit_sample4(const struct tex_unit *u, const struct tex_quad *q, unsigned n,
-                      enum tex_lod_control ctl, float rgba[][4][TEX_QUAD]);
+void tex_unit_sample_quads(const struct tex_unit *u, const struct tex_quad *q, unsigned n,
+                           enum tex_lod_control ctl, float rgba[][4][TEX_QUAD]);
 
 /* The table path (struct numsys calls, the functions above) whatever the
  * number system: what tex_unit_sample does without u->quad, for tests

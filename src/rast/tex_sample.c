@@ -165,8 +165,8 @@ void tex_unit_sample2(const struct tex_unit *u, const struct tex_quad q[2],
    tex_unit_sample(u, &q[1], ctl, rgba[1]);
 }
 
-void tex_unit_sample4(const struct tex_unit *u, const struct tex_quad *q, unsigned n,
-                      enum tex_lod_control ctl, float rgba[][4][TEX_QUAD])
+void tex_unit_sample_quads(const struct tex_unit *u, const struct tex_quad *q, unsigned n,
+                           enum tex_lod_control ctl, float rgba[][4][TEX_QUAD])
 {
    if (n == 4 && u->quad4) {
       u->quad4(u, q, ctl, rgba);

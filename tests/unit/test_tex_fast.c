@@ -382,7 +382,7 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
             tex_unit_sample(&u, &four[2], ctl, each[1][0]);
          u.stats = &s_four;
          u.axes_shared = &axes_four;
-         tex_unit_sample4(&u, four, n4, ctl, together);
+         tex_unit_sample_quads(&u, four, n4, ctl, together);
          u.axes_shared = NULL;
          const bool ok4 = !memcmp(each, together, n4 * sizeof(together[0])) &&
                           s_each.sat == s_four.sat && s_each.flush == s_four.flush &&
