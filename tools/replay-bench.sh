@@ -9,9 +9,10 @@
 # 0-255 over the frames, and the worst frame's PSNR), and the first-frame latency
 # (the whole process replaying the trace's first frame alone); then the same per
 # scene (the trace's frames in equal runs, --scenes): each configuration's time for
-# the scene's frames 2 to N (eglretrace --pframe-times: the scene's first frame,
-# with its set-up, counts in the whole replay only), and for fixpipe the share of
-# each skip taken (FIXPIPE_STATS=frames:N, docs/datapath.md).  A benchmark, not a
+# the scene's frames 2 to N, the median of the runs (eglretrace --pframe-times: the
+# scene's first frame, with its set-up, counts in the whole replay only), and for
+# fixpipe the share of each skip taken (FIXPIPE_STATS=frames:N, docs/datapath.md),
+# from the first run (the counts are the same in every run).  A benchmark, not a
 # test: it never fails on a number.
 #
 #   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
@@ -159,20 +160,27 @@ for c in $configs; do
     echo "| $c | ${replay[$c]} | $fps | $(ratio "${replay[$c]}" "${replay[llvmpipe]:-}") | $(ratio "${replay[softpipe]:-}" "${replay[$c]}") | ${err[$c]} | ${psnr[$c]} | ${first[$c]} |"
 done
 
-# per scene: frames 2..N of each scene from the frame-end timestamps of the first
-# run's log (ns; a trace's last frame may have no swap: that scene's time is scaled
-# from its frames timed), and fixpipe's skips from its counters after every frame
-# (cumulative per GL context: a frame number that does not grow starts a context)
+# per scene: frames 2..N of each scene from the frame-end timestamps of each run's
+# log (ns; a trace's last frame may have no swap: that scene's time is scaled from
+# its frames timed), the median over the runs; and fixpipe's skips from its counters
+# after every frame of the first run (the counts are the same in every run;
+# cumulative per GL context: a frame number that does not grow starts a context)
 scene_times() { # LOG: one line of seconds per scene
     awk -v n="$scene_frames" -v k="$nscenes" '$1 == "rendering_finished" { t[f++] = $2 }
         END { for (s = 0; s < k; s++) { a = s * n; b = a + n - 1; if (b > f - 1) b = f - 1
                   if (b > a) printf "%.2f\n", (t[b] - t[a]) / 1e9 * (n - 1) / (b - a); else print "n/a" } }' "$1"
 }
 if [ "$nscenes" -gt 0 ]; then
-    declare -A sec
+    declare -A sec each
     for c in $configs; do
-        i=0
-        while read -r v; do sec[$c.$i]=$v; i=$((i + 1)); done < <(scene_times "$out/$c.1.log")
+        for r in $(seq 1 "$runs"); do
+            [ -r "$out/$c.$r.log" ] || continue
+            i=0
+            while read -r v; do each[$c.$i]+="$v "; i=$((i + 1)); done < <(scene_times "$out/$c.$r.log")
+        done
+        for ((i = 0; i < nscenes; i++)); do
+            sec[$c.$i]=$(tr ' ' '\n' <<< "${each[$c.$i]:-}" | { grep -vx -e '' -e 'n/a' || true; } | median)
+        done
     done
     # fixpipe's shares: constant 1/w of the quads divided, constant components of the
     # component-quads, texture quads without a LOD of those with a LOD from differences,
