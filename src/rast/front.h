@@ -160,6 +160,14 @@ struct fr_tex {
    unsigned pending, n_next;
    unsigned lookahead;                  /* quads the lanes divide ahead: 0, 1 or 3 */
    float next[3][RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE];
+   /* The lanes with the skips, and a back end taking groups of quads
+    * (rc->quads): a covered quad's numerators wait in num[] with the
+    * quad, and the group is divided together when it goes to the back
+    * end, wherever its quads lie on the primitive's rows
+    * (rast_interp_divide_group): four to a call where a row has fewer. */
+   bool group_ok;
+   unsigned nrec;                       /* quads waiting to be divided */
+   int64_t num[RAST_GROUP_MAX][4];      /* an[0], an[1], bn[0], bn[1] of each */
 };
 
 /* The per-pixel independent interpolators of Z and colour (seeds 001,
@@ -234,6 +242,10 @@ static inline void fr_set_facing(struct rast_front *fr, bool front)
       fr->quad[i].front_facing = front;
 }
 
+/* The waiting quads' perspective division (interp.c), and its range
+ * events moved to the counters when `row_done`. */
+void rast_interp_divide_group(struct rast_context *rc, struct rast_front *fr, bool row_done);
+
 /* The quads left waiting at the end of a primitive go as they are.  They
  * are of this thread's rows, so they count here whoever's row came last. */
 static inline void fr_quads_flush(struct rast_context *rc, struct rast_front *fr)
@@ -241,6 +253,8 @@ static inline void fr_quads_flush(struct rast_context *rc, struct rast_front *fr
    if (fr->npending) {
       const bool counting = rc->counting;
       rast_count_stretch(rc, true);
+      if (fr->tex.nrec)
+         rast_interp_divide_group(rc, fr, true);
       if (fr->npending == 1)
          rc->quad(rc, &fr->quad[0]);
       else

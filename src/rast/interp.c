@@ -466,6 +466,8 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
    /* how many following quads the span processor looks for: the lanes
     * divide 2 or 4 at once with the skips taken, nothing else does */
    t->lookahead = !t->lanes || !t->skip ? 0 : rast_lanes()->persp4_dfx19 ? 3 : 1;
+   t->group_ok = t->lanes && t->skip;
+   t->nrec = 0;
    if (t->lanes)
       t->quad = tex_quad_dfx19_lanes;
    else if (t->reference)
@@ -486,6 +488,21 @@ void rast_interp_perspective_reference(struct rast_context *rc, bool on)
    struct rast_front *fr = rast_front(rc);
    fr->tex.reference = on;
    rast_interp_perspective_choose(rc, fr);
+}
+
+static inline void tex_end(struct rast_context *rc, struct rast_front *fr);
+
+/* The waiting quads are fr->quad[0 .. nrec - 1], all of them covered. */
+void rast_interp_divide_group(struct rast_context *rc, struct rast_front *fr, bool row_done)
+{
+   struct fr_tex *t = &fr->tex;
+   float *in[RAST_GROUP_MAX];
+   for (unsigned k = 0; k < t->nrec; k++)
+      in[k] = &fr->quad[k].in[0][0][0];
+   rast_lanes()->persp_group_dfx19(fr, in, (const int64_t (*)[4])t->num, t->nrec);
+   t->nrec = 0;
+   if (row_done)
+      tex_end(rc, fr);
 }
 
 /* The quad row's range events into the context's counters. */
@@ -715,6 +732,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    struct rast_quad *q = &fr->quad[fr->npending];
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
+   /* divided as a group when it goes to the back end (fr_tex.group_ok) */
+   const bool grouped = has_persp && fr->tex.group_ok && rc->quads;
    if (has_persp)
       fr->tex.begin(fr, xq, y);
    /* the pass's origin back: the quad's place in the target */
@@ -771,7 +790,18 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
             o[0] = a0; o[1] = a1; o[2] = b0; o[3] = b1;
          }
       }
-      if (has_persp) {
+      if (grouped) {
+         struct fr_tex *t = &fr->tex;
+         if (mask) {
+            /* the quad's slot: the covered quads before it in the group
+             * each left theirs */
+            int64_t *n = t->num[fr->npending];
+            n[0] = t->an[0]; n[1] = t->an[1]; n[2] = t->bn[0]; n[3] = t->bn[1];
+            t->nrec = fr->npending + 1;
+         }
+         tex_numerators_next(t);
+         t->n_divided += mask != 0;
+      } else if (has_persp) {
          /* the covered quads that follow, for the lanes to divide with
           * this one (not needed while they hold divided ones) */
          unsigned ahead = 0;
@@ -795,6 +825,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          q = &fr->quad[fr->npending];
          q->y = qy;
       } else {
+         if (grouped)
+            rast_interp_divide_group(rc, fr, false);
          rc->quads(rc, fr->quad, fr->npending);
          fr->npending = 0;
          q = &fr->quad[0];

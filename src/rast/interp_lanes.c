@@ -223,6 +223,71 @@ void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
    persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
 }
 
+/* Vector v's numerators from the recorded ones of quads from `first`
+ * (one quad a vector, or two with the 512-bit set). */
+static inline void recorded(const struct fr_tex *t, const int64_t (*num)[4], unsigned first,
+                            dfxl_i *an, dfxl_i *bn)
+{
+   const int64_t *p = num[first];
+#if DFXL_N == 8
+   const int64_t *r = num[first + 1];
+   *an = (dfxl_i){ p[0], p[0] + t->a_dx, p[1], p[1] + t->a_dx,
+                   r[0], r[0] + t->a_dx, r[1], r[1] + t->a_dx };
+   *bn = (dfxl_i){ p[2], p[2] + t->b_dx, p[3], p[3] + t->b_dx,
+                   r[2], r[2] + t->b_dx, r[3], r[3] + t->b_dx };
+#else
+   *an = (dfxl_i){ p[0], p[0] + t->a_dx, p[1], p[1] + t->a_dx };
+   *bn = (dfxl_i){ p[2], p[2] + t->b_dx, p[3], p[3] + t->b_dx };
+#endif
+}
+
+/* nq recorded quads in one call: 2 or 4 with the 512-bit set, 1 or 2
+ * with the others; a range event in any: each vector the careful way, as
+ * the row functions above do. */
+static void persp_recorded(struct rast_front *fr, float *const *in, const int64_t (*num)[4],
+                           unsigned nq)
+{
+   struct fr_tex *t = &fr->tex;
+   dfxl_i an[2], bn[2];
+   for (unsigned v = 0; v < nq / QPV; v++)
+      recorded(t, num, v * QPV, &an[v], &bn[v]);
+   if (t->skip && persp_optimistic(fr, in, an, bn, nq))
+      return;
+   if (QPV == 2 || nq == 1) {
+      persp(fr, in, an, bn, false, t->ln, nq);
+      return;
+   }
+   float *const in_0[2] = { in[0], NULL }, *const in_1[2] = { in[1], NULL };
+   persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
+   persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
+}
+
+void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
+                                       const int64_t (*num)[4], unsigned n)
+{
+#if DFXL_N == 8
+   /* four in one call; two; a lone quad fills half a vector: the 256-bit
+    * set's */
+   unsigned k = 0;
+   if (n == 4) {
+      persp_recorded(fr, in, num, 4);
+      return;
+   }
+   if (n >= 2) {
+      persp_recorded(fr, in, num, 2);
+      k = 2;
+   }
+   if (k < n)
+      persp_group_dfx19_lanes_avx2(fr, in + k, num + k, 1);
+#else
+   unsigned k = 0;
+   for (; k + 2 <= n; k += 2)
+      persp_recorded(fr, in + k, num + k, 2);
+   if (k < n)
+      persp_recorded(fr, in + k, num + k, 1);
+#endif
+}
+
 #if DFXL_N == 8
 /* Four quads of a row: the numerators of quads 0-1 in one vector, 2-3 in
  * the other; a range event in either: all four the careful way. */

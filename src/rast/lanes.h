@@ -33,6 +33,13 @@ struct rast_lanes {
     * where one vector leaves the processor waiting on the division's long
     * chain of dependent operations. */
    void (*persp4_dfx19)(struct rast_front *fr, float *const in[4]);
+   /* The same, optimistic, for n quads (1 to RAST_GROUP_MAX) of one
+    * primitive wherever they lie on its rows, from the numerators the span
+    * processor recorded for each (num[k]: a at the left pixels of both
+    * scan lines, then b): a group of quads the shader takes together is
+    * divided together, four to a call where the set has persp4. */
+   void (*persp_group_dfx19)(struct rast_front *fr, float *const in[],
+                             const int64_t (*num)[4], unsigned n);
    /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
     * rectangle), specialised for the unit's state; `nolod`: the one that
     * leaves out the LOD (tex_unit_lod_unused); `noskip`: the one that

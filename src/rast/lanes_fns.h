@@ -7,11 +7,15 @@
 void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q);
 void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1);
 void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4]);
+void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
+                                       const int64_t (*num)[4], unsigned n);
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
                                         tex_quad2_fn *pair, tex_quad4_fn *four);
 
 /* The AVX2 set's, which the 512-bit one takes for a lone quad. */
 void persp_dfx19_lanes_avx2(struct rast_front *fr, struct rast_quad *q);
+void persp_group_dfx19_lanes_avx2(struct rast_front *fr, float *const in[],
+                                  const int64_t (*num)[4], unsigned n);
 tex_quad_fn tex_dfx19_2d_lanes_avx2(const struct tex_unit *u, bool noskip, bool nolod,
                                     tex_quad2_fn *pair, tex_quad4_fn *four);
 

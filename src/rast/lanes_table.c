@@ -18,6 +18,7 @@ const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
    .persp_dfx19 = LANES_FN(persp_dfx19_lanes),
 #endif
    .persp2_dfx19 = LANES_FN(persp2_dfx19_lanes),
+   .persp_group_dfx19 = LANES_FN(persp_group_dfx19_lanes),
 #if defined(DFXL_N) && DFXL_N == 8
    .persp4_dfx19 = LANES_FN(persp4_dfx19_lanes),
    .tex_group = 4,

@@ -12,7 +12,9 @@
  * (lanes.h: dfx24 on the default path, every instruction set the CPU
  * runs), with and without the skips, and through RAST_OPT_SCALAR; some
  * primitives have a constant 1/w (sometimes 1) and constant components,
- * so that the skips are taken. */
+ * so that the skips are taken.  Some passes shade groups of two or four
+ * quads (rast_shader.shade_n), where the lanes divide a group's quads
+ * together wherever they lie on the primitive's rows. */
 #include <math.h>
 #include <string.h>
 #include "tutil.h"
@@ -27,10 +29,12 @@ static struct rast_vertex_layout vl;
 /* pass 0: the generic reference; then each mode below (isa: lanes.h's
  * sets, each where the CPU runs it, else the next one down) */
 enum { ISA_AVX2, ISA_SSE2, ISA_AVX512 };
-static const struct { unsigned opts; int isa; } modes[] = {
-   { 0, ISA_AVX2 },   { RAST_OPT_NOSKIP, ISA_AVX2 },   { 0, ISA_SSE2 },
-   { RAST_OPT_NOSKIP, ISA_SSE2 }, { RAST_OPT_SCALAR, ISA_AVX2 },
-   { 0, ISA_AVX512 }, { RAST_OPT_NOSKIP, ISA_AVX512 },
+static const struct { unsigned opts; int isa; unsigned group; } modes[] = {
+   { 0, ISA_AVX2, 0 },   { RAST_OPT_NOSKIP, ISA_AVX2, 0 },   { 0, ISA_SSE2, 0 },
+   { RAST_OPT_NOSKIP, ISA_SSE2, 0 }, { RAST_OPT_SCALAR, ISA_AVX2, 0 },
+   { 0, ISA_AVX512, 0 }, { RAST_OPT_NOSKIP, ISA_AVX512, 0 },
+   { 0, ISA_AVX512, 4 }, { 0, ISA_AVX512, 2 }, { 0, ISA_AVX2, 4 }, { 0, ISA_AVX2, 2 },
+   { 0, ISA_SSE2, 4 }, { RAST_OPT_NOSKIP, ISA_AVX512, 4 },
 };
 #define NPASS (1 + (int)(sizeof(modes) / sizeof(modes[0])))
 static float *rec[NPASS];
@@ -39,6 +43,30 @@ static uint64_t skipped_w, skipped_comp;
 static int pass;
 static bool avx2, avx512;
 static uint64_t quads, helpers, values;
+static uint64_t group_calls;   /* shade_n calls of more than one quad */
+
+/* tutil's shader, a group of quads at a time: each quad in turn. */
+static unsigned shade_group(void *ctx, const struct rast_quad *const q[],
+                            struct rast_shaded_quad *const out[], unsigned n)
+{
+   unsigned kept = 0;
+   group_calls += n > 1;
+   for (unsigned i = 0; i < n; i++)
+      kept |= t_shade_record(ctx, q[i], out[i]) << 4 * i;
+   return kept;
+}
+
+static void set_group(unsigned group)
+{
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof(fs));
+   fs.ctx = &t;
+   fs.shade = t_shade_record;
+   fs.shade_n = group ? shade_group : NULL;
+   fs.group = group;
+   fs.may_discard = true;
+   rast_set_shader(t.rc, &fs);
+}
 
 /* The used components of every quad, in order, with its position. */
 static void hook(struct tctx *tc, const struct rast_quad *q)
@@ -133,6 +161,7 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
                                                        : &rast_lanes_sse2);
             rast_set_options(t.rc, modes[pass - 1].opts);
          }
+         set_group(pass ? modes[pass - 1].group : 0);
          rast_interp_perspective_reference(t.rc, pass == 0);
          nrec[pass] = 0;
          const struct rast_stats *st = rast_get_stats(t.rc);
@@ -196,6 +225,8 @@ int main(void)
    printf("skips taken: %llu quads with a constant 1/w, %llu constant component-quads\n",
           (unsigned long long)skipped_w, (unsigned long long)skipped_comp);
    CHECK(skipped_w > 1000 && skipped_comp > 1000, "the skips were exercised");
+   printf("%llu calls of a group of quads\n", (unsigned long long)group_calls);
+   CHECK(group_calls > 10000, "groups of quads were shaded");
    for (int p = 0; p < NPASS; p++)
       free(rec[p]);
    return t_summary("persp_fast");

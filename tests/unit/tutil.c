@@ -21,7 +21,7 @@ double t_rand(void)
    return (double)(rng() >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static unsigned shade_record(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+unsigned t_shade_record(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    struct tctx *t = ctx;
    (void)out;
@@ -81,7 +81,7 @@ void t_init(struct tctx *t, const char *profile, int w, int h)
    struct rast_shader fs;
    memset(&fs, 0, sizeof(fs));
    fs.ctx = t;
-   fs.shade = shade_record;
+   fs.shade = t_shade_record;
    fs.may_discard = true;
    rast_set_shader(t->rc, &fs);
    t_raster(t, true, false);

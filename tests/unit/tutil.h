@@ -34,6 +34,10 @@ static inline uint64_t t_xorshift(uint64_t *state)
 struct tctx;
 typedef void (*t_quad_hook)(struct tctx *t, const struct rast_quad *q);
 
+/* t_init's shader: it records the quad's pixels (stamp, hits, counts),
+ * calls the hook, and discards the quad. */
+unsigned t_shade_record(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out);
+
 struct tctx {
    struct rast_context *rc;
    const struct rast_profile *prof;
