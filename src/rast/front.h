@@ -165,7 +165,6 @@ struct fr_tex {
     * quad, and the group is divided together when it goes to the back
     * end, wherever its quads lie on the primitive's rows
     * (rast_interp_divide_group): four to a call where a row has fewer. */
-   bool group_ok;
    unsigned nrec;                       /* quads waiting to be divided */
    int64_t num[RAST_GROUP_MAX][4];      /* an[0], an[1], bn[0], bn[1] of each */
 };

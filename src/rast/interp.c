@@ -466,7 +466,6 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
    /* how many following quads the span processor looks for: the lanes
     * divide 2 or 4 at once with the skips taken, nothing else does */
    t->lookahead = !t->lanes || !t->skip ? 0 : rast_lanes()->persp4_dfx19 ? 3 : 1;
-   t->group_ok = t->lanes && t->skip;
    t->nrec = 0;
    if (t->lanes)
       t->quad = tex_quad_dfx19_lanes;
@@ -732,8 +731,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    struct rast_quad *q = &fr->quad[fr->npending];
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
-   /* divided as a group when it goes to the back end (fr_tex.group_ok) */
-   const bool grouped = has_persp && fr->tex.group_ok && rc->quads;
+   /* divided as a group when it goes to the back end (fr_tex.num) */
+   const bool grouped = has_persp && fr->tex.lanes && fr->tex.skip && rc->quads;
    if (has_persp)
       fr->tex.begin(fr, xq, y);
    /* the pass's origin back: the quad's place in the target */
@@ -800,7 +799,6 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
             t->nrec = fr->npending + 1;
          }
          tex_numerators_next(t);
-         t->n_divided += mask != 0;
       } else if (has_persp) {
          /* the covered quads that follow, for the lanes to divide with
           * this one (not needed while they hold divided ones) */
@@ -811,8 +809,9 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
                  nx += 2)
                ahead++;
          fr->tex.quad(fr, q, mask != 0, ahead);
-         fr->tex.n_divided += mask != 0;
       }
+      if (has_persp)
+         fr->tex.n_divided += mask != 0;
       if (!mask)
          continue;
       q->x = (int)(x + rc->org_x);

@@ -190,37 +190,43 @@ static inline void numerators(const struct fr_tex *t, unsigned step, dfxl_i *an,
 #endif
 }
 
+/* nq quads (1 or 2 one a vector, 2 or 4 two a vector) from their
+ * numerators: optimistically with the skips, and where a lane had a range
+ * event again the careful way, both vectors together (two quads a vector)
+ * or each quad alone. */
+static void divide(struct rast_front *fr, float *const *in, const dfxl_i an[2],
+                   const dfxl_i bn[2], unsigned nq)
+{
+   struct fr_tex *t = &fr->tex;
+   if (t->skip && persp_optimistic(fr, in, an, bn, nq))
+      return;
+   if (QPV == 2 || nq == 1) {
+      persp(fr, in, an, bn, false, t->ln, nq);
+      return;
+   }
+   float *const in_0[2] = { in[0], NULL }, *const in_1[2] = { in[1], NULL };
+   persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
+   persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
+}
+
 #if DFXL_N == 4
 void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q)
 {
-   struct fr_tex *t = &fr->tex;
    dfxl_i an[2], bn[2];
    float *const in[2] = { &q->in[0][0][0], NULL };
-   numerators(t, 0, &an[0], &bn[0]);
-   if (t->skip && persp_optimistic(fr, in, an, bn, 1))
-      return;
-   persp(fr, in, an, bn, false, t->ln, 1);
+   numerators(&fr->tex, 0, &an[0], &bn[0]);
+   divide(fr, in, an, bn, 1);
 }
 #endif
 
 void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
 {
-   struct fr_tex *t = &fr->tex;
    dfxl_i an[2], bn[2];
    float *const in[2] = { in0, in1 };
-   numerators(t, 0, &an[0], &bn[0]);
+   numerators(&fr->tex, 0, &an[0], &bn[0]);
    if (QPV == 1)
-      numerators(t, 1, &an[1], &bn[1]);
-   if (persp_optimistic(fr, in, an, bn, 2))
-      return;
-   /* a range event in one of them: each the careful way */
-   if (QPV == 2) {
-      persp(fr, in, an, bn, false, t->ln, 2);
-      return;
-   }
-   float *const in_0[2] = { in0, NULL }, *const in_1[2] = { in1, NULL };
-   persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
-   persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
+      numerators(&fr->tex, 1, &an[1], &bn[1]);
+   divide(fr, in, an, bn, 2);
 }
 
 /* Vector v's numerators from the recorded ones of quads from `first`
@@ -242,24 +248,14 @@ static inline void recorded(const struct fr_tex *t, const int64_t (*num)[4], uns
 }
 
 /* nq recorded quads in one call: 2 or 4 with the 512-bit set, 1 or 2
- * with the others; a range event in any: each vector the careful way, as
- * the row functions above do. */
+ * with the others. */
 static void persp_recorded(struct rast_front *fr, float *const *in, const int64_t (*num)[4],
                            unsigned nq)
 {
-   struct fr_tex *t = &fr->tex;
    dfxl_i an[2], bn[2];
    for (unsigned v = 0; v < nq / QPV; v++)
-      recorded(t, num, v * QPV, &an[v], &bn[v]);
-   if (t->skip && persp_optimistic(fr, in, an, bn, nq))
-      return;
-   if (QPV == 2 || nq == 1) {
-      persp(fr, in, an, bn, false, t->ln, nq);
-      return;
-   }
-   float *const in_0[2] = { in[0], NULL }, *const in_1[2] = { in[1], NULL };
-   persp(fr, in_0, &an[0], &bn[0], false, t->ln, 1);
-   persp(fr, in_1, &an[1], &bn[1], false, t->ln, 1);
+      recorded(&fr->tex, num, v * QPV, &an[v], &bn[v]);
+   divide(fr, in, an, bn, nq);
 }
 
 void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
@@ -293,12 +289,9 @@ void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
  * the other; a range event in either: all four the careful way. */
 void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4])
 {
-   struct fr_tex *t = &fr->tex;
    dfxl_i an[2], bn[2];
-   numerators(t, 0, &an[0], &bn[0]);
-   numerators(t, 2, &an[1], &bn[1]);
-   if (persp_optimistic(fr, in, an, bn, 4))
-      return;
-   persp(fr, in, an, bn, false, t->ln, 4);
+   numerators(&fr->tex, 0, &an[0], &bn[0]);
+   numerators(&fr->tex, 2, &an[1], &bn[1]);
+   divide(fr, in, an, bn, 4);
 }
 #endif
