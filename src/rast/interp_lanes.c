@@ -169,25 +169,37 @@ static bool persp_optimistic(struct rast_front *fr, float *const *in, const dfxl
    }
 }
 
-/* The numerators of the quads from `step` quads on from the registers'
- * (pixels x, x+1 of both scan lines), one quad a vector or two, built here
- * as vectors: written as numbers and read as one vector they would wait on
- * the processor's store forwarding.  The sums are the registers' own steps
- * (tex_numerators). */
-static inline void numerators(const struct fr_tex *t, unsigned step, dfxl_i *an, dfxl_i *bn)
+/* The lanes' numerators of quad q0 (a at the left pixel of both scan
+ * lines, then b) and, with the 512-bit set, q1: each pixel pair the left
+ * one and the registers' step right.  Built here as vectors: written as
+ * numbers and read as one vector they would wait on the processor's store
+ * forwarding. */
+static inline __attribute__((always_inline)) void
+quad_numerators(const struct fr_tex *t, const int64_t q0[4], const int64_t q1[4], dfxl_i *an,
+                dfxl_i *bn)
 {
-   const int64_t a0 = t->an[0] + step * 2 * t->a_dx, a1 = t->an[1] + step * 2 * t->a_dx;
-   const int64_t b0 = t->bn[0] + step * 2 * t->b_dx, b1 = t->bn[1] + step * 2 * t->b_dx;
 #if DFXL_N == 8
-   const int64_t a2 = 2 * t->a_dx, b2 = 2 * t->b_dx;
-   *an = (dfxl_i){ a0, a0 + t->a_dx, a1, a1 + t->a_dx,
-                   a0 + a2, a0 + a2 + t->a_dx, a1 + a2, a1 + a2 + t->a_dx };
-   *bn = (dfxl_i){ b0, b0 + t->b_dx, b1, b1 + t->b_dx,
-                   b0 + b2, b0 + b2 + t->b_dx, b1 + b2, b1 + b2 + t->b_dx };
+   *an = (dfxl_i){ q0[0], q0[0] + t->a_dx, q0[1], q0[1] + t->a_dx,
+                   q1[0], q1[0] + t->a_dx, q1[1], q1[1] + t->a_dx };
+   *bn = (dfxl_i){ q0[2], q0[2] + t->b_dx, q0[3], q0[3] + t->b_dx,
+                   q1[2], q1[2] + t->b_dx, q1[3], q1[3] + t->b_dx };
 #else
-   *an = (dfxl_i){ a0, a0 + t->a_dx, a1, a1 + t->a_dx };
-   *bn = (dfxl_i){ b0, b0 + t->b_dx, b1, b1 + t->b_dx };
+   (void)q1;
+   *an = (dfxl_i){ q0[0], q0[0] + t->a_dx, q0[1], q0[1] + t->a_dx };
+   *bn = (dfxl_i){ q0[2], q0[2] + t->b_dx, q0[3], q0[3] + t->b_dx };
 #endif
+}
+
+/* The numerators of the quads from `step` quads on from the registers'
+ * (the sums are the registers' own steps, tex_numerators). */
+static inline __attribute__((always_inline)) void
+numerators(const struct fr_tex *t, unsigned step, dfxl_i *an, dfxl_i *bn)
+{
+   const int64_t a = step * 2 * t->a_dx, b = step * 2 * t->b_dx;
+   const int64_t a2 = 2 * t->a_dx, b2 = 2 * t->b_dx;
+   const int64_t q0[4] = { t->an[0] + a, t->an[1] + a, t->bn[0] + b, t->bn[1] + b };
+   const int64_t q1[4] = { q0[0] + a2, q0[1] + a2, q0[2] + b2, q0[3] + b2 };
+   quad_numerators(t, q0, q1, an, bn);
 }
 
 /* nq quads (1 or 2 one a vector, 2 or 4 two a vector) from their
@@ -229,24 +241,6 @@ void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
    divide(fr, in, an, bn, 2);
 }
 
-/* Vector v's numerators from the recorded ones of quads from `first`
- * (one quad a vector, or two with the 512-bit set). */
-static inline void recorded(const struct fr_tex *t, const int64_t (*num)[4], unsigned first,
-                            dfxl_i *an, dfxl_i *bn)
-{
-   const int64_t *p = num[first];
-#if DFXL_N == 8
-   const int64_t *r = num[first + 1];
-   *an = (dfxl_i){ p[0], p[0] + t->a_dx, p[1], p[1] + t->a_dx,
-                   r[0], r[0] + t->a_dx, r[1], r[1] + t->a_dx };
-   *bn = (dfxl_i){ p[2], p[2] + t->b_dx, p[3], p[3] + t->b_dx,
-                   r[2], r[2] + t->b_dx, r[3], r[3] + t->b_dx };
-#else
-   *an = (dfxl_i){ p[0], p[0] + t->a_dx, p[1], p[1] + t->a_dx };
-   *bn = (dfxl_i){ p[2], p[2] + t->b_dx, p[3], p[3] + t->b_dx };
-#endif
-}
-
 /* nq recorded quads in one call: 2 or 4 with the 512-bit set, 1 or 2
  * with the others. */
 static void persp_recorded(struct rast_front *fr, float *const *in, const int64_t (*num)[4],
@@ -254,7 +248,7 @@ static void persp_recorded(struct rast_front *fr, float *const *in, const int64_
 {
    dfxl_i an[2], bn[2];
    for (unsigned v = 0; v < nq / QPV; v++)
-      recorded(&fr->tex, num, v * QPV, &an[v], &bn[v]);
+      quad_numerators(&fr->tex, num[v * QPV], num[v * QPV + QPV - 1], &an[v], &bn[v]);
    divide(fr, in, an, bn, nq);
 }
 
