@@ -48,6 +48,7 @@ struct fp_fragment_shader {
    bool color0_to_all;
    bool writes_depth;
    bool may_discard;
+   bool reads_fragcoord;          /* gl_FragCoord, an input or a system value */
    int depth_output;                /* output register, or -1 */
    int color_output[RAST_MAX_CBUFS];
    unsigned num_color_outputs;

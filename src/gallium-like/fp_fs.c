@@ -229,6 +229,7 @@ void fp_fs_validate(struct fp_context *fp)
    rs.writes_depth = fp->fs->writes_depth;
    rs.color0_to_all = fp->fs->color0_to_all;
    rs.may_discard = fp->fs->may_discard;
+   rs.reads_fragcoord = fp->fs->reads_fragcoord;
    rs.fetch_mask = fp->fs->fetch_mask;
 
    if (fp_fs_compiled(fp)) {

@@ -75,6 +75,7 @@ static const struct fp_driver_query queries[] = {
    FIELD("fp-skip-constant-components", FP_GROUP_SKIPS, skip_persp_comp),
    FIELD("fp-skip-texture-lod", FP_GROUP_SKIPS, skip_tex_lod),
    FIELD("fp-skip-texture-axes", FP_GROUP_SKIPS, skip_tex_axes),
+   FIELD("fp-skip-fragcoord", FP_GROUP_SKIPS, skip_fragcoord),
    FIELD("fp-texture-quads", FP_GROUP_TEXTURE, tex_quads),
    FIELD("fp-texels", FP_GROUP_TEXTURE, texels),
    { "fp-cycles", FP_GROUP_CYCLES, FIG_CYCLES, 0 },

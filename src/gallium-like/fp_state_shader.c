@@ -51,6 +51,7 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
       info->properties[TGSI_PROPERTY_FS_COORD_PIXEL_CENTER] == TGSI_FS_COORD_PIXEL_CENTER_INTEGER;
    fs->color0_to_all = info->properties[TGSI_PROPERTY_FS_COLOR0_WRITES_ALL_CBUFS] != 0;
    fs->may_discard = info->uses_kill;
+   fs->reads_fragcoord = info->reads_position;
    fs->depth_output = -1;
    for (unsigned i = 0; i < RAST_MAX_CBUFS; i++)
       fs->color_output[i] = -1;

@@ -171,12 +171,6 @@ static void lanes_skips_setup(struct rast_front *fr)
    struct fr_tex *t = &fr->tex;
    const struct dfx_format f = { DFX_MANT_BITS_SEED };
    struct dfx w = dfx_zero();
-   for (unsigned j = 0; j < 1 + fr->npersp; j++) {
-      t->lv[j][0] = dfxl_value(t->pl[j].v0.d);
-      t->lv[j][1] = dfxl_value(t->pl[j].d1.d);
-      t->lv[j][2] = dfxl_value(t->pl[j].d2.d);
-   }
-   t->lrdet = dfxl_value(t->rdet.d);
    t->w_const = t->skip && plane_is_const(&t->pl[0]);
    t->w_one = false;
    t->const_ev = (struct dfx_stats){ 0, 0 };
@@ -205,6 +199,35 @@ static void lanes_skips_setup(struct rast_front *fr)
    }
 }
 
+_Static_assert(FR_MAX_COMP == RAST_PLANES_MAX, "the lanes' planes are the front's");
+
+/* The planes of plane_set and the determinant's reciprocal on the lanes,
+ * the same bits (test_persp_fast), where no operation has a range event;
+ * the registers' fields from their values. */
+static bool lanes_planes(struct rast_front *fr, unsigned i0, unsigned i1, unsigned i2,
+                         int64_t det)
+{
+   struct fr_tex *t = &fr->tex;
+   const unsigned n = 1 + fr->npersp, p0 = 1 + fr->nlin;
+   const unsigned vi[3] = { i0, i1, i2 };
+   float val[3][1 + RAST_PLANES_MAX];
+   for (unsigned i = 0; i < 3; i++) {
+      const float *v = fr->vflt[vi[i]];
+      val[i][0] = v[0];
+      memcpy(&val[i][1], v + p0, fr->npersp * sizeof(float));
+   }
+   if (!rast_lanes()->planes_dfx19((const float (*)[1 + RAST_PLANES_MAX])val, n, det, t->k,
+                                   t->lv, &t->lrdet))
+      return false;
+   for (unsigned j = 0; j < n; j++) {
+      t->pl[j].v0.d = dfxl_fields(t->lv[j][0]);
+      t->pl[j].d1.d = dfxl_fields(t->lv[j][1]);
+      t->pl[j].d2.d = dfxl_fields(t->lv[j][2]);
+   }
+   t->rdet.d = dfxl_fields(t->lrdet);
+   return true;
+}
+
 void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
                                    unsigned i0, unsigned i1, unsigned i2)
 {
@@ -228,22 +251,28 @@ void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *f
    t->k = fx_bitlen64(det < 0 ? -(uint64_t)det : (uint64_t)det);
    t->kfmt = (struct fx_format){ 0, (uint8_t)t->k };
    t->fscale = (float)fx_pow2(-(int)t->k);
-   if (det) {
-      t->rdet = ns->recip(ns, ns->from_scaled(ns, det, t->k, &st), &st);
-      t->frdet = 1.0f / ((float)det * t->fscale);
-   } else {
-      /* a line snapped to a point: every pixel takes V0's values */
-      t->rdet = ns->from_float(ns, 0.0f, &st);
-      t->frdet = 0.0f;
-   }
+   t->frdet = det ? 1.0f / ((float)det * t->fscale) : 0.0f;
    const float *v0 = fr->vflt[i0], *v1 = fr->vflt[i1], *v2 = fr->vflt[i2];
-   plane_set(&t->pl[0], ns, v0[0], v1[0], v2[0], &st);
-   if (t->any_color)
-      plane_set(&t->fow, t->fns, v0[0], v1[0], v2[0], &st);
    const unsigned p0 = 1 + fr->nlin;       /* vflt[]: 1/w, LINEAR, PERSPECTIVE */
-   for (unsigned j = 0; j < fr->npersp; j++)
-      plane_set(&t->pl[1 + j], t->is_color[j] ? t->fns : ns, v0[p0 + j], v1[p0 + j],
-                v2[p0 + j], &st);
+   if (!(t->lanes && lanes_planes(fr, i0, i1, i2, det))) {
+      /* det = 0: a line snapped to a point, every pixel takes V0's values */
+      t->rdet = det ? ns->recip(ns, ns->from_scaled(ns, det, t->k, &st), &st)
+                    : ns->from_float(ns, 0.0f, &st);
+      plane_set(&t->pl[0], ns, v0[0], v1[0], v2[0], &st);
+      if (t->any_color)
+         plane_set(&t->fow, t->fns, v0[0], v1[0], v2[0], &st);
+      for (unsigned j = 0; j < fr->npersp; j++)
+         plane_set(&t->pl[1 + j], t->is_color[j] ? t->fns : ns, v0[p0 + j], v1[p0 + j],
+                   v2[p0 + j], &st);
+      if (t->lanes) {
+         for (unsigned j = 0; j < 1 + fr->npersp; j++) {
+            t->lv[j][0] = dfxl_value(t->pl[j].v0.d);
+            t->lv[j][1] = dfxl_value(t->pl[j].d1.d);
+            t->lv[j][2] = dfxl_value(t->pl[j].d2.d);
+         }
+         t->lrdet = dfxl_value(t->rdet.d);
+      }
+   }
    if (t->lanes)
       lanes_skips_setup(fr);
    rc->stats.tex_sat += st.sat;
@@ -729,6 +758,9 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    }
 
    struct rast_quad *q = &fr->quad[fr->npending];
+   /* gl_FragCoord's z and w only for a shader that reads them, and for the
+    * RTL vectors, which record w */
+   const bool fragcoord = rc->fs.reads_fragcoord || (rc->opts & RAST_OPT_NOSKIP) || rc->vec;
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
    /* divided as a group when it goes to the back end (fr_tex.num) */
@@ -753,8 +785,9 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
             q->z[i] = mv[i][0];
       if (measure)
          measure_quad(rc, fr, 0, x, y, mask, q->z);
-      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-         q->frag_z[i] = (float)((double)q->z[i] * zs);
+      if (fragcoord)
+         for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+            q->frag_z[i] = (float)((double)q->z[i] * zs);
       if (has_color) {
          for (unsigned k = 1; k < nfix; k++) {
             const struct fr_comp *c = &fr->color[k - 1];
@@ -771,7 +804,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
                o[i] = (float)p[i] * cs;
          }
       }
-      {
+      if (fragcoord) {
          float d = fr->flt_dx[0];
          float a0 = flt[0][0], a1 = a0 + d, b0 = flt[1][0], b1 = b0 + d;
          flt[0][0] = a1 + d;
@@ -817,6 +850,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       q->x = (int)(x + rc->org_x);
       q->mask = mask;
       rc->stats.quads++;
+      rc->stats.skip_fragcoord += !fragcoord;
       rc->stats.pixels_covered += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
       if (!rc->quads) {
          rc->quad(rc, q);

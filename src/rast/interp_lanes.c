@@ -289,3 +289,46 @@ void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4])
    divide(fr, in, an, bn, 4);
 }
 #endif
+
+/* A primitive's planes, as rast_interp_perspective_setup's plane_set makes
+ * each: v0 = from_float(V0), Δ1 = from_float(V1) − v0, Δ2 = from_float(V2)
+ * − v0, one plane a lane; and recip(det·2^−k) in lane 0 of its own
+ * vector.  These are scalar operations through the number system's table
+ * on the fields, a few hundred cycles per primitive, which the meshes'
+ * small triangles pay thousands of times a frame.  From binary32 is the
+ * integer input's rounding (dfxl_from_int: a double holds the value, and
+ * its 24 bits plus half a step of its digit fit 53); + 0.0 makes −0 the
+ * register's zero.  Optimistic: false, with nothing written, where a lane
+ * had a range event or a value is not finite; the caller then takes the
+ * scalar path, which counts them. */
+bool LANES_FN(planes_dfx19_lanes)(const float (*val)[1 + RAST_PLANES_MAX], unsigned n,
+                                  int64_t det, unsigned k, double (*lv)[3], double *lrdet)
+{
+   struct dfxl_stats st = DFXL_STATS(true);
+   dfxl_i bad = dfxl_splat(0);
+   dfxl_d out[3][(1 + RAST_PLANES_MAX + DFXL_N - 1) / DFXL_N];
+   unsigned nv = 0;
+   for (unsigned j0 = 0; j0 < n; j0 += DFXL_N, nv++) {
+      struct dfxl x[3];
+      for (unsigned i = 0; i < 3; i++) {
+         double v[DFXL_N];
+         for (unsigned l = 0; l < DFXL_N; l++)
+            v[l] = j0 + l < n ? (double)val[i][j0 + l] : 0.0;
+         memcpy(&x[i].v, v, sizeof(v));
+         bad |= ~(dfxl_abs(x[i].v) < 0x1p32);       /* a NaN compares false */
+         x[i] = dfxl_from_int(x[i].v, &st);
+         x[i].v += 0.0;
+      }
+      out[0][nv] = x[0].v;
+      out[1][nv] = dfxl_sub(x[1], x[0], &st).v;
+      out[2][nv] = dfxl_sub(x[2], x[0], &st).v;
+   }
+   struct dfxl r = dfxl_recip(dfxl_from_fixed(dfxl_splat(det), (int)k, &st), &st);
+   if (!det || dfxl_any(dfxl_trouble(&st) | bad))
+      return false;
+   for (unsigned j = 0; j < n; j++)
+      for (unsigned i = 0; i < 3; i++)
+         lv[j][i] = out[i][j / DFXL_N][j % DFXL_N];
+   *lrdet = r.v[0];
+   return true;
+}

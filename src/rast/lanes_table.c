@@ -19,6 +19,7 @@ const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
 #endif
    .persp2_dfx19 = LANES_FN(persp2_dfx19_lanes),
    .persp_group_dfx19 = LANES_FN(persp_group_dfx19_lanes),
+   .planes_dfx19 = LANES_FN(planes_dfx19_lanes),
 #if defined(DFXL_N) && DFXL_N == 8
    .persp4_dfx19 = LANES_FN(persp4_dfx19_lanes),
    .tex_group = 4,

@@ -336,6 +336,9 @@ struct rast_shader {
    bool writes_depth;
    bool color0_to_all;               /* gl_FragColor broadcast to every cbuf */
    bool may_discard;
+   /* It reads gl_FragCoord: the span processor fills the quads' frag_z
+    * and frag_w only then (a skip, counted in skip_fragcoord). */
+   bool reads_fragcoord;
    /* Colour buffers the shader reads (framebuffer fetch): the back end
     * fills the quad's `last` with them before shading, and a multisampled
     * target is shaded once a sample (msaa.c). */
@@ -372,6 +375,9 @@ struct rast_stats {
     * of a pair, where the coordinate follows the screen's axis (tex_lanes.c):
     * a share of twice tex_quads */
    uint64_t skip_tex_axes;
+   /* quads given to a shader that does not read gl_FragCoord, without its
+    * z and w (the Z register as a float, the 1/w walk): a share of quads */
+   uint64_t skip_fragcoord;
    /* PERSPECTIVE component-primitives whose vertex values were rebased by
     * a nonzero integer (rast_varying.rebase_mask) */
    uint64_t tex_rebased;

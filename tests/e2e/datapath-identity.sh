@@ -36,15 +36,15 @@ check_lanes() { # NAME
 }
 
 # work_ok LOG SKIPS: the work counters' lines (FIXPIPE_STATS=frames:N, in the form
-# "quads Q divided D skip_w ... skip_axes A"): at least one, every skip count at most
+# "skip_w ... skip_axes A skip_fragcoord F divided D ... quads Q"): at least one, every skip count at most
 # what it is a share of, and with SKIPS=none nothing skipped
 work_ok() {
     awk -v none="$2" '
         { for (i = 1; i < NF; i += 2) v[$i] = $(i + 1)
           if (v["divided"] > v["quads"] || v["skip_w"] > v["divided"] ||
               v["skip_comp"] > v["comp_quads"] || v["skip_lod"] > v["lod_quads"] ||
-              v["skip_axes"] > 2 * v["tex_quads"]) bad++
-          if (none == "none" && v["skip_w"] + v["skip_comp"] + v["skip_lod"] + v["skip_axes"] > 0) bad++
+              v["skip_axes"] > 2 * v["tex_quads"] || v["skip_fragcoord"] > v["quads"]) bad++
+          if (none == "none" && v["skip_w"] + v["skip_comp"] + v["skip_lod"] + v["skip_axes"] + v["skip_fragcoord"] > 0) bad++
           n++ }
         END { exit !(n > 0 && !bad) }' "$1"
 }
@@ -62,9 +62,9 @@ render() { # NAME PROGRAM ARGS...
     done
     check_lanes "$name" || return 1
     for m in $MODES; do   # the totals at the context's end, as work lines
-        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3 skip_axes \4/p' \
+        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\), quads without gl_FragCoord \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3 skip_axes \4 skip_fragcoord \5/p' \
             "$out/$name.$m.log" > "$out/$name.$m.skipped"
-        sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\), texture quads \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 tex_quads \4 quads \1/p' \
+        sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\), texture quads \([0-9]*\), quads \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 tex_quads \4 quads \5/p' \
             "$out/$name.$m.log" > "$out/$name.$m.shares"
         paste -d' ' "$out/$name.$m.skipped" "$out/$name.$m.shares" > "$out/$name.$m.work"
         if ! work_ok "$out/$name.$m.work" "$([ $m = scalar ] && echo none || echo some)"; then

@@ -257,6 +257,67 @@ static void flat_and_cull(void)
    t_fini(&t);
 }
 
+/* gl_FragCoord's z and w are left out of the quads of a shader that does
+ * not read them (a skip, counted per quad): everything else the same, and
+ * under RAST_OPT_NOSKIP the same z and w as for a shader that reads them. */
+#define FC_MAX 4096
+static struct fc_quad { int x, y; unsigned mask; int64_t z[4]; float fz[4], fw[4]; } fc[FC_MAX];
+static unsigned fc_n;
+static void fc_hook(struct tctx *tc, const struct rast_quad *q)
+{
+   (void)tc;
+   if (fc_n < FC_MAX) {
+      struct fc_quad *r = &fc[fc_n];
+      r->x = q->x; r->y = q->y; r->mask = q->mask;
+      memcpy(r->z, q->z, sizeof(r->z));
+      memcpy(r->fz, q->frag_z, sizeof(r->fz));
+      memcpy(r->fw, q->frag_w, sizeof(r->fw));
+   }
+   fc_n++;
+}
+
+static void fragcoord_pass(bool reads, unsigned opts, uint64_t *quads, uint64_t *skipped)
+{
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof(fs));
+   fs.ctx = &t;
+   fs.shade = t_shade_record;
+   fs.may_discard = true;
+   fs.reads_fragcoord = reads;
+   rast_set_shader(t.rc, &fs);
+   rast_set_options(t.rc, opts);
+   const struct rast_stats s0 = *rast_get_stats(t.rc);
+   fc_n = 0;
+   float v[3][1][4] = { { { 10.3f, 7.1f, 0.2f, 1.0f } }, { { 90.6f, 30.2f, 0.7f, 0.25f } },
+                        { { 40.2f, 100.9f, 0.9f, 0.5f } } };
+   t_tri(t.rc, v[0], v[1], v[2]);
+   *quads = rast_get_stats(t.rc)->quads - s0.quads;
+   *skipped = rast_get_stats(t.rc)->skip_fragcoord - s0.skip_fragcoord;
+}
+
+static void fragcoord_skip(void)
+{
+   t_init(&t, "seed", 128, 128);
+   t.hook = fc_hook;
+   static struct fc_quad want[FC_MAX];
+   uint64_t q, sk;
+   fragcoord_pass(true, 0, &q, &sk);
+   const unsigned n = fc_n;
+   CHECK(n > 0 && n <= FC_MAX && q == n && sk == 0, "read: %u quads, %llu skipped", n,
+         (unsigned long long)sk);
+   memcpy(want, fc, sizeof(want));
+   fragcoord_pass(false, 0, &q, &sk);
+   CHECK(fc_n == n && sk == q && q == n, "not read: %u quads, %llu skipped", fc_n,
+         (unsigned long long)sk);
+   for (unsigned i = 0; i < n && i < fc_n; i++)
+      CHECK(fc[i].x == want[i].x && fc[i].y == want[i].y && fc[i].mask == want[i].mask &&
+               !memcmp(fc[i].z, want[i].z, sizeof(fc[i].z)), "quad %u differs", i);
+   fragcoord_pass(false, RAST_OPT_NOSKIP, &q, &sk);
+   CHECK(fc_n == n && sk == 0, "noskip: %llu skipped", (unsigned long long)sk);
+   CHECK(!memcmp(fc, want, n * sizeof(fc[0])), "noskip: gl_FragCoord's z or w differ");
+   t_fini(&t);
+}
+
 /* Lines: the vector form on two corners along the line and one across it
  * (Δ2 = 0).  The attribute varies along the major axis only, linearly in
  * A/w and 1/w between the end points, so at a pixel centre c the exact
@@ -373,6 +434,7 @@ int main(void)
    const char *systems[] = { "float", "dfx29", "fx8.24", "fx16.16", "fx24.8" };
    for (unsigned i = 0; i < sizeof(systems) / sizeof(systems[0]); i++)
       run_system(systems[i]);
+   fragcoord_skip();
    lines_persp("dfx24");
    lines_persp("float");
    lines_persp("fx8.24");

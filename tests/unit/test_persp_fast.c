@@ -65,6 +65,7 @@ static void set_group(unsigned group)
    fs.shade_n = group ? shade_group : NULL;
    fs.group = group;
    fs.may_discard = true;
+   fs.reads_fragcoord = true;
    rast_set_shader(t.rc, &fs);
 }
 
@@ -94,9 +95,11 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
 
 static float rnd_attr(void)
 {
-   switch ((int)(t_rand() * 6)) {
-   case 0: return 0.0f;
+   switch ((int)(t_rand() * 7)) {
+   case 0: return t_rand() < 0.5 ? 0.0f : -0.0f;
    case 1: return (float)ldexp(t_rand() - 0.5, (int)(t_rand() * 40) - 20);
+   /* around 2^32, where the planes' set-up saturates (the lanes' fall-back) */
+   case 2: return (float)ldexp(t_rand() - 0.5, 30 + (int)(t_rand() * 5));
    default: return (float)(8 * t_rand() - 4);
    }
 }

@@ -83,6 +83,7 @@ void t_init(struct tctx *t, const char *profile, int w, int h)
    fs.ctx = t;
    fs.shade = t_shade_record;
    fs.may_discard = true;
+   fs.reads_fragcoord = true;       /* the hooks read every input */
    rast_set_shader(t->rc, &fs);
    t_raster(t, true, false);
 }
