@@ -161,7 +161,7 @@ static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n
 {
    struct rast_backend *be = backend(rc);
    const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n));
-   rc->stats.samples_passed += (unsigned)__builtin_popcount(kept);
+   rc->stats.samples_passed += rast_popcount16(kept);
    color_stage_group(be, q, n, kept);
 }
 
@@ -180,7 +180,7 @@ static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n
    { \
       struct rast_backend *be = backend(rc); \
       const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n)); \
-      rc->stats.samples_passed += (unsigned)__builtin_popcount(kept); \
+      rc->stats.samples_passed += rast_popcount16(kept); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
       for (unsigned i = 0; i < n; i++) \
          rast_store8_quad(p->base, p->stride, q[i].x, q[i].y, kept >> 4 * i & 15, \

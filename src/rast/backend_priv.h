@@ -91,6 +91,13 @@ enum rast_zfamily {
    RAST_ZF_COUNT
 };
 
+/* floor(n / (2^s · B)) for n up to the rule's numerator, B odd:
+ * (⌊n / 2^s⌋ · m) >> k with m = ⌈2^k / B⌉ (backend_zs.c). */
+struct rast_zdiv {
+   uint64_t m;
+   unsigned s, k;
+};
+
 struct rast_backend {
    /* Depth/stencil. */
    rast_zconv_func zconv;
@@ -113,6 +120,7 @@ struct rast_backend {
    uint64_t z_max;                /* 2^N - 1 of the buffer */
    unsigned z_frac;               /* frac_bits of the profile */
    unsigned z_nbits;              /* N */
+   struct rast_zdiv zdiv;         /* the rule's division as a multiply */
 
    /* Colour. */
    bool shade_needed;             /* false: no visible effect of the shader */
@@ -127,6 +135,10 @@ struct rast_backend {
 /* backend_zs.c */
 void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc);
 uint32_t rast_z_to_unorm(uint64_t z, uint64_t full, uint64_t max);
+/* The same, the division by 2·full as a multiply by its reciprocal, exact
+ * where rast_zdiv_init says so. */
+bool rast_zdiv_init(struct rast_zdiv *d, uint64_t full, uint64_t max);
+uint32_t rast_zdiv_to_unorm(const struct rast_zdiv *d, uint64_t z, uint64_t full, uint64_t max);
 uint32_t rast_float_to_unorm(float d, unsigned nbits);
 
 /* backend_color.c */
@@ -142,6 +154,16 @@ bool rast_logicop_plan(struct rast_cbuf_plan *p, enum rast_color_layout layout,
 static inline unsigned rast_popcount4(unsigned mask)
 {
    return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1);
+}
+
+/* The pixels kept of a group (16 bits): the baseline instruction set has
+ * no popcnt, and __builtin_popcount is then a call into libgcc. */
+static inline unsigned rast_popcount16(unsigned mask)
+{
+   mask -= (mask >> 1) & 0x5555u;
+   mask = (mask & 0x3333u) + ((mask >> 2) & 0x3333u);
+   mask = (mask + (mask >> 4)) & 0x0f0fu;
+   return (mask + (mask >> 8)) & 0x1fu;
 }
 
 /* Pixel i of the quad at (x, y). */

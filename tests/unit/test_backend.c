@@ -13,6 +13,7 @@
 #include <string.h>
 #include "rast/rast.h"
 #include "rast/rast_priv.h"
+#include "rast/backend_priv.h"
 
 #if !defined(__SIZEOF_INT128__)
 #error "the reference depth conversion uses unsigned __int128"
@@ -678,6 +679,49 @@ static void test_stencil_ops_fixed(void)
          rast_destroy(rc);
       }
    printf("stencil ops (fixed cases, both faces): %s\n", failures == before ? "ok" : "FAILED");
+}
+
+/* The rule's division as a multiply (rast_zdiv, the default path) against
+ * the division, on every Z register width and fraction the profiles can
+ * have and every unorm depth: the ends, and random registers. */
+static void test_depth_conversion_mul(void)
+{
+   unsigned before = failures, exact = 0;
+   for (unsigned zb = 8; zb <= 32; zb++)
+      for (unsigned f = 0; f <= 16; f += 4)
+         for (unsigned nb = 16; nb <= 32; nb += 8) {
+            const uint64_t full = ((UINT64_C(1) << zb) - 1) << f;
+            const uint64_t max = (UINT64_C(1) << nb) - 1;
+            struct rast_zdiv d;
+            if (!rast_zdiv_init(&d, full, max)) {
+               if (full <= UINT64_MAX / (2 * max + 1))   /* the numerator fits 64 bits */
+                  CHECK(0, "zdiv: no multiply for z_bits %u, frac %u, unorm%u", zb, f, nb);
+               continue;
+            }
+            exact++;
+            for (unsigned i = 0; i < 20000; i++) {
+               const uint64_t z = i == 0 ? 0 : i == 1 ? full : i == 2 ? full - 1 : i == 3 ? 1
+                                : i == 4 ? full / 2 : rnd64() % (full + 1);
+               const uint32_t want = rast_z_to_unorm(z, full, max);
+               const uint32_t got = rast_zdiv_to_unorm(&d, z, full, max);
+               if (got != want) {
+                  CHECK(0, "zdiv: z_bits %u frac %u unorm%u, z %llu: %u, want %u", zb, f, nb,
+                       (unsigned long long)z, got, want);
+                  break;
+               }
+            }
+         }
+   printf("depth conversion by multiply: %u formats, %s\n", exact,
+          failures == before ? "same as the division" : "FAILED");
+}
+
+/* A group's kept pixels counted for the occlusion queries: every mask. */
+static void test_popcount16(void)
+{
+   unsigned bad = 0;
+   for (unsigned m = 0; m < 65536; m++)
+      bad += rast_popcount16(m) != (unsigned)__builtin_popcount(m);
+   CHECK(bad == 0, "rast_popcount16: %u masks miscounted", bad);
 }
 
 /* Values worked out by hand from the conversion rule (backend_zs.c). */
@@ -1590,6 +1634,8 @@ int main(void)
    printf("test_backend: seed 0x%llx\n", (unsigned long long)rng_state);
 
    test_depth_conversion_fixed();
+   test_depth_conversion_mul();
+   test_popcount16();
    test_depth_buffer_units();
    test_depth_funcs();
    test_stencil_ops_fixed();

@@ -2,6 +2,7 @@
  * format (never a wrap-around), ceil, and the set-up multiply/divide. */
 #include <math.h>
 #include "tutil.h"
+#include "fixed/fx_wide.h"
 #include "fixed/fx.h"
 
 static void check_format(const char *what, struct fx_format f)
@@ -69,8 +70,48 @@ static void check_format(const char *what, struct fx_format f)
    CHECK(fx_div(f, f, fx_max(f), f, 1, &s) == fx_max(f) && s.high == 3, "%s div overflow", what);
 }
 
+/* fx_div_round_i128's 64-bit path against the 128-bit division it
+ * replaces: random operands of every size, ties, signs, the ends. */
+static fx_i128 div_round_ref(fx_i128 n, fx_i128 d)
+{
+   fx_i128 q = n / d, r = n % d;
+   fx_i128 ar = r < 0 ? -r : r, ad = d < 0 ? -d : d;
+   if (2 * ar >= ad)
+      q += ((n < 0) != (d < 0)) ? -1 : 1;
+   return q;
+}
+
+static void check_div_round(void)
+{
+   uint64_t st = 0x243f6a8885a308d3u;
+   unsigned bad = 0;
+   const int64_t ends[] = { INT64_MAX, -INT64_MAX, INT64_MAX - 1, 1, -1, 2, -2, 3, 7, -7 };
+   for (unsigned i = 0; i < 2000000; i++) {
+      fx_i128 n, d;
+      if (i < 100) {
+         n = ends[i % 10];
+         d = ends[i / 10];
+      } else {
+         const unsigned bn = (unsigned)(t_xorshift(&st) % 64), bd = 1 + (unsigned)(t_xorshift(&st) % 63);
+         n = (fx_i128)(t_xorshift(&st) >> (63 - bn)) - (fx_i128)(t_xorshift(&st) >> (63 - bn));
+         d = (fx_i128)(t_xorshift(&st) >> (64 - bd)) | 1;
+         if (i % 3 == 0)
+            n = (n / d) * d + (d / 2) * (n < 0 ? -1 : 1);     /* a tie when d is even */
+         if (i % 2)
+            d = -d;
+         if (i % 17 == 0)
+            n *= (fx_i128)1 << 40;                          /* beyond 64 bits */
+      }
+      if (!d)
+         continue;
+      bad += fx_div_round_i128(n, d) != div_round_ref(n, d);
+   }
+   CHECK(bad == 0, "fx_div_round_i128: %u quotients differ from the 128-bit division", bad);
+}
+
 int main(void)
 {
+   check_div_round();
    for (const struct rast_profile *const *p = rast_profile_list(); *p; p++) {
       const struct rast_profile *pr = *p;
       char buf[64];
