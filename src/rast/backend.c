@@ -15,6 +15,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include "rast/backend_priv.h"
+#include "rast/c8_lanes.h"
 #include "rast/vectors.h"
 
 static inline struct rast_backend *backend(struct rast_context *rc)
@@ -173,7 +174,7 @@ static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n
       const unsigned mask = shade(rc, q, q->mask, &be->out[0]); \
       rc->stats.samples_passed += rast_popcount4(mask); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
-      rast_store8_quad(p->base, p->stride, q->x, q->y, mask, \
+      c8_store_quad(p, q->x, q->y, mask, \
                        (chan_quad)be->out[0].color[p->src], R, G, B, A, X8); \
    } \
    static void group_fast_##NAME(struct rast_context *rc, struct rast_quad *q, unsigned n) \
@@ -183,7 +184,7 @@ static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n
       rc->stats.samples_passed += rast_popcount16(kept); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
       for (unsigned i = 0; i < n; i++) \
-         rast_store8_quad(p->base, p->stride, q[i].x, q[i].y, kept >> 4 * i & 15, \
+         c8_store_quad(p, q[i].x, q[i].y, kept >> 4 * i & 15, \
                           (chan_quad)be->out[i].color[p->src], R, G, B, A, X8); \
    }
 

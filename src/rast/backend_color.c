@@ -12,6 +12,7 @@
 #include <string.h>
 #include <stddef.h>
 #include "rast/backend_priv.h"
+#include "rast/c8_lanes.h"
 
 uint8_t rast_float_to_ubyte(float f)
 {
@@ -166,46 +167,15 @@ static inline void store8_masked(const struct rast_cbuf_plan *p, int x, int y, u
  * loop is the reference: RAST_OPT_SCALAR, and test_backend holds the two
  * to each other).  A pixel is its 32-bit word, a channel the byte at its
  * offset. */
-typedef float v4f __attribute__((vector_size(16)));
-typedef int32_t v4i __attribute__((vector_size(16)));
-typedef uint32_t v4u __attribute__((vector_size(16)));
-
-static inline v4f splat4(float v)
-{
-   return (v4f){ v, v, v, v };
-}
-
-static inline v4f clamp01_4(v4f v)                  /* rast_clamp01 */
-{
-   v = (v4f)((v4i)v & (v > splat4(0.0f)));          /* NaN and -0 to +0 */
-   const v4i below = v < splat4(1.0f);
-   return (v4f)(((v4i)v & below) | ((v4i)splat4(1.0f) & ~below));
-}
-
-static inline v4u f2ub4(v4f f)                      /* rast_f2ub, in the low byte */
-{
-   return (v4u)(clamp01_4(f) * splat4(255.0f / 256.0f) + splat4(32768.0f)) & 0xff;
-}
-
-static inline v4f ub2f4(v4u words, unsigned byte)   /* rast_ub2f of each word's byte */
-{
-   return __builtin_convertvector((v4i)((words >> (8 * byte)) & 0xff), v4f) *
-          splat4(1.0f / 255.0f);
-}
-
 static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y,
                                     unsigned mask, const float (*src)[RAST_QUAD_SIZE],
                                     unsigned r, unsigned g, unsigned b, unsigned a, bool x8)
 {
    const float (*k)[2] = (const float (*)[2])p->affine;
    const unsigned off[3] = { r, g, b };
-   uint8_t *row0 = cpixel(p, x, y), *row1 = cpixel(p, x, y + 1);
-   uint32_t px[RAST_QUAD_SIZE];
-   memcpy(&px[0], row0, 8);
-   memcpy(&px[2], row1, 8);
-   v4u d, out;
+   const v4u d = c8_load4(p, x, y);
+   v4u out;
    v4f s[4];
-   memcpy(&d, px, sizeof(d));
    memcpy(s, src, sizeof(s));
    const v4f sa = clamp01_4(s[3]);
    const v4f fs = splat4(k[0][0]) + splat4(k[0][1]) * sa,
@@ -219,10 +189,7 @@ static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y
       out |= f2ub4(clamp01_4(s[c]) * fs + ub2f4(d, off[c]) * fd) << (8 * off[c]);
    /* pixels outside the mask keep their word */
    const v4u keep = (v4u)((v4i){ 1, 2, 4, 8 } & (int32_t)mask) == 0;
-   out = (out & ~keep) | (d & keep);
-   memcpy(px, &out, sizeof(out));
-   memcpy(row0, &px[0], 8);
-   memcpy(row1, &px[2], 8);
+   c8_write4(p, x, y, (out & ~keep) | (d & keep));
 }
 
 static inline void c8_blend_affine(const struct rast_cbuf_plan *p, int x, int y, unsigned mask,
@@ -232,7 +199,7 @@ static inline void c8_blend_affine(const struct rast_cbuf_plan *p, int x, int y,
    /* a partial quad too, where all four pixels are in the framebuffer:
     * the lanes are independent, and the masked-off ones are written back
     * as they were (a quad is one thread's) */
-   if (p->quad4 && (mask == 0xf || (x + 1 < p->fb_w && y + 1 < p->fb_h))) {
+   if (c8_lanes_ok(p, x, y, mask)) {
       c8_blend_affine4(p, x, y, mask, src, r, g, b, a, x8);
       return;
    }
@@ -268,7 +235,7 @@ static inline void c8_blend_affine(const struct rast_cbuf_plan *p, int x, int y,
                                const float (*src1)[RAST_QUAD_SIZE]) \
    { \
       (void)src1; \
-      rast_store8_quad(p->base, p->stride, x, y, mask, src, R, G, B, A, X8); \
+      c8_store_quad(p, x, y, mask, src, R, G, B, A, X8); \
    } \
    static void c8_masked_##NAME(const struct rast_cbuf_plan *p, int x, int y, unsigned mask, \
                                 const float (*src)[RAST_QUAD_SIZE], \

@@ -1084,7 +1084,8 @@ static void test_blend(void)
  * (backend_color.c's c8_blend_affine4) against the per-pixel loop
  * (RAST_OPT_SCALAR): the same bytes, for every factor of the affine set
  * on each of rgb/alpha src/dst, sources with NaN, -0, infinities and
- * values outside [0, 1], every destination byte. */
+ * values outside [0, 1], every destination byte; and the unblended store
+ * (c8_lanes.h's c8_store_quad4 against rast_store8_quad) the same way. */
 static float rnd_special(void)
 {
    static const float special[] = { 0.0f, -0.0f, 1.0f, 0.5f, NAN, INFINITY, -INFINITY,
@@ -1101,18 +1102,18 @@ static void test_affine_lanes(void)
    unsigned quads = 0;
    for (unsigned fi = 0; fi < 3; fi++) {
       const enum tfmt f = (enum tfmt)fi;         /* RGBA8, BGRA8, BGRX8 */
-      for (unsigned combo = 0; combo < 256; combo++) {
+      for (unsigned combo = 0; combo <= 256; combo++) {   /* 256: no blending */
          struct rast_context *rc[2];
          struct rast_blend_state bs;
          memset(&bs, 0, sizeof bs);
          struct rast_blend_target *bt = &bs.rt[0];
-         bt->blend_enable = true;
+         bt->blend_enable = combo < 256;
          bt->colormask = 0xf;
          bt->rgb_eq = bt->alpha_eq = RAST_BLEND_ADD;
          bt->rgb_src = fac[combo & 3];
          bt->rgb_dst = fac[(combo >> 2) & 3];
          bt->alpha_src = fac[(combo >> 4) & 3];
-         bt->alpha_dst = fac[combo >> 6];
+         bt->alpha_dst = fac[(combo >> 6) & 3];
          for (unsigned m = 0; m < 2; m++) {
             rc[m] = rast_create(profile_named("seed"));
             rast_set_options(rc[m], m ? RAST_OPT_SCALAR : 0);
@@ -1145,13 +1146,14 @@ static void test_affine_lanes(void)
             quads++;
          }
          CHECK(memcmp(cc[0].mem[0], cc[1].mem[0], CBUF_BYTES) == 0,
-               "%s affine blend src %u/%u dst %u/%u: lanes and scalar differ", tfmt_name[f],
-               bt->rgb_src, bt->alpha_src, bt->rgb_dst, bt->alpha_dst);
+               "%s %s src %u/%u dst %u/%u: lanes and scalar differ", tfmt_name[f],
+               combo < 256 ? "affine blend" : "store", bt->rgb_src, bt->alpha_src, bt->rgb_dst,
+               bt->alpha_dst);
          rast_destroy(rc[0]);
          rast_destroy(rc[1]);
       }
    }
-   printf("affine blend on lanes: %u quads against the scalar loop: %s\n", quads,
+   printf("affine blend and store on lanes: %u quads against the scalar loop: %s\n", quads,
           failures == before ? "ok" : "FAILED");
 }
 
