@@ -61,6 +61,7 @@ struct fp_fragment_shader {
    uint64_t quads_interpreted;
    struct fp_jit_variant *jit;
    bool jit_failed;
+   bool hot_ahead;                /* a batch about to be drawn makes it hot */
 };
 
 /* Tiered like fragment shaders: draw runs it in tgsi_exec until it is hot,
@@ -149,6 +150,7 @@ struct fp_context {
    struct {
       uint64_t compiled, failed;
       uint64_t vs_compiled, cache_hits;
+      uint64_t hot_ahead;         /* fragment shaders hot before a batch */
       double compile_ms;
    } jit_stats;
 
@@ -238,6 +240,11 @@ void fp_fs_validate(struct fp_context *fp);
 /* fp_fs.c: after the model drew a batch: the interpreted quads counted to
  * the shader (it compiles once hot, at the same quad whatever the threads). */
 void fp_fs_batch_done(struct fp_context *fp);
+/* fp_fs.c: before a batch is drawn: whether the bound shader is interpreted
+ * and may be compiled, and then, with the quads the batch's triangles
+ * cover, whether it is hot already (compiled before the batch). */
+bool fp_fs_batch_may_compile(const struct fp_context *fp);
+void fp_fs_batch_ahead(struct fp_context *fp, double quads);
 
 /* fp_sampler.c */
 /* Its range and LOD counts go to rc, the model context of the thread it

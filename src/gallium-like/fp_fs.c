@@ -152,7 +152,8 @@ static bool fp_fs_compiled(struct fp_context *fp)
       return true;
    if (!fp->jit || fs->jit_failed)
       return false;
-   if (fs->quads_interpreted < FP_JIT_HOT_QUADS && !(fp_env_debug() & FP_DEBUG_JITALL))
+   if (fs->quads_interpreted < FP_JIT_HOT_QUADS && !fs->hot_ahead &&
+       !(fp_env_debug() & FP_DEBUG_JITALL))
       return false;
    fs->jit = fp_jit_fs_compile(fp, fs->tokens, &fs->info, fs->depth_output, fs->color_output,
                                fs->num_color_outputs);
@@ -175,6 +176,28 @@ static unsigned fp_fs_shade_none(void *ctx, const struct rast_quad *q,
    (void)ctx;
    memset(out->color[0], 0, sizeof(out->color[0]));
    return q->mask;
+}
+
+bool fp_fs_batch_may_compile(const struct fp_context *fp)
+{
+   const struct fp_fragment_shader *fs = fp->fs;
+   return fs && !fs->jit && !fs->hot_ahead && fp->jit && !fs->jit_failed;
+}
+
+/* A batch that alone takes the shader past FP_JIT_HOT_QUADS would cost more
+ * interpreted than compiling it costs (the threshold's rent-or-buy
+ * argument, docs/jit.md), so the shader is hot before it: a full-screen
+ * pass, one batch of two triangles, is otherwise interpreted whole.  The
+ * estimate is the triangles' area, from the batch's own vertices, so the
+ * decision depends on the program alone, never on the threads. */
+void fp_fs_batch_ahead(struct fp_context *fp, double quads)
+{
+   struct fp_fragment_shader *fs = fp->fs;
+   if ((double)fs->quads_interpreted + quads >= FP_JIT_HOT_QUADS) {
+      fs->hot_ahead = true;
+      fp->fs_dirty = true;
+      fp->jit_stats.hot_ahead++;
+   }
 }
 
 /* Hot: compiled at the next validation (the next draw, or the next batch of

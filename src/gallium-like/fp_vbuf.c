@@ -204,72 +204,72 @@ typedef const float (*fp_vert)[4];
 #define V(i) ((fp_vert)((const uint8_t *)v->vertices + (size_t)(IDX(i)) * stride))
 
 /* One body for draw_elements and draw_arrays; IDX maps a position in the
- * primitive stream to a vertex number. */
-#define FP_EMIT_PRIMS()                                                        \
+ * primitive stream to a vertex number, TRI, LINE and POINT take each
+ * primitive's vertices. */
+#define FP_EMIT_PRIMS(TRI, LINE, POINT)                                        \
    do {                                                                        \
-      struct rast_context *rc = v->fp->rast;                                   \
       const bool first = v->fp->rasterizer && v->fp->rasterizer->base.flatshade_first; \
       unsigned i;                                                              \
       switch (v->prim) {                                                       \
       case PIPE_PRIM_POINTS:                                                   \
-         for (i = 0; i < nr; i++) rast_point(rc, V(i));                        \
+         for (i = 0; i < nr; i++) POINT(V(i));                                 \
          break;                                                                \
       case PIPE_PRIM_LINES:                                                    \
-         for (i = 1; i < nr; i += 2) rast_line(rc, V(i - 1), V(i));            \
+         for (i = 1; i < nr; i += 2) LINE(V(i - 1), V(i));                     \
          break;                                                                \
       case PIPE_PRIM_LINE_STRIP:                                               \
-         for (i = 1; i < nr; i++) rast_line(rc, V(i - 1), V(i));               \
+         for (i = 1; i < nr; i++) LINE(V(i - 1), V(i));                        \
          break;                                                                \
       case PIPE_PRIM_LINE_LOOP:                                                \
-         for (i = 1; i < nr; i++) rast_line(rc, V(i - 1), V(i));               \
-         if (nr > 1) rast_line(rc, V(nr - 1), V(0));                           \
+         for (i = 1; i < nr; i++) LINE(V(i - 1), V(i));                        \
+         if (nr > 1) LINE(V(nr - 1), V(0));                                    \
          break;                                                                \
       case PIPE_PRIM_TRIANGLES:                                                \
-         for (i = 2; i < nr; i += 3) rast_triangle(rc, V(i - 2), V(i - 1), V(i)); \
+         for (i = 2; i < nr; i += 3) TRI(V(i - 2), V(i - 1), V(i));            \
          break;                                                                \
       case PIPE_PRIM_TRIANGLE_STRIP:                                           \
          for (i = 2; i < nr; i++) {                                            \
             if (first)                                                         \
-               rast_triangle(rc, V(i - 2), V(i + (i & 1) - 1), V(i - (i & 1))); \
+               TRI(V(i - 2), V(i + (i & 1) - 1), V(i - (i & 1)));              \
             else                                                               \
-               rast_triangle(rc, V(i + (i & 1) - 2), V(i - (i & 1) - 1), V(i)); \
+               TRI(V(i + (i & 1) - 2), V(i - (i & 1) - 1), V(i));              \
          }                                                                     \
          break;                                                                \
       case PIPE_PRIM_TRIANGLE_FAN:                                             \
          for (i = 2; i < nr; i++) {                                            \
             if (first)                                                         \
-               rast_triangle(rc, V(i - 1), V(i), V(0));                        \
+               TRI(V(i - 1), V(i), V(0));                                      \
             else                                                               \
-               rast_triangle(rc, V(0), V(i - 1), V(i));                        \
+               TRI(V(0), V(i - 1), V(i));                                      \
          }                                                                     \
          break;                                                                \
       case PIPE_PRIM_POLYGON:   /* GL: vertex 0 provokes, whatever the mode */ \
          for (i = 2; i < nr; i++) {                                            \
             if (first)                                                         \
-               rast_triangle(rc, V(0), V(i - 1), V(i));                        \
+               TRI(V(0), V(i - 1), V(i));                                      \
             else                                                               \
-               rast_triangle(rc, V(i - 1), V(i), V(0));                        \
+               TRI(V(i - 1), V(i), V(0));                                      \
          }                                                                     \
          break;                                                                \
       case PIPE_PRIM_QUADS:                                                    \
          for (i = 3; i < nr; i += 4) {                                         \
             if (first) {                                                       \
-               rast_triangle(rc, V(i), V(i - 3), V(i - 2));                    \
-               rast_triangle(rc, V(i), V(i - 2), V(i - 1));                    \
+               TRI(V(i), V(i - 3), V(i - 2));                                  \
+               TRI(V(i), V(i - 2), V(i - 1));                                  \
             } else {                                                           \
-               rast_triangle(rc, V(i - 3), V(i - 2), V(i));                    \
-               rast_triangle(rc, V(i - 2), V(i - 1), V(i));                    \
+               TRI(V(i - 3), V(i - 2), V(i));                                  \
+               TRI(V(i - 2), V(i - 1), V(i));                                  \
             }                                                                  \
          }                                                                     \
          break;                                                                \
       case PIPE_PRIM_QUAD_STRIP:                                               \
          for (i = 3; i < nr; i += 2) {                                         \
             if (first) {                                                       \
-               rast_triangle(rc, V(i), V(i - 3), V(i - 2));                    \
-               rast_triangle(rc, V(i), V(i - 1), V(i - 3));                    \
+               TRI(V(i), V(i - 3), V(i - 2));                                  \
+               TRI(V(i), V(i - 1), V(i - 3));                                  \
             } else {                                                           \
-               rast_triangle(rc, V(i - 3), V(i - 2), V(i));                    \
-               rast_triangle(rc, V(i - 1), V(i - 3), V(i));                    \
+               TRI(V(i - 3), V(i - 2), V(i));                                  \
+               TRI(V(i - 1), V(i - 3), V(i));                                  \
             }                                                                  \
          }                                                                     \
          break;                                                                \
@@ -277,6 +277,23 @@ typedef const float (*fp_vert)[4];
          break;                                                                \
       }                                                                        \
    } while (0)
+
+#define FP_DRAW_TRI(a, b, c) rast_triangle(v->fp->rast, a, b, c)
+#define FP_DRAW_LINE(a, b) rast_line(v->fp->rast, a, b)
+#define FP_DRAW_POINT(a) rast_point(v->fp->rast, a)
+
+/* Twice a triangle's area in pixels, from its window position (slot 0). */
+static inline double fp_tri_area2(fp_vert a, fp_vert b, fp_vert c)
+{
+   const double d = ((double)b[0][0] - a[0][0]) * ((double)c[0][1] - a[0][1]) -
+                    ((double)c[0][0] - a[0][0]) * ((double)b[0][1] - a[0][1]);
+   return d < 0 ? -d : d;
+}
+
+/* The quads a batch's triangles cover, about (lines and points count
+ * nothing): where an interpreted shader is bound, before it is drawn. */
+#define FP_AREA_TRI(a, b, c) (area2 += fp_tri_area2(a, b, c))
+#define FP_AREA_NONE(...) ((void)0)
 
 /* Also brings the fragment shader up to date: draw's stages (polygon
  * stipple, smooth lines and points) bind their own variants mid-draw. */
@@ -302,10 +319,15 @@ static void fp_vbuf_draw_elements(struct vbuf_render *r, const ushort *indices, 
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
    const size_t stride = v->vertex_size;
+#define IDX(i) indices[i]
+   if (fp_fs_batch_may_compile(v->fp)) {
+      double area2 = 0;
+      FP_EMIT_PRIMS(FP_AREA_TRI, FP_AREA_NONE, FP_AREA_NONE);
+      fp_fs_batch_ahead(v->fp, area2 / 8);
+   }
    if (fp_vbuf_discard(v))
       return;
-#define IDX(i) indices[i]
-   FP_EMIT_PRIMS();
+   FP_EMIT_PRIMS(FP_DRAW_TRI, FP_DRAW_LINE, FP_DRAW_POINT);
 #undef IDX
    fp_vbuf_drawn(v);
 }
@@ -314,10 +336,15 @@ static void fp_vbuf_draw_arrays(struct vbuf_render *r, unsigned start, uint nr)
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
    const size_t stride = v->vertex_size;
+#define IDX(i) (start + (i))
+   if (fp_fs_batch_may_compile(v->fp)) {
+      double area2 = 0;
+      FP_EMIT_PRIMS(FP_AREA_TRI, FP_AREA_NONE, FP_AREA_NONE);
+      fp_fs_batch_ahead(v->fp, area2 / 8);
+   }
    if (fp_vbuf_discard(v))
       return;
-#define IDX(i) (start + (i))
-   FP_EMIT_PRIMS();
+   FP_EMIT_PRIMS(FP_DRAW_TRI, FP_DRAW_LINE, FP_DRAW_POINT);
 #undef IDX
    fp_vbuf_drawn(v);
 }

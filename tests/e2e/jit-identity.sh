@@ -5,7 +5,11 @@
 #   FIXPIPE_DEBUG=nojit                       the reference path (tgsi_exec)
 #   FIXPIPE_DEBUG=jitall, empty shader cache  every shader compiled
 #   FIXPIPE_DEBUG=jitall, same cache again    every shader from the disk cache
-# and the PNGs compared.  The model (coverage, interpolation, depth, stencil,
+# and the PNGs compared; and the demo tiered (the default), where a batch that
+# alone takes an interpreted shader past the threshold compiles it first
+# (fp_fs_batch_ahead): each compiled shader then interpreted fewer than the
+# threshold's 16,384 quads on average, which compiling only after the crossing
+# cannot give, and a small frame compiles nothing.  The model (coverage, interpolation, depth, stencil,
 # texture unit, back end) is the same code either way, so the e2e programs must
 # match byte for byte.  The demo's lighting is float shader arithmetic, which
 # LLVM may contract or reorder: it may differ by 1 LSB, nothing more.  Cached
@@ -74,6 +78,29 @@ if render demo "$build/tools/fp-demo" --scene all --frames 3; then
         fail "demo: nojit and jitall differ by more than 1 LSB ($(grep 'max error' "$out/demo.compare"))"
     fi
     same demo jitall cached
+fi
+
+# tiered DEMO-SIZE: the demo's "compiled C ... interpreted I ... hot before a batch H"
+tiered() {
+    FIXPIPE_STATS=1 MESA_SHADER_CACHE_DIR=$out/cache MESA_SHADER_CACHE_DISABLE=false \
+        "$root/fixpipe" run --no-xvfb --driver fixpipe -- "$build/tools/fp-demo" --scene all \
+        --frames 3 --size "$1" -o "$out/demo.tiered-$1.png" > "$out/demo.tiered-$1.log" 2>&1 &&
+    sed -n 's/.*fragment shaders: tiered, compiled \([0-9]*\) .*interpreted \([0-9]*\);.*hot before a batch \([0-9]*\).*/\1 \2 \3/p' \
+        "$out/demo.tiered-$1.log" | awk '{ c += $1; i += $2; h += $3 } END { print c + 0, i + 0, h + 0 }'
+}
+set -- $(tiered 512x512)
+if [ "${1:-0}" -gt 0 ] && [ "$3" -gt 0 ] && [ "$2" -lt $(($1 * 16384)) ] &&
+   "$build/tools/fp-compare" "$out/demo.nojit.png" "$out/demo.tiered-512x512.png" \
+       --threshold 1 --max-diff-pixels 0 > /dev/null 2>&1; then
+    pass "demo tiered: $1 shaders compiled, $3 before a batch, $2 quads interpreted; ~ nojit within 1 LSB"
+else
+    fail "demo tiered: compiled ${1:-?}, interpreted ${2:-?}, hot before a batch ${3:-?} (want some, fewer than 16,384 quads a shader), or unlike nojit"
+fi
+set -- $(tiered 64x64)
+if [ "${1:-x}" = 0 ]; then
+    pass "demo tiered at 64x64: nothing compiled ($2 quads interpreted)"
+else
+    fail "demo tiered at 64x64: ${1:-?} shaders compiled, want none"
 fi
 
 checks_end
