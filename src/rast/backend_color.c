@@ -187,9 +187,7 @@ static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y
                   ub2f4(d, a) * (splat4(k[3][0]) + splat4(k[3][1]) * sa)) << (8 * a);
    for (unsigned c = 0; c < 3; c++)
       out |= f2ub4(clamp01_4(s[c]) * fs + ub2f4(d, off[c]) * fd) << (8 * off[c]);
-   /* pixels outside the mask keep their word */
-   const v4u keep = (v4u)((v4i){ 1, 2, 4, 8 } & (int32_t)mask) == 0;
-   c8_write4(p, x, y, (out & ~keep) | (d & keep));
+   c8_write4(p, x, y, c8_merge(out, d, mask));
 }
 
 static inline void c8_blend_affine(const struct rast_cbuf_plan *p, int x, int y, unsigned mask,

@@ -58,6 +58,13 @@ static inline void c8_write4(const struct rast_cbuf_plan *p, int x, int y, v4u o
    memcpy(p->base + (ptrdiff_t)(y + 1) * p->stride + (ptrdiff_t)x * 4, &px[2], 8);
 }
 
+/* out where the mask has the pixel, d (the buffer's word) elsewhere. */
+static inline v4u c8_merge(v4u out, v4u d, unsigned mask)
+{
+   const v4u keep = (v4u)((v4i){ 1, 2, 4, 8 } & (int32_t)mask) == 0;
+   return (out & ~keep) | (d & keep);
+}
+
 /* Whether the quad at (x, y) can take the lanes: a full quad, or a partial
  * one whose four pixels are in the framebuffer (the masked-off ones are
  * written back as they were; a quad is one thread's). */
@@ -75,10 +82,8 @@ static inline void c8_store_quad4(const struct rast_cbuf_plan *p, int x, int y, 
    memcpy(s, src, sizeof(s));
    v4u out = (f2ub4(s[0]) << (8 * r)) | (f2ub4(s[1]) << (8 * g)) | (f2ub4(s[2]) << (8 * b)) |
              ((x8 ? (v4u){ 255, 255, 255, 255 } : f2ub4(s[3])) << (8 * a));
-   if (mask != 0xf) {
-      const v4u keep = (v4u)((v4i){ 1, 2, 4, 8 } & (int32_t)mask) == 0;
-      out = (out & ~keep) | (c8_load4(p, x, y) & keep);
-   }
+   if (mask != 0xf)
+      out = c8_merge(out, c8_load4(p, x, y), mask);
    c8_write4(p, x, y, out);
 }
 

@@ -208,16 +208,9 @@ static bool lanes_planes(struct rast_front *fr, unsigned i0, unsigned i1, unsign
                          int64_t det)
 {
    struct fr_tex *t = &fr->tex;
-   const unsigned n = 1 + fr->npersp, p0 = 1 + fr->nlin;
-   const unsigned vi[3] = { i0, i1, i2 };
-   float val[3][1 + RAST_PLANES_MAX];
-   for (unsigned i = 0; i < 3; i++) {
-      const float *v = fr->vflt[vi[i]];
-      val[i][0] = v[0];
-      memcpy(&val[i][1], v + p0, fr->npersp * sizeof(float));
-   }
-   if (!rast_lanes()->planes_dfx19((const float (*)[1 + RAST_PLANES_MAX])val, n, det, t->k,
-                                   t->lv, &t->lrdet))
+   const unsigned n = 1 + fr->npersp;
+   const float *const vtx[3] = { fr->vflt[i0], fr->vflt[i1], fr->vflt[i2] };
+   if (!rast_lanes()->planes_dfx19(vtx, 1 + fr->nlin, n, det, t->k, t->lv, &t->lrdet))
       return false;
    for (unsigned j = 0; j < n; j++) {
       t->pl[j].v0.d = dfxl_fields(t->lv[j][0]);

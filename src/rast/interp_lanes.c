@@ -292,16 +292,17 @@ void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4])
 
 /* A primitive's planes, as rast_interp_perspective_setup's plane_set makes
  * each: v0 = from_float(V0), Δ1 = from_float(V1) − v0, Δ2 = from_float(V2)
- * − v0, one plane a lane; and recip(det·2^−k) in lane 0 of its own
+ * − v0, one plane a lane (plane 0, 1/w, from vertex value 0, plane j from
+ * value p0 + j − 1); and recip(det·2^−k) in lane 0 of its own
  * vector.  These are scalar operations through the number system's table
  * on the fields, a few hundred cycles per primitive, which the meshes'
  * small triangles pay thousands of times a frame.  From binary32 is the
  * integer input's rounding (dfxl_from_int: a double holds the value, and
  * its 24 bits plus half a step of its digit fit 53); + 0.0 makes −0 the
  * register's zero.  Optimistic: false, with nothing written, where a lane
- * had a range event or a value is not finite; the caller then takes the
- * scalar path, which counts them. */
-bool LANES_FN(planes_dfx19_lanes)(const float (*val)[1 + RAST_PLANES_MAX], unsigned n,
+ * had a range event or a value is not finite, or det is 0 (a line snapped
+ * to a point); the caller then takes the scalar path, which counts them. */
+bool LANES_FN(planes_dfx19_lanes)(const float *const vtx[3], unsigned p0, unsigned n,
                                   int64_t det, unsigned k, double (*lv)[3], double *lrdet)
 {
    struct dfxl_stats st = DFXL_STATS(true);
@@ -312,8 +313,8 @@ bool LANES_FN(planes_dfx19_lanes)(const float (*val)[1 + RAST_PLANES_MAX], unsig
       struct dfxl x[3];
       for (unsigned i = 0; i < 3; i++) {
          double v[DFXL_N];
-         for (unsigned l = 0; l < DFXL_N; l++)
-            v[l] = j0 + l < n ? (double)val[i][j0 + l] : 0.0;
+         for (unsigned l = 0, j = j0; l < DFXL_N; l++, j++)
+            v[l] = j >= n ? 0.0 : (double)vtx[i][j ? p0 + j - 1 : 0];
          memcpy(&x[i].v, v, sizeof(v));
          bad |= ~(dfxl_abs(x[i].v) < 0x1p32);       /* a NaN compares false */
          x[i] = dfxl_from_int(x[i].v, &st);

@@ -43,11 +43,12 @@ struct rast_lanes {
     * divided together, four to a call where the set has persp4. */
    void (*persp_group_dfx19)(struct rast_front *fr, float *const in[],
                              const int64_t (*num)[4], unsigned n);
-   /* A primitive's n planes (plane j from the vertices' val[0..2][j]) as
-    * the registers' values, lv[j]: v0, Δ1, Δ2; and recip(det·2^-k).
-    * False, with nothing written, where an operation had a range event or
-    * a value is not finite (the scalar set-up then counts them). */
-   bool (*planes_dfx19)(const float (*val)[1 + RAST_PLANES_MAX], unsigned n, int64_t det,
+   /* A primitive's n planes (plane 0 from the three vertices' value 0,
+    * plane j from their value p0 + j - 1) as the registers' values, lv[j]:
+    * v0, Δ1, Δ2; and recip(det·2^-k).  False, with nothing written, where
+    * an operation had a range event or a value is not finite (the scalar
+    * set-up then counts them). */
+   bool (*planes_dfx19)(const float *const vtx[3], unsigned p0, unsigned n, int64_t det,
                         unsigned k, double (*lv)[3], double *lrdet);
    /* The texture unit's quad in dfx24 for a 2-D unit (2-D, 2-D array,
     * rectangle), specialised for the unit's state; `nolod`: the one that

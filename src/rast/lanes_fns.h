@@ -9,7 +9,7 @@ void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
 void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4]);
 void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
                                        const int64_t (*num)[4], unsigned n);
-bool LANES_FN(planes_dfx19_lanes)(const float (*val)[1 + RAST_PLANES_MAX], unsigned n,
+bool LANES_FN(planes_dfx19_lanes)(const float *const vtx[3], unsigned p0, unsigned n,
                                   int64_t det, unsigned k, double (*lv)[3], double *lrdet);
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
                                         tex_quad2_fn *pair, tex_quad4_fn *four);
