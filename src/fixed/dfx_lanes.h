@@ -252,6 +252,21 @@ DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
 #undef DFXL_GRID_MASK
    const dfxl_i e = dfxl_shr((dfxl_i)x, dfxl_splat(52));
    return (dfxl_d)((dfxl_i)x & (dfxl_i)_mm512_permutexvar_epi64((__m512i)e, masks));
+#elif defined(__AVX2__) && DFXL_N == 4
+   /* The mask clears 34 to 37 bits: the low half of each lane whole, and
+    * 2 to 5 bits of the high half.  The high half shifted right by 20
+    * holds e in its low bits, and a permutation within each 128-bit lane
+    * reads an element of the table by an index's low two bits: the high
+    * half's mask by e mod 4, four instructions where the count is six. */
+#define DFXL_GRID_HMASK(i) ((int)(0xffffffffu << (5 - (((i) + 1) & 3))))
+   const __m256 hmasks = (__m256)_mm256_setr_epi32(
+      DFXL_GRID_HMASK(0), DFXL_GRID_HMASK(1), DFXL_GRID_HMASK(2), DFXL_GRID_HMASK(3),
+      DFXL_GRID_HMASK(0), DFXL_GRID_HMASK(1), DFXL_GRID_HMASK(2), DFXL_GRID_HMASK(3));
+#undef DFXL_GRID_HMASK
+   const __m256i idx = _mm256_srli_epi32((__m256i)x, 20);
+   const __m256i m = (__m256i)_mm256_permutevar_ps(hmasks, idx);
+   return (dfxl_d)_mm256_blend_epi32(_mm256_and_si256((__m256i)x, m), _mm256_setzero_si256(),
+                                     0x55);
 #else
    return dfxl_clear_low(x, 37 - ((dfxl_shr((dfxl_i)x, dfxl_splat(52)) + 1) & 3));
 #endif
