@@ -241,15 +241,14 @@ DFXL_INLINE void dfxl_merge_where(struct dfxl_stats *st, const struct dfxl_stats
  * the low three bits of each index, and the sign above e leaves those
  * alone): one shift and one permutation where the count is four
  * operations and a variable shift. */
+#define DFXL_GRID_MASK(e) ((int64_t)(~UINT64_C(0) << (37 - (((e) + 1) & 3))))
 DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
 {
 #if defined(DFXL_AVX512)
-#define DFXL_GRID_MASK(i) ((int64_t)(~UINT64_C(0) << (37 - (((i) + 1) & 3))))
    const __m512i masks = _mm512_set_epi64(DFXL_GRID_MASK(7), DFXL_GRID_MASK(6),
                                           DFXL_GRID_MASK(5), DFXL_GRID_MASK(4),
                                           DFXL_GRID_MASK(3), DFXL_GRID_MASK(2),
                                           DFXL_GRID_MASK(1), DFXL_GRID_MASK(0));
-#undef DFXL_GRID_MASK
    const dfxl_i e = dfxl_shr((dfxl_i)x, dfxl_splat(52));
    return (dfxl_d)((dfxl_i)x & (dfxl_i)_mm512_permutexvar_epi64((__m512i)e, masks));
 #elif defined(__AVX2__) && DFXL_N == 4
@@ -258,7 +257,7 @@ DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
     * holds e in its low bits, and a permutation within each 128-bit lane
     * reads an element of the table by an index's low two bits: the high
     * half's mask by e mod 4, four instructions where the count is six. */
-#define DFXL_GRID_HMASK(i) ((int)(0xffffffffu << (5 - (((i) + 1) & 3))))
+#define DFXL_GRID_HMASK(e) ((int)(DFXL_GRID_MASK(e) >> 32))
    const __m256 hmasks = (__m256)_mm256_setr_epi32(
       DFXL_GRID_HMASK(0), DFXL_GRID_HMASK(1), DFXL_GRID_HMASK(2), DFXL_GRID_HMASK(3),
       DFXL_GRID_HMASK(0), DFXL_GRID_HMASK(1), DFXL_GRID_HMASK(2), DFXL_GRID_HMASK(3));
@@ -271,6 +270,7 @@ DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
    return dfxl_clear_low(x, 37 - ((dfxl_shr((dfxl_i)x, dfxl_splat(52)) + 1) & 3));
 #endif
 }
+#undef DFXL_GRID_MASK
 
 /* dfx_finish_i after the data path: the exact result x truncated toward
  * zero to its digit's grid; above L = 15 the largest magnitude, below
