@@ -133,10 +133,11 @@ static void quad_nop(struct rast_context *rc, struct rast_quad *q)
 }
 
 /* No depth/stencil, no visible colour, shader without effect: only the
- * occlusion count remains. */
+ * occlusion count remains (not shaded: counted). */
 static void quad_count(struct rast_context *rc, struct rast_quad *q)
 {
    rc->stats.samples_passed += rast_popcount4(q->mask);
+   rc->stats.skip_shade_quads += backend(rc)->skips_counted;
 }
 
 /* No depth/stencil. */
@@ -204,25 +205,38 @@ static inline unsigned early_zs(struct rast_context *rc, struct rast_backend *be
    return mask;
 }
 
+/* The early tests' skips (counted): a quad they reject whole is not
+ * shaded, nor one the shader would draw nothing for. */
 static void quad_early(struct rast_context *rc, struct rast_quad *q)
 {
    struct rast_backend *be = backend(rc);
    unsigned mask = early_zs(rc, be, q);
-   if (!mask || !be->shade_needed)
+   if (!mask || !be->shade_needed) {
+      rc->stats.skip_early_quads += be->skips_counted & !mask;
+      rc->stats.skip_shade_quads += be->skips_counted & (mask != 0);
       return;
+   }
    mask = shade(rc, q, mask, &be->out[0]);
    if (mask)
       color_stage(be, &be->out[0], q->x, q->y, mask);
 }
 
+/* The same for a block of quads: one the tests reject whole is left out of
+ * the shader's call, and a block they reject whole makes no call. */
 static void group_early(struct rast_context *rc, struct rast_quad *q, unsigned n)
 {
    struct rast_backend *be = backend(rc);
-   unsigned masks = 0;
-   for (unsigned i = 0; i < n; i++)
-      masks |= early_zs(rc, be, &q[i]) << 4 * i;
-   if (!masks || !be->shade_needed)
+   unsigned masks = 0, live = 0;
+   for (unsigned i = 0; i < n; i++) {
+      const unsigned m = early_zs(rc, be, &q[i]);
+      masks |= m << 4 * i;
+      live += m != 0;
+   }
+   rc->stats.skip_early_quads += be->skips_counted * (n - live);
+   if (!masks || !be->shade_needed) {
+      rc->stats.skip_shade_quads += be->skips_counted * live;
       return;
+   }
    color_stage_group(be, q, n, shade_group(rc, be, q, n, masks));
 }
 
@@ -290,12 +304,19 @@ static void backend_choose(struct rast_context *rc)
    const bool a2c = rc->blend.alpha_to_coverage && rc->fb.samples > 1;
    be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard || a2c;
 
+   /* noskip: every covered quad is shaded, the tests after it (the same
+    * bits: an early test is only taken where the shader cannot change
+    * what it decides).  Not on a multisampled target, where the order
+    * decides which sample's position shades an edge pixel (msaa.c: the
+    * first sample that reaches the shader). */
+   const bool noskip = (rc->opts & RAST_OPT_NOSKIP) && rc->fb.samples <= 1;
+   be->skips_counted = !(rc->opts & RAST_OPT_NOSKIP) && rc->fb.samples <= 1;
    rast_quads_func group = NULL;
    if (be->zs) {
-      const bool late = rc->fs.writes_depth || rc->fs.may_discard || a2c;
+      const bool late = rc->fs.writes_depth || rc->fs.may_discard || a2c || noskip;
       rc->quad = late ? quad_late : quad_early;
       group = late ? group_late : group_early;
-   } else if (!be->shade_needed) {
+   } else if (!be->shade_needed && !noskip) {
       rc->quad = quad_count;
    } else if (be->ncbufs == 1 && be->cbuf[0].fast8 == RAST_CL_RGBA8) {
       rc->quad = quad_fast_RGBA8;

@@ -124,6 +124,10 @@ struct rast_backend {
 
    /* Colour. */
    bool shade_needed;             /* false: no visible effect of the shader */
+   /* 1 where the early tests' quads left unshaded are skips (counted):
+    * single-sampled targets; on a multisampled one the order is the
+    * model's (msaa.c), not a skip */
+   unsigned skips_counted;
    unsigned ncbufs;
    struct rast_cbuf_plan cbuf[RAST_MAX_CBUFS];
    unsigned sample;               /* the sample plane drawn (rast_backend_sample) */

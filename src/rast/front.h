@@ -193,8 +193,13 @@ struct rast_front {
    struct fr_comp color[FR_MAX_COMP], lin[FR_MAX_COMP], persp[FR_MAX_COMP],
                   cnst[FR_MAX_COMP];
    unsigned nfix, nflt, nwalk; /* 1 + ncolor; 1 + nlin + npersp; 1 + nlin */
-   unsigned nfix_walk;         /* the fix registers the edges walk: nfix, or 0 in a
+   unsigned nfix_walk;         /* the fix registers the edges walk: nfix_scan, or 0 in a
                                 * per-pixel mode (FIXPIPE_INTERP), set per primitive */
+   /* The scan-line walk's fix registers: nfix, or 0 where nothing reads Z
+    * and there is no colour register (no depth test, no gl_FragCoord, no
+    * RTL vectors): the Z walk skipped, counted in skip_z (docs/datapath.md). */
+   unsigned nfix_scan;
+   bool z_walk;                /* nfix_scan includes Z */
    int64_t fix_min[FR_MAX_FIX], fix_max[FR_MAX_FIX];
    struct fx_sat *fix_sat[FR_MAX_FIX];
    struct fx_format fix_fmt[FR_MAX_FIX];

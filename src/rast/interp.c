@@ -681,7 +681,7 @@ static inline void measure_quad(struct rast_context *rc, const struct rast_front
 
 static inline __attribute__((always_inline)) void
 pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
-          const bool has_color, const bool has_lin, const bool has_persp,
+          const bool has_z, const bool has_color, const bool has_lin, const bool has_persp,
           const unsigned mode, const bool measure)
 {
    const struct fr_row *r0 = &fr->row[0], *r1 = &fr->row[1];
@@ -700,7 +700,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    }
    int64_t xq = xs & ~(int64_t)1;
 
-   const unsigned nfix = has_color ? fr->nfix : 1;
+   /* without Z (fr->z_walk) there is no colour register either */
+   const unsigned nfix = has_color ? fr->nfix : has_z ? 1 : 0;
    const unsigned nflt = has_lin ? fr->nwalk : 1;
    const unsigned flt_lin_end = 1 + (has_lin ? fr->nlin : 0);
    const unsigned frac = rc->profile->xy.frac_bits;
@@ -753,7 +754,8 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    struct rast_quad *q = &fr->quad[fr->npending];
    /* gl_FragCoord's z and w only for a shader that reads them, and for the
     * RTL vectors, which record w */
-   const bool fragcoord = rc->fs.reads_fragcoord || (rc->opts & RAST_OPT_NOSKIP) || rc->vec;
+   const bool fragcoord =
+      has_z && (rc->fs.reads_fragcoord || (rc->opts & RAST_OPT_NOSKIP) || rc->vec);
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
    /* divided as a group when it goes to the back end (fr_tex.num) */
@@ -771,7 +773,9 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       if (mode != RAST_INTERP_SCANLINE)
          modes_quad(rc, fr, mode, x, y, nfix, mv);
       /* Z: the seed's Z_left + ∂Z/∂x walk, or the mode's. */
-      if (mode == RAST_INTERP_SCANLINE)
+      if (!has_z)
+         ;
+      else if (mode == RAST_INTERP_SCANLINE)
          fix_quad(fr, 0, fix, xa, direct, x, q->z);
       else
          for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
@@ -844,6 +848,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       q->mask = mask;
       rc->stats.quads++;
       rc->stats.skip_fragcoord += !fragcoord;
+      rc->stats.skip_z += !has_z;
       rc->stats.pixels_covered += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
       if (!rc->quads) {
          rc->quad(rc, q);
@@ -863,18 +868,23 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       tex_end(rc, fr);
 }
 
-#define PAIR_VARIANT(name, c, l, p)                                        \
+#define PAIR_VARIANT(name, z, c, l, p)                                     \
    static void name(struct rast_context *rc, struct rast_front *fr, int64_t y) \
-   { pair_impl(rc, fr, y, c, l, p, RAST_INTERP_SCANLINE, false); }
+   { pair_impl(rc, fr, y, z, c, l, p, RAST_INTERP_SCANLINE, false); }
 
-PAIR_VARIANT(pair_z,      false, false, false)
-PAIR_VARIANT(pair_c,      true,  false, false)
-PAIR_VARIANT(pair_l,      false, true,  false)
-PAIR_VARIANT(pair_cl,     true,  true,  false)
-PAIR_VARIANT(pair_p,      false, false, true)
-PAIR_VARIANT(pair_cp,     true,  false, true)
-PAIR_VARIANT(pair_lp,     false, true,  true)
-PAIR_VARIANT(pair_clp,    true,  true,  true)
+PAIR_VARIANT(pair_z,      true,  false, false, false)
+PAIR_VARIANT(pair_c,      true,  true,  false, false)
+PAIR_VARIANT(pair_l,      true,  false, true,  false)
+PAIR_VARIANT(pair_cl,     true,  true,  true,  false)
+PAIR_VARIANT(pair_p,      true,  false, false, true)
+PAIR_VARIANT(pair_cp,     true,  true,  false, true)
+PAIR_VARIANT(pair_lp,     true,  false, true,  true)
+PAIR_VARIANT(pair_clp,    true,  true,  true,  true)
+/* the Z walk skipped (fr->z_walk): no colour register then */
+PAIR_VARIANT(pair_0,      false, false, false, false)
+PAIR_VARIANT(pair_0l,     false, false, true,  false)
+PAIR_VARIANT(pair_0p,     false, false, false, true)
+PAIR_VARIANT(pair_0lp,    false, false, true,  true)
 
 /* FIXPIPE_INTERP other than the walk, or measured: one function for every
  * input, the mode taken per primitive (a point keeps the walk). */
@@ -882,7 +892,7 @@ static void pair_modes(struct rast_context *rc, struct rast_front *fr, int64_t y
 {
    const unsigned mode = fr->md.on ? rc->interp & 3u : RAST_INTERP_SCANLINE;
    const bool measure = (rc->interp & RAST_INTERP_MEASURE) && fr->md.on;
-   pair_impl(rc, fr, y, fr->ncolor != 0, fr->nlin != 0, fr->npersp != 0, mode, measure);
+   pair_impl(rc, fr, y, true, fr->ncolor != 0, fr->nlin != 0, fr->npersp != 0, mode, measure);
 }
 
 fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast_front *fr)
@@ -892,6 +902,9 @@ fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast
    static const fr_pair_func table[8] = {
       pair_z, pair_c, pair_l, pair_cl, pair_p, pair_cp, pair_lp, pair_clp
    };
+   static const fr_pair_func no_z[4] = { pair_0, pair_0l, pair_0p, pair_0lp };
+   if (!fr->z_walk)
+      return no_z[(fr->nlin ? 1u : 0u) | (fr->npersp ? 2u : 0u)];
    unsigned i = (fr->ncolor ? 1u : 0u) | (fr->nlin ? 2u : 0u) | (fr->npersp ? 4u : 0u);
    return table[i];
 }

@@ -49,7 +49,7 @@ static void modes_planes(struct rast_context *rc, struct rast_front *fr, const u
 void rast_interp_modes_off(struct rast_front *fr)
 {
    fr->md.on = false;
-   fr->nfix_walk = fr->nfix;
+   fr->nfix_walk = fr->nfix_scan;
 }
 
 void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, unsigned i0,
@@ -60,7 +60,7 @@ void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, uns
    const unsigned mode = rc->interp & 3u;
    const unsigned idx[3] = { i0, i1, i2 };
    m->on = true;
-   fr->nfix_walk = mode == RAST_INTERP_SCANLINE ? fr->nfix : 0;
+   fr->nfix_walk = mode == RAST_INTERP_SCANLINE ? fr->nfix_scan : 0;
    int64_t xmin = INT64_MAX, xmax = INT64_MIN, ymin = INT64_MAX, ymax = INT64_MIN;
    for (unsigned i = 0; i < fr->nverts; i++) {
       xmin = fr->X[i] < xmin ? fr->X[i] : xmin;

@@ -227,7 +227,7 @@ void rast_line_pass(struct rast_context *rc, const float (*v1)[4], const float (
       cx[k] = fx_to_double(prof->xy, fr->X[k]) - ax;
       cy[k] = fx_to_double(prof->xy, fr->Y[k]) - ay;
    }
-   for (unsigned k = 0; k < fr->nfix; k++) {
+   for (unsigned k = 0; k < fr->nfix_scan; k++) {
       double a1 = (double)fr->vfix[0][k];
       double g = (a1 - (double)fr->vfix[1][k]) / major;
       fr->fix_dx[k] = fr_fix_sat(fr, k, (fx_i128)llround(xmajor ? g : 0));

@@ -378,6 +378,15 @@ struct rast_stats {
    /* quads given to a shader that does not read gl_FragCoord, without its
     * z and w (the Z register as a float, the 1/w walk): a share of quads */
    uint64_t skip_fragcoord;
+   /* quads without the Z walk, where nothing reads Z (no depth test, no
+    * gl_FragCoord): neither the edges nor the spans walk it; its
+    * saturations are then not counted (a share of quads) */
+   uint64_t skip_z;
+   /* the back end (backend.c): quads whose every covered pixel the early
+    * depth/stencil test rejected, not shaded; quads that passed but were
+    * not shaded because the shader has no visible effect (depth-only and
+    * stencil-only passes, no colour written); shares of quads */
+   uint64_t skip_early_quads, skip_shade_quads;
    /* PERSPECTIVE component-primitives whose vertex values were rebased by
     * a nonzero integer (rast_varying.rebase_mask) */
    uint64_t tex_rebased;

@@ -17,17 +17,19 @@ flags() { [ "$1" = lanes ] && echo jitall || echo jitall,scalar,noskip; }
 
 # skips NAME: the default run's skip counters, summed over its contexts
 skips() {
-    sed -n 's/.*datapath: \([a-z0-9]*\); skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\).*/\1 \2 \3 \4 \5/p' \
+    sed -n 's/.*datapath: \([a-z0-9]*\); skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\), quads without gl_FragCoord [0-9]*, quads without a Z walk \([0-9]*\), quads rejected whole before shading \([0-9]*\), quads not shaded (no visible effect) \([0-9]*\).*/\1 \2 \3 \4 \5 \6 \7 \8/p' \
         "$out/$1.lanes.log" |
-        awk '{ isa = $1; w += $2; c += $3; l += $4; a += $5 } END { print isa, w + 0, c + 0, l + 0, a + 0 }'
+        awk '{ isa = $1; w += $2; c += $3; l += $4; a += $5; z += $6; e += $7; s += $8 }
+             END { print isa, w + 0, c + 0, l + 0, a + 0, z + 0, e + 0, s + 0 }'
 }
 
-total_w=0 total_c=0 total_l=0 total_a=0
+total_w=0 total_c=0 total_l=0 total_a=0 total_z=0 total_e=0 total_s=0
 check_lanes() { # NAME
     set -- $(skips "$1")
     case ${1:-} in
     avx512 | avx2 | sse2) total_w=$((total_w + $2)); total_c=$((total_c + $3)); total_l=$((total_l + $4))
-                 total_a=$((total_a + $5)) ;;
+                 total_a=$((total_a + $5)); total_z=$((total_z + $6)); total_e=$((total_e + $7))
+                 total_s=$((total_s + $8)) ;;
     *) fail "$name: the default run did not report the lanes (datapath: ${1:-none})"; return 1 ;;
     esac
     if grep -q "datapath: scalar" "$out/$name.scalar.log"; then :; else
@@ -43,8 +45,11 @@ work_ok() {
         { for (i = 1; i < NF; i += 2) v[$i] = $(i + 1)
           if (v["divided"] > v["quads"] || v["skip_w"] > v["divided"] ||
               v["skip_comp"] > v["comp_quads"] || v["skip_lod"] > v["lod_quads"] ||
-              v["skip_axes"] > 2 * v["tex_quads"] || v["skip_fragcoord"] > v["quads"]) bad++
-          if (none == "none" && v["skip_w"] + v["skip_comp"] + v["skip_lod"] + v["skip_axes"] + v["skip_fragcoord"] > 0) bad++
+              v["skip_axes"] > 2 * v["tex_quads"] || v["skip_fragcoord"] > v["quads"] ||
+              v["skip_z"] > v["quads"] || v["skip_early"] + v["skip_shade"] > v["quads"]) bad++
+          skipped = v["skip_w"] + v["skip_comp"] + v["skip_lod"] + v["skip_axes"] + v["skip_fragcoord"]
+          skipped += v["skip_z"] + v["skip_early"] + v["skip_shade"]
+          if (none == "none" && skipped > 0) bad++
           n++ }
         END { exit !(n > 0 && !bad) }' "$1"
 }
@@ -62,7 +67,7 @@ render() { # NAME PROGRAM ARGS...
     done
     check_lanes "$name" || return 1
     for m in $MODES; do   # the totals at the context's end, as work lines
-        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\), quads without gl_FragCoord \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3 skip_axes \4 skip_fragcoord \5/p' \
+        sed -n 's/.*datapath: [a-z0-9]*; skipped: quads with a constant 1\/w \([0-9]*\), constant component-quads \([0-9]*\), texture quads without a LOD \([0-9]*\), texture quad-axes addressed per column or row \([0-9]*\), quads without gl_FragCoord \([0-9]*\), quads without a Z walk \([0-9]*\), quads rejected whole before shading \([0-9]*\), quads not shaded (no visible effect) \([0-9]*\).*/skip_w \1 skip_comp \2 skip_lod \3 skip_axes \4 skip_fragcoord \5 skip_z \6 skip_early \7 skip_shade \8/p' \
             "$out/$name.$m.log" > "$out/$name.$m.skipped"
         sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\), texture quads \([0-9]*\), quads \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 tex_quads \4 quads \5/p' \
             "$out/$name.$m.log" > "$out/$name.$m.shares"
@@ -114,8 +119,9 @@ for m in $MODES; do
     fi
 done
 
-taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD, $total_a texture quad-axes addressed per column or row"
-if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ] && [ "$total_a" -gt 0 ]; then
+taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD, $total_a texture quad-axes addressed per column or row, $total_z quads without a Z walk, $total_e quads rejected whole before shading, $total_s quads not shaded"
+if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ] && [ "$total_a" -gt 0 ] &&
+   [ "$total_z" -gt 0 ] && [ "$total_e" -gt 0 ] && [ "$total_s" -gt 0 ]; then
     pass "skips taken: $taken"
 else
     fail "skips taken: $taken"

@@ -276,6 +276,16 @@ static void fc_hook(struct tctx *tc, const struct rast_quad *q)
    fc_n++;
 }
 
+/* The depth test on, with no depth buffer (it then passes): Z is walked. */
+static void set_depth_test(bool on)
+{
+   struct rast_depth_stencil_state dsa;
+   memset(&dsa, 0, sizeof(dsa));
+   dsa.depth_enabled = on;
+   dsa.depth_func = RAST_FUNC_ALWAYS;
+   rast_set_depth_stencil(t.rc, &dsa);
+}
+
 static void fragcoord_pass(bool reads, unsigned opts, uint64_t *quads, uint64_t *skipped)
 {
    struct rast_shader fs;
@@ -299,6 +309,7 @@ static void fragcoord_skip(void)
 {
    t_init(&t, "seed", 128, 128);
    t.hook = fc_hook;
+   set_depth_test(true);   /* Z walked in every pass: only z and w skipped */
    static struct fc_quad want[FC_MAX];
    uint64_t q, sk;
    fragcoord_pass(true, 0, &q, &sk);
@@ -315,6 +326,51 @@ static void fragcoord_skip(void)
    fragcoord_pass(false, RAST_OPT_NOSKIP, &q, &sk);
    CHECK(fc_n == n && sk == 0, "noskip: %llu skipped", (unsigned long long)sk);
    CHECK(!memcmp(fc, want, n * sizeof(fc[0])), "noskip: gl_FragCoord's z or w differ");
+   t_fini(&t);
+}
+
+/* Without a depth test and gl_FragCoord nothing reads Z: neither the edges
+ * nor the spans walk it (a skip, counted per quad).  The same quads, masks
+ * and inputs; with the depth test, or under RAST_OPT_NOSKIP, the Z walk is
+ * back with the same registers; Z's saturation counts only where walked. */
+static void z_walk_skip(void)
+{
+   t_init(&t, "seed", 128, 128);
+   t.hook = fc_hook;
+   static struct fc_quad want[FC_MAX];
+   uint64_t q, sk;
+   set_depth_test(true);
+   const uint64_t z0 = rast_get_stats(t.rc)->skip_z;
+   fragcoord_pass(false, 0, &q, &sk);
+   const unsigned n = fc_n;
+   CHECK(n > 0 && n <= FC_MAX && rast_get_stats(t.rc)->skip_z == z0, "depth test: Z skipped");
+   memcpy(want, fc, sizeof(want));
+   set_depth_test(false);
+   const uint64_t z1 = rast_get_stats(t.rc)->skip_z;
+   fragcoord_pass(false, 0, &q, &sk);
+   CHECK(fc_n == n && rast_get_stats(t.rc)->skip_z - z1 == q, "no depth test: %llu of %llu "
+         "quads without Z", (unsigned long long)(rast_get_stats(t.rc)->skip_z - z1),
+         (unsigned long long)q);
+   for (unsigned i = 0; i < n && i < fc_n; i++)
+      CHECK(fc[i].x == want[i].x && fc[i].y == want[i].y && fc[i].mask == want[i].mask,
+            "quad %u differs", i);
+   const uint64_t z2 = rast_get_stats(t.rc)->skip_z;
+   fragcoord_pass(false, RAST_OPT_NOSKIP, &q, &sk);
+   CHECK(fc_n == n && rast_get_stats(t.rc)->skip_z == z2, "noskip: Z skipped");
+   for (unsigned i = 0; i < n && i < fc_n; i++)
+      CHECK(!memcmp(fc[i].z, want[i].z, sizeof(fc[i].z)), "noskip: quad %u's Z differs", i);
+   /* the interpolators' additions (the cycle model's count) without Z's */
+   rast_set_options(t.rc, 0);
+   float v[3][1][4] = { { { 10.3f, 7.1f, 0.2f, 1.0f } }, { { 90.6f, 30.2f, 0.7f, 1.0f } },
+                        { { 40.2f, 100.9f, 0.9f, 1.0f } } };
+   const uint64_t a0 = rast_get_stats(t.rc)->interp_add;
+   t_tri(t.rc, v[0], v[1], v[2]);
+   const uint64_t a1 = rast_get_stats(t.rc)->interp_add;
+   set_depth_test(true);
+   t_tri(t.rc, v[0], v[1], v[2]);
+   const uint64_t a2 = rast_get_stats(t.rc)->interp_add;
+   CHECK(a2 - a1 > a1 - a0, "Z walk's additions: %llu without it, %llu with",
+         (unsigned long long)(a1 - a0), (unsigned long long)(a2 - a1));
    t_fini(&t);
 }
 
@@ -435,6 +491,7 @@ int main(void)
    for (unsigned i = 0; i < sizeof(systems) / sizeof(systems[0]); i++)
       run_system(systems[i]);
    fragcoord_skip();
+   z_walk_skip();
    lines_persp("dfx24");
    lines_persp("float");
    lines_persp("fx8.24");
