@@ -403,6 +403,49 @@ DFXL_INLINE struct dfxl dfxl_add_mostly_same_sign(struct dfxl a, struct dfxl b,
    return dfxl_add(a, b, st);
 }
 
+/* A plane's sum v0 + a·Δ1 + b·Δ2 with one bound an operation where the
+ * optimistic way keeps two.  A sum of operands of the same sign is at least
+ * as large as either (in the double too: rounding is monotonic), so:
+ * - a term's upper bound is its sum's: a product at or above 2^32 (whose
+ *   truncation is too: 2^32 lies on every grid up there) makes the sum
+ *   reach 2^32, and dfxl_term leaves the upper bound to the sum;
+ * - a nonzero sum of operands that are 0 or at least 2^-32 is at least
+ *   2^-32, so the sum keeps no lower bound; an operand below it has
+ *   marked its lane already (a product's own lower bound; v0 is a
+ *   primitive's register, checked when it was set up).
+ * Where the signs differ (the aligner's way, which can cancel) the sum
+ * takes its operands' upper bounds itself, then rounds as dfxl_add.  The
+ * careful way is every operation's own, unchanged. */
+DFXL_INLINE struct dfxl dfxl_round_bound(dfxl_d x, struct dfxl_stats *st, bool hi, bool lo)
+{
+   if (!st->optimistic)
+      return dfxl_round(x, st);
+   const dfxl_d ax = dfxl_abs(x);
+   if (hi)
+      st->hi = dfxl_maxd(ax, st->hi);
+   if (lo)
+      st->lo = dfxl_mind((dfxl_d)((dfxl_i)ax - 1), st->lo);
+   struct dfxl o = { dfxl_to_grid(x) };
+   return o;
+}
+
+/* dfxl_mul, as a term of dfxl_add_terms: its upper bound is the sum's. */
+DFXL_INLINE struct dfxl dfxl_term(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
+{
+   return dfxl_round_bound(a.v * b.v + 0.0, st, false, true);
+}
+
+/* dfxl_add_mostly_same_sign of a register or sum and a dfxl_term. */
+DFXL_INLINE struct dfxl dfxl_add_terms(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
+{
+   const dfxl_i differ = ((dfxl_i)a.v ^ (dfxl_i)b.v) < 0;
+   if (__builtin_expect(!dfxl_any(differ), 1))
+      return dfxl_round_bound(a.v + b.v, st, true, false);
+   if (st->optimistic)
+      st->hi = dfxl_maxd(dfxl_maxd(dfxl_abs(a.v), dfxl_abs(b.v)), st->hi);
+   return dfxl_add(a, b, st);
+}
+
 /* Whether every lane of a mask is set. */
 DFXL_INLINE bool dfxl_all(dfxl_i m)
 {

@@ -83,18 +83,19 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
       b[k] = dfxl_mul(dfxl_from_fixed(bn[k], (int)t->k, &st), rdet, &st);
 
    struct dfxl v[2][1 + FR_MAX_COMP], u[2][1 + FR_MAX_COMP];
+   /* v0 + a·Δ1 + b·Δ2, one bound an operation (dfxl_add_terms) */
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nv; k++)
-         v[k][i] = dfxl_mul(a[k], splat(t->lv[t->lidx[i]][1]), &st);
+         v[k][i] = dfxl_term(a[k], splat(t->lv[t->lidx[i]][1]), &st);
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nv; k++)
-         u[k][i] = dfxl_mul(b[k], splat(t->lv[t->lidx[i]][2]), &st);
+         u[k][i] = dfxl_term(b[k], splat(t->lv[t->lidx[i]][2]), &st);
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nv; k++)
-         v[k][i] = dfxl_add_mostly_same_sign(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
+         v[k][i] = dfxl_add_terms(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nv; k++)
-         v[k][i] = dfxl_add_mostly_same_sign(v[k][i], u[k][i], &st);
+         v[k][i] = dfxl_add_terms(v[k][i], u[k][i], &st);
 
    struct dfxl w[2];
    unsigned first = 0;

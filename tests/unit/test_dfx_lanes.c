@@ -182,6 +182,43 @@ static void test_binary(void)
    }
 }
 
+static struct dfx rnd_between(int lo, int hi, unsigned sign);
+
+/* A plane's sum v0 + a·d1 + b·d2 the scalar way, its events in *ev. */
+static struct dfx plane_i(struct dfx v0, struct dfx a, struct dfx d1, struct dfx b, struct dfx d2,
+                          struct dfx_stats *ev)
+{
+   const struct dfx t1 = dfx_mul_i(F, a, d1, ev), t2 = dfx_mul_i(F, b, d2, ev);
+   return dfx_add_i(F, dfx_add_i(F, v0, t1, ev), t2, ev);
+}
+
+/* The same on lanes with one bound an operation (dfxl_term,
+ * dfxl_add_terms): with the signs of every lane's terms the same (the
+ * adders without their aligner), and at random (the aligner's way). */
+static void test_plane_sums(void)
+{
+   struct dfx v0[DFXL_N], a[DFXL_N], d1[DFXL_N], b[DFXL_N], d2[DFXL_N], want[DFXL_N];
+   const bool same_signs = rnd() & 1;
+   for (int i = 0; i < DFXL_N; i++) {
+      v0[i] = rnd_dfx();
+      a[i] = rnd_dfx();
+      d1[i] = rnd_near(v0[i]);
+      b[i] = rnd_dfx();
+      d2[i] = rnd_near(d1[i]);
+      if (same_signs) {
+         v0[i].s = a[i].s = b[i].s = d1[i].s = d2[i].s = 0;
+         if (!v0[i].m)
+            v0[i] = rnd_between(-32, 32, 0);
+      }
+   }
+   const struct dfxl V0 = dfxl_load(v0), A = dfxl_load(a), D1 = dfxl_load(d1),
+                     B = dfxl_load(b), D2 = dfxl_load(d2);
+#define PLANE(st) dfxl_add_terms(dfxl_add_terms(V0, dfxl_term(A, D1, st), st), \
+                                 dfxl_term(B, D2, st), st)
+   BOTH_WAYS("plane sum", plane_i(v0[i], a[i], d1[i], b[i], d2[i], &wl), PLANE, d1,
+             dfxl_splat(0));
+}
+
 /* A register of magnitude in [2^lo, 2^hi) (lo, hi multiples of 4 from -32
  * to 32), any mantissa, near a power of two now and then. */
 static struct dfx rnd_between(int lo, int hi, unsigned sign)
@@ -280,6 +317,7 @@ int main(void)
       test_binary();
       test_from_fixed();
       test_tex_subtractions();
+      test_plane_sums();
    }
    printf("dfx_lanes (%s): %llu lane results compared with the scalar data paths, "
           "%llu optimistic lanes marked for the careful way\n", TEST_ISA,
