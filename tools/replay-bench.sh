@@ -185,32 +185,35 @@ if [ "$nscenes" -gt 0 ]; then
     # fixpipe's shares: constant 1/w of the quads divided, constant components of the
     # component-quads, texture quads without a LOD of those with a LOD from differences,
     # texture quad-axes addressed per column or row of the texture quads' two axes,
-    # quads shaded without gl_FragCoord of all quads
+    # quads shaded without gl_FragCoord of all quads, quads without a Z walk of all
+    # quads, quads left unshaded by the early tests or for want of a visible effect of
+    # all quads
     shares=()
     if [ -r "$out/fixpipe.1.log" ]; then
         mapfile -t shares < <(sed -n 's/^fixpipe work at frame \([0-9]*\): /\1 /p' "$out/fixpipe.1.log" |
             awk -v n="$scene_frames" -v k="$nscenes" '
-            BEGIN { split("divided skip_w comp_quads skip_comp lod_quads skip_lod tex_quads skip_axes quads skip_fragcoord", key, " ") }
+            BEGIN { split("divided skip_w comp_quads skip_comp lod_quads skip_lod tex_quads skip_axes quads skip_fragcoord quads skip_z quads skip_unshaded", key, " ") }
             { if ($1 + 0 <= frame + 0) for (x in p) p[x] = 0
               frame = $1; sc = int(line / n); line++
-              for (i = 2; i < NF; i += 2) { d[sc, $i] += $(i + 1) - p[$i]; p[$i] = $(i + 1) } }
+              for (i = 2; i < NF; i += 2) { d[sc, $i] += $(i + 1) - p[$i]; p[$i] = $(i + 1) }
+              d[sc, "skip_unshaded"] = d[sc, "skip_early"] + d[sc, "skip_shade"] }
             END { for (s = 0; s < k; s++) { out = ""
-                      for (j = 1; j <= 10; j += 2) { tot = d[s, key[j]] * (j == 7 ? 2 : 1); sk = d[s, key[j + 1]]
+                      for (j = 1; j <= 14; j += 2) { tot = d[s, key[j]] * (j == 7 ? 2 : 1); sk = d[s, key[j + 1]]
                           out = out (tot > 0 ? sprintf("%.0f%%", 100 * sk / tot) : "–") " " }
                       print out } }')
     fi
     echo
     printf '| scene (frames 2–%s) |' "$scene_frames"
     for c in $configs; do printf ' %s (s) |' "$c"; done
-    printf ' fixpipe ÷ llvmpipe | softpipe ÷ fixpipe | constant 1/w | constant components | texture quads without LOD | texture quad-axes per column or row | quads without gl_FragCoord |\n|---|'
+    printf ' fixpipe ÷ llvmpipe | softpipe ÷ fixpipe | constant 1/w | constant components | texture quads without LOD | texture quad-axes per column or row | quads without gl_FragCoord | quads without a Z walk | quads not shaded (early tests, no effect) |\n|---|'
     for c in $configs; do printf -- '---:|'; done
-    echo '---:|---:|---:|---:|---:|---:|---:|'
+    echo '---:|---:|---:|---:|---:|---:|---:|---:|---:|'
     i=0
     for sc in $scenes; do
         printf '| %s |' "$sc"
         for c in $configs; do printf ' %s |' "${sec[$c.$i]:-n/a}"; done
-        read -r sw scc sl sa sf <<< "${shares[$i]:-n/a n/a n/a n/a n/a}"
-        echo " $(ratio "${sec[fixpipe.$i]:-}" "${sec[llvmpipe.$i]:-}") | $(ratio "${sec[softpipe.$i]:-}" "${sec[fixpipe.$i]:-}") | $sw | $scc | $sl | $sa | $sf |"
+        read -r sw scc sl sa sf sz su <<< "${shares[$i]:-n/a n/a n/a n/a n/a n/a n/a}"
+        echo " $(ratio "${sec[fixpipe.$i]:-}" "${sec[llvmpipe.$i]:-}") | $(ratio "${sec[softpipe.$i]:-}" "${sec[fixpipe.$i]:-}") | $sw | $scc | $sl | $sa | $sf | $sz | $su |"
         i=$((i + 1))
     done
 fi
