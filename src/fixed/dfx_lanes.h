@@ -272,6 +272,19 @@ DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
 }
 #undef DFXL_GRID_MASK
 
+/* The optimistic way's rounding: the plain truncation, and the bounds
+ * asked for (both, except in a plane's sum: dfxl_add_terms). */
+DFXL_INLINE struct dfxl dfxl_round_optimistic(dfxl_d x, struct dfxl_stats *st, bool hi, bool lo)
+{
+   const dfxl_d ax = dfxl_abs(x);
+   if (hi)
+      st->hi = dfxl_maxd(ax, st->hi);
+   if (lo)
+      st->lo = dfxl_mind((dfxl_d)((dfxl_i)ax - 1), st->lo);
+   struct dfxl o = { dfxl_to_grid(x) };
+   return o;
+}
+
 /* dfx_finish_i after the data path: the exact result x truncated toward
  * zero to its digit's grid; above L = 15 the largest magnitude, below
  * L = 0 zero, both counted.  An exact zero is +0.
@@ -288,14 +301,9 @@ DFXL_INLINE dfxl_d dfxl_to_grid(dfxl_d x)
  * ever -0 (dfxl_mul makes it +0). */
 DFXL_INLINE struct dfxl dfxl_round(dfxl_d x, struct dfxl_stats *st)
 {
+   if (st->optimistic)
+      return dfxl_round_optimistic(x, st, true, true);
    const dfxl_d ax = dfxl_abs(x);
-   if (st->optimistic) {
-      const dfxl_d l = (dfxl_d)((dfxl_i)ax - 1);
-      st->hi = dfxl_maxd(ax, st->hi);
-      st->lo = dfxl_mind(l, st->lo);
-      struct dfxl o = { dfxl_to_grid(x) };
-      return o;
-   }
    const dfxl_i nz = ax != 0;
    const dfxl_i sat = ax >= 0x1p32, flush = nz & (ax < 0x1p-32);
    st->sat -= sat;
@@ -390,19 +398,6 @@ DFXL_INLINE struct dfxl dfxl_add_same_sign(struct dfxl a, struct dfxl b, struct 
    return dfxl_round(a.v + b.v, st);
 }
 
-/* dfxl_add, without the aligner where every lane's operands have the same
- * sign bit: for sums whose signs are mostly fixed (a plane's terms have
- * the signs of their vertex values and differences over a primitive), so
- * that the branch is predicted. */
-DFXL_INLINE struct dfxl dfxl_add_mostly_same_sign(struct dfxl a, struct dfxl b,
-                                                  struct dfxl_stats *st)
-{
-   const dfxl_i differ = ((dfxl_i)a.v ^ (dfxl_i)b.v) < 0;
-   if (__builtin_expect(!dfxl_any(differ), 1))
-      return dfxl_add_same_sign(a, b, st);
-   return dfxl_add(a, b, st);
-}
-
 /* A plane's sum v0 + a·Δ1 + b·Δ2 with one bound an operation where the
  * optimistic way keeps two.  A sum of operands of the same sign is at least
  * as large as either (in the double too: rounding is monotonic), so:
@@ -418,15 +413,7 @@ DFXL_INLINE struct dfxl dfxl_add_mostly_same_sign(struct dfxl a, struct dfxl b,
  * careful way is every operation's own, unchanged. */
 DFXL_INLINE struct dfxl dfxl_round_bound(dfxl_d x, struct dfxl_stats *st, bool hi, bool lo)
 {
-   if (!st->optimistic)
-      return dfxl_round(x, st);
-   const dfxl_d ax = dfxl_abs(x);
-   if (hi)
-      st->hi = dfxl_maxd(ax, st->hi);
-   if (lo)
-      st->lo = dfxl_mind((dfxl_d)((dfxl_i)ax - 1), st->lo);
-   struct dfxl o = { dfxl_to_grid(x) };
-   return o;
+   return st->optimistic ? dfxl_round_optimistic(x, st, hi, lo) : dfxl_round(x, st);
 }
 
 /* dfxl_mul, as a term of dfxl_add_terms: its upper bound is the sum's. */
@@ -435,7 +422,10 @@ DFXL_INLINE struct dfxl dfxl_term(struct dfxl a, struct dfxl b, struct dfxl_stat
    return dfxl_round_bound(a.v * b.v + 0.0, st, false, true);
 }
 
-/* dfxl_add_mostly_same_sign of a register or sum and a dfxl_term. */
+/* dfxl_add of a register or sum and a dfxl_term, without the aligner where
+ * every lane's operands have the same sign bit: a plane's terms have the
+ * signs of its vertex values and differences over a primitive, so the
+ * branch is predicted. */
 DFXL_INLINE struct dfxl dfxl_add_terms(struct dfxl a, struct dfxl b, struct dfxl_stats *st)
 {
    const dfxl_i differ = ((dfxl_i)a.v ^ (dfxl_i)b.v) < 0;

@@ -309,8 +309,9 @@ static void backend_choose(struct rast_context *rc)
     * what it decides).  Not on a multisampled target, where the order
     * decides which sample's position shades an edge pixel (msaa.c: the
     * first sample that reaches the shader). */
-   const bool noskip = (rc->opts & RAST_OPT_NOSKIP) && rc->fb.samples <= 1;
-   be->skips_counted = !(rc->opts & RAST_OPT_NOSKIP) && rc->fb.samples <= 1;
+   const bool single = rc->fb.samples <= 1, asked = rc->opts & RAST_OPT_NOSKIP;
+   const bool noskip = asked && single;
+   be->skips_counted = !asked && single;
    rast_quads_func group = NULL;
    if (be->zs) {
       const bool late = rc->fs.writes_depth || rc->fs.may_discard || a2c || noskip;

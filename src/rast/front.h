@@ -199,7 +199,6 @@ struct rast_front {
     * and there is no colour register (no depth test, no gl_FragCoord, no
     * RTL vectors): the Z walk skipped, counted in skip_z (docs/datapath.md). */
    unsigned nfix_scan;
-   bool z_walk;                /* nfix_scan includes Z */
    int64_t fix_min[FR_MAX_FIX], fix_max[FR_MAX_FIX];
    struct fx_sat *fix_sat[FR_MAX_FIX];
    struct fx_format fix_fmt[FR_MAX_FIX];

@@ -700,7 +700,7 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    }
    int64_t xq = xs & ~(int64_t)1;
 
-   /* without Z (fr->z_walk) there is no colour register either */
+   /* without Z (fr->nfix_scan 0) there is no colour register either */
    const unsigned nfix = has_color ? fr->nfix : has_z ? 1 : 0;
    const unsigned nflt = has_lin ? fr->nwalk : 1;
    const unsigned flt_lin_end = 1 + (has_lin ? fr->nlin : 0);
@@ -880,7 +880,7 @@ PAIR_VARIANT(pair_p,      true,  false, false, true)
 PAIR_VARIANT(pair_cp,     true,  true,  false, true)
 PAIR_VARIANT(pair_lp,     true,  false, true,  true)
 PAIR_VARIANT(pair_clp,    true,  true,  true,  true)
-/* the Z walk skipped (fr->z_walk): no colour register then */
+/* the Z walk skipped (fr->nfix_scan 0): no colour register then */
 PAIR_VARIANT(pair_0,      false, false, false, false)
 PAIR_VARIANT(pair_0l,     false, false, true,  false)
 PAIR_VARIANT(pair_0p,     false, false, false, true)
@@ -903,7 +903,7 @@ fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast
       pair_z, pair_c, pair_l, pair_cl, pair_p, pair_cp, pair_lp, pair_clp
    };
    static const fr_pair_func no_z[4] = { pair_0, pair_0l, pair_0p, pair_0lp };
-   if (!fr->z_walk)
+   if (!fr->nfix_scan)
       return no_z[(fr->nlin ? 1u : 0u) | (fr->npersp ? 2u : 0u)];
    unsigned i = (fr->ncolor ? 1u : 0u) | (fr->nlin ? 2u : 0u) | (fr->npersp ? 4u : 0u);
    return table[i];

@@ -126,9 +126,10 @@ void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool po
    /* Z feeds the depth test, gl_FragCoord.z and the RTL vectors only; the
     * per-pixel modes (FIXPIPE_INTERP) keep it, and so does a colour
     * register, which walks beside it. */
-   fr->z_walk = rc->dsa.depth_enabled || rc->fs.reads_fragcoord || rc->vec || fr->ncolor ||
-                rc->interp != RAST_INTERP_SCANLINE || (rc->opts & RAST_OPT_NOSKIP);
-   fr->nfix_scan = fr->z_walk ? fr->nfix : 0;
+   const bool z_read = rc->dsa.depth_enabled || rc->fs.reads_fragcoord || rc->vec ||
+                       fr->ncolor || rc->interp != RAST_INTERP_SCANLINE ||
+                       (rc->opts & RAST_OPT_NOSKIP);
+   fr->nfix_scan = z_read ? fr->nfix : 0;
    fr->nfix_walk = fr->nfix_scan;
    fr->pair = rast_interp_choose(rc, fr);
    rast_interp_perspective_choose(rc, fr);
