@@ -6,8 +6,11 @@
  * trivial shader, and prints the CPU time and covered pixels per second.
  * No GL, no Mesa: rast.h only (docs/dfx.md, "Speed").
  *
- *   fp-bench-persp [--triangles N] [--scalar] [SYSTEM ...]
+ *   fp-bench-persp [--triangles N] [--components C] [--scalar] [SYSTEM ...]
  *                                          (default: float dfx24 fx8.24 fx16.16)
+ *
+ * --components C: C PERSPECTIVE components (1 to 16, default 2) in vec4
+ * varyings, as a shader with many varyings has (jellyfish reads 12).
  *
  * --scalar: the scalar reference datapath, nothing skipped (RAST_OPT_SCALAR,
  * RAST_OPT_NOSKIP; docs/datapath.md) instead of dfx24's lanes.
@@ -53,6 +56,7 @@ static double cpu_seconds(void)
 }
 
 static unsigned opts;
+static int ncomp = 2;
 
 static int run(const char *sys, int ntri)
 {
@@ -90,9 +94,14 @@ static int run(const char *sys, int ntri)
    rast_set_blend(rc, &bs);
    struct rast_vertex_layout vl;
    memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 2;
-   vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x3 };
+   const int nvar = (ncomp + 3) / 4;
+   vl.vertex_size = 1 + nvar;
+   vl.num_varyings = nvar;
+   for (int i = 0; i < nvar; i++) {
+      const int c = ncomp - 4 * i < 4 ? ncomp - 4 * i : 4;
+      vl.varying[i] = (struct rast_varying){ .slot = 1 + i, .interp = RAST_INTERP_PERSPECTIVE,
+                                             .usage_mask = (1u << c) - 1 };
+   }
    rast_set_vertex_layout(rc, &vl);
    struct rast_shader fs = { .shade = shade, .num_outputs = 1 };
    rast_set_shader(rc, &fs);
@@ -100,15 +109,14 @@ static int run(const char *sys, int ntri)
    srand(1);          /* the same triangles for every system */
    double t0 = cpu_seconds();
    for (int n = 0; n < ntri; n++) {
-      float v[3][2][4];
+      float v[3][5][4];
       for (int k = 0; k < 3; k++) {
          v[k][0][0] = (float)(rand() % W);
          v[k][0][1] = (float)(rand() % H);
          v[k][0][2] = 0.5f;
          v[k][0][3] = 1 / (1 + 20.0f * (float)rand() / (float)RAND_MAX);
-         v[k][1][0] = (float)rand() / (float)RAND_MAX;
-         v[k][1][1] = (float)rand() / (float)RAND_MAX;
-         v[k][1][2] = v[k][1][3] = 0;
+         for (int c = 0; c < 16; c++)
+            v[k][1 + c / 4][c % 4] = c < ncomp ? (float)rand() / (float)RAND_MAX : 0;
       }
       rast_triangle(rc, (const float (*)[4])v[0], (const float (*)[4])v[1],
                     (const float (*)[4])v[2]);
@@ -130,8 +138,17 @@ int main(int argc, char **argv)
       ntri = atoi(argv[2]);
       first = 3;
    }
+   if (first + 1 < argc && !strcmp(argv[first], "--components")) {
+      ncomp = atoi(argv[first + 1]);
+      first += 2;
+      if (ncomp < 1 || ncomp > 16) {
+         fprintf(stderr, "fp-bench-persp: bad --components (1 to 16)\n");
+         return 2;
+      }
+   }
    if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
-      printf("usage: fp-bench-persp [--triangles N] [--scalar] [SYSTEM ...]  (%s)\n",
+      printf("usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [SYSTEM "
+             "...]  (%s)\n",
              numsys_names());
       return 0;
    }

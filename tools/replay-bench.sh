@@ -43,7 +43,10 @@
 # launcher (this tree's piglit runner) with the other checkout's build: the driver alone
 # compared; --piglit-runs N (default 1) runs each N times, the three alternating, and prints
 # the medians (a list of short processes is noisy on a shared machine).
-# The median of --runs runs (default 1) is printed; every run's figures are in
+# The runs go round by round, each configuration once a round in the same order, so
+# that a machine whose speed drifts over minutes weighs on every configuration alike.
+# The median of --runs runs (default 1) is printed, and with several runs the ratios
+# of each round's runs (their median and range); every run's figures are in
 # OUT/results.tsv (default out/replay-bench).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -125,8 +128,11 @@ fi
 echo "replay benchmark: $(basename "$trace"), $frames frames, $runs run(s) a configuration, $(nproc) cores"
 printf 'config\trun\treplay_s\tfirst_frame_s\tmean_err\tworst_psnr\tframes_compared\n' > "$out/results.tsv"
 declare -A replay first err psnr
-for c in $configs; do
-    for r in $(seq 1 "$runs"); do
+# round by round, every configuration once a round in the same order: on a machine
+# whose speed drifts within minutes, each configuration then sees the same drift, and
+# the ratios of one round compare runs a few minutes apart
+for r in $(seq 1 "$runs"); do
+    for c in $configs; do
         snapdir=$out/$c.$r.snap
         rm -rf "$snapdir"; mkdir -p "$snapdir"
         w=$(run "$c" "$trace" "$out/$c.$r.log" --pframe-times --snapshot-prefix="$snapdir/" \
@@ -145,6 +151,8 @@ for c in $configs; do
         f=$(run "$c" "$first" "$out/$c.$r.first.log")
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$r" "$w" "$f" "$e" "$p" "$n" >> "$out/results.tsv"
     done
+done
+for c in $configs; do
     replay[$c]=$(awk -F'\t' -v c="$c" '$1 == c && $3 != "n/a" { print $3 }' "$out/results.tsv" | median)
     first[$c]=$(awk -F'\t' -v c="$c" '$1 == c { print $4 }' "$out/results.tsv" | median)
     err[$c]=$(awk -F'\t' -v c="$c" '$1 == c { print $5 }' "$out/results.tsv" | tail -1)
@@ -159,6 +167,35 @@ for c in $configs; do
     fps=$(awk -v s="${replay[$c]}" -v n="$frames" 'BEGIN { if (s+0 > 0) printf "%.1f", n / s; else print "n/a" }')
     echo "| $c | ${replay[$c]} | $fps | $(ratio "${replay[$c]}" "${replay[llvmpipe]:-}") | $(ratio "${replay[softpipe]:-}" "${replay[$c]}") | ${err[$c]} | ${psnr[$c]} | ${first[$c]} |"
 done
+
+# the same ratios round by round (each round's two runs a few minutes apart): their
+# median, and the range over the rounds
+round_ratio() { # NUM DEN: the ratio of the two configurations' replays in each round
+    awk -F'\t' -v a="$1" -v b="$2" 'NR > 1 && $3 != "n/a" { t[$1, $2] = $3; if ($2 + 0 > n) n = $2 + 0 }
+        END { for (r = 1; r <= n; r++) if (t[a, r] > 0 && t[b, r] > 0) printf "%.3f\n", t[a, r] / t[b, r] }' \
+        "$out/results.tsv"
+}
+ratio_summary() { # NUM DEN: "median (min–max)" of the rounds' ratios
+    round_ratio "$1" "$2" | sort -n | awk '{ v[NR] = $1 }
+        END { if (!NR) { print "n/a"; exit }
+              m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+              printf "%.2f (%.2f–%.2f)", m, v[1], v[NR] }'
+}
+if [ "$runs" -gt 1 ]; then
+    echo
+    echo "| configuration | time ÷ llvmpipe's, per round | softpipe's time ÷ this, per round |"
+    echo "|---|---:|---:|"
+    for c in $configs; do
+        [ "$c" != llvmpipe ] || continue
+        sp=n/a
+        [[ " $configs " != *" softpipe "* ]] || sp=$(ratio_summary softpipe "$c")
+        echo "| $c | $(ratio_summary "$c" llvmpipe) | $sp |"
+    done
+    if [[ " $configs " == *" fixpipe "* && " $configs " == *" fixpipe-1thread "* ]]; then
+        echo
+        echo "two threads' speed-up (fixpipe-1thread's time ÷ fixpipe's), per round: $(ratio_summary fixpipe-1thread fixpipe)"
+    fi
+fi
 
 # per scene: frames 2..N of each scene from the frame-end timestamps of each run's
 # log (ns; a trace's last frame may have no swap: that scene's time is scaled from
