@@ -134,27 +134,28 @@ static int run(const char *sys, int ntri)
 int main(int argc, char **argv)
 {
    int ntri = 800, first = 1, rc = 0;
-   if (argc > 2 && !strcmp(argv[1], "--triangles")) {
-      ntri = atoi(argv[2]);
-      first = 3;
-   }
-   if (first + 1 < argc && !strcmp(argv[first], "--components")) {
-      ncomp = atoi(argv[first + 1]);
-      first += 2;
-      if (ncomp < 1 || ncomp > 16) {
-         fprintf(stderr, "fp-bench-persp: bad --components (1 to 16)\n");
+   /* the options, in any order, before the systems */
+   for (; first < argc && !strncmp(argv[first], "-", 1); first++) {
+      if (!strcmp(argv[first], "-h") || !strcmp(argv[first], "--help")) {
+         printf("usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [SYSTEM "
+                "...]  (%s)\n",
+                numsys_names());
+         return 0;
+      } else if (!strcmp(argv[first], "--triangles") && first + 1 < argc) {
+         ntri = atoi(argv[++first]);
+      } else if (!strcmp(argv[first], "--components") && first + 1 < argc) {
+         ncomp = atoi(argv[++first]);
+      } else if (!strcmp(argv[first], "--scalar")) {
+         opts = RAST_OPT_SCALAR | RAST_OPT_NOSKIP;
+      } else {
+         fprintf(stderr, "fp-bench-persp: unknown option '%s' (accepted: --triangles N, "
+                 "--components C, --scalar, --help)\n", argv[first]);
          return 2;
       }
    }
-   if (argc > 1 && (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help"))) {
-      printf("usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [SYSTEM "
-             "...]  (%s)\n",
-             numsys_names());
-      return 0;
-   }
-   if (first < argc && !strcmp(argv[first], "--scalar")) {
-      opts = RAST_OPT_SCALAR | RAST_OPT_NOSKIP;
-      first++;
+   if (ncomp < 1 || ncomp > 16) {
+      fprintf(stderr, "fp-bench-persp: bad --components (1 to 16)\n");
+      return 2;
    }
    if (ntri < 1) {
       fprintf(stderr, "fp-bench-persp: bad --triangles\n");

@@ -176,10 +176,10 @@ round_ratio() { # NUM DEN: the ratio of the two configurations' replays in each 
         "$out/results.tsv"
 }
 ratio_summary() { # NUM DEN: "median (min–max)" of the rounds' ratios
-    round_ratio "$1" "$2" | sort -n | awk '{ v[NR] = $1 }
-        END { if (!NR) { print "n/a"; exit }
-              m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
-              printf "%.2f (%.2f–%.2f)", m, v[1], v[NR] }'
+    local r
+    r=$(round_ratio "$1" "$2" | sort -n)
+    [ -n "$r" ] || { echo n/a; return; }
+    printf '%.2f (%.2f–%.2f)' "$(median <<< "$r")" "$(head -1 <<< "$r")" "$(tail -1 <<< "$r")"
 }
 if [ "$runs" -gt 1 ]; then
     echo
