@@ -4,10 +4,82 @@
  */
 #include "util/u_surface.h"
 #include "util/u_inlines.h"
+#include "util/u_pack_color.h"
+#include "util/format/u_format.h"
 #include "draw/draw_context.h"
 
 #include "fp_context.h"
 #include "fp_resource.h"
+#include "fp_screen.h"
+
+/* A clear as large as this divides its rows between the model's threads
+ * where they already run (rast_run_on_threads): each thread writes the
+ * rows it is about to draw, from its own cache, and the fill of a
+ * full-window target no longer waits on one core.  Smaller ones are not
+ * worth waking the workers. */
+#define FP_CLEAR_THREADED_PIXELS (64 * 1024)
+
+/* A mapped box filled by rows, as util_clear_render_target and
+ * util_clear_depth_stencil fill it (the same util functions, the same
+ * bytes), thread t of n taking the t-th stretch of rows. */
+struct fill_job {
+   ubyte *map;
+   enum pipe_format format;
+   unsigned stride, layer_stride, width, height, layers;
+   bool zs, need_rmw;
+   unsigned zs_flags;
+   uint64_t zstencil;
+   union util_color color;
+};
+
+static void fill_rows(void *arg, unsigned t, unsigned n)
+{
+   const struct fill_job *j = arg;
+   const unsigned y0 = (unsigned)((uint64_t)j->height * t / n);
+   const unsigned y1 = (unsigned)((uint64_t)j->height * (t + 1) / n);
+   if (y1 == y0)
+      return;
+   if (j->zs)
+      util_fill_zs_box(j->map + (size_t)y0 * j->stride, j->format, j->need_rmw, j->zs_flags,
+                       j->stride, j->layer_stride, j->width, y1 - y0, j->layers, j->zstencil);
+   else
+      util_fill_box(j->map, j->format, j->stride, j->layer_stride, 0, y0, 0, j->width, y1 - y0,
+                    j->layers, (union util_color *)&j->color);
+}
+
+/* Whether a clear of ps's w x h box goes to the threads: a plain texture
+ * (not a buffer, one sample) of one-pixel blocks, large enough. */
+static bool clear_threaded(const struct fp_context *fp, const struct pipe_surface *ps,
+                           unsigned w, unsigned h)
+{
+   return rast_get_threads(fp->rast) > 1 && !(fp_env_debug() & FP_DEBUG_SERIALCLEAR) &&
+          ps->texture->target != PIPE_BUFFER &&
+          fp_resource_samples(ps->texture) == 1 &&
+          util_format_get_blockwidth(ps->format) == 1 &&
+          util_format_get_blockheight(ps->format) == 1 &&
+          (uint64_t)w * h >= FP_CLEAR_THREADED_PIXELS;
+}
+
+/* The box mapped as util maps it, filled on the threads. */
+static void clear_on_threads(struct pipe_context *pipe, struct pipe_surface *ps,
+                             struct fill_job *j, unsigned x, unsigned y, unsigned w, unsigned h)
+{
+   struct pipe_transfer *trans;
+   const unsigned layers = ps->u.tex.last_layer - ps->u.tex.first_layer + 1;
+   j->map = pipe_texture_map_3d(pipe, ps->texture, ps->u.tex.level,
+                                j->need_rmw ? PIPE_MAP_READ_WRITE : PIPE_MAP_WRITE, x, y,
+                                ps->u.tex.first_layer, w, h, layers, &trans);
+   if (!j->map)
+      return;
+   j->format = ps->format;
+   j->stride = trans->stride;
+   j->layer_stride = (unsigned)trans->layer_stride;
+   j->width = w;
+   j->height = h;
+   j->layers = layers;
+   rast_run_on_threads(fp_context(pipe)->rast, fill_rows, j);
+   pipe->texture_unmap(pipe, trans);
+}
 
 /* util's clears reach a surface's layers: a multisampled surface is
  * cleared plane by plane, each plane as the layer it is stored as. */
@@ -16,6 +88,12 @@ static void clear_color_planes(struct pipe_context *pipe, struct pipe_surface *p
                                unsigned w, unsigned h)
 {
    const unsigned n = fp_resource_samples(ps->texture);
+   if (clear_threaded(fp_context(pipe), ps, w, h)) {
+      struct fill_job j = { .zs = false };
+      util_pack_color_union(ps->format, &j.color, color);
+      clear_on_threads(pipe, ps, &j, x, y, w, h);
+      return;
+   }
    if (n == 1) {
       util_clear_render_target(pipe, ps, color, x, y, w, h);
       return;
@@ -33,6 +111,16 @@ static void clear_zs_planes(struct pipe_context *pipe, struct pipe_surface *ps, 
                             unsigned w, unsigned h)
 {
    const unsigned n = fp_resource_samples(ps->texture);
+   if (clear_threaded(fp_context(pipe), ps, w, h)) {
+      /* util_clear_depth_stencil_texture's read-modify-write rule */
+      const bool rmw = (flags & PIPE_CLEAR_DEPTHSTENCIL) &&
+                       (flags & PIPE_CLEAR_DEPTHSTENCIL) != PIPE_CLEAR_DEPTHSTENCIL &&
+                       util_format_is_depth_and_stencil(ps->format);
+      struct fill_job j = { .zs = true, .need_rmw = rmw, .zs_flags = flags,
+                            .zstencil = util_pack64_z_stencil(ps->format, depth, stencil) };
+      clear_on_threads(pipe, ps, &j, x, y, w, h);
+      return;
+   }
    if (n == 1) {
       util_clear_depth_stencil(pipe, ps, flags, depth, stencil, x, y, w, h);
       return;

@@ -139,12 +139,13 @@ static void fp_print_stats(const struct fp_context *fp)
    static const char *const class_names[RAST_REG_COUNT] = { "xy", "dxdy", "z", "color",
                                                                   "weight" };
    const struct rast_stats *st = fp_stats(fp);
-   uint64_t quads_jit = 0, quads_interp = 0, serial, parallel;
+   uint64_t quads_jit = 0, quads_interp = 0, serial, parallel, jobs_serial, jobs_parallel;
    for (unsigned t = 0; t < fp->num_threads; t++) {
       quads_jit += fp->fs_thread[t].quads_jit;
       quads_interp += fp->fs_thread[t].quads_interp;
    }
    rast_get_flush_counts(fp->rast, &serial, &parallel);
+   rast_get_job_counts(fp->rast, &jobs_serial, &jobs_parallel);
    fprintf(stderr, "fixpipe stats (profile %s):\n", rast_get_profile(fp->rast)->name);
    for (unsigned i = 0; i < RAST_REG_COUNT; i++)
       fprintf(stderr, "  saturation %-5s high %" PRIu64 " low %" PRIu64 "\n",
@@ -193,8 +194,9 @@ static void fp_print_stats(const struct fp_context *fp)
            fp->jit ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
            quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead);
-   fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64 "\n",
-           rast_get_threads(fp->rast), serial, parallel);
+   fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64
+           "; large clears filled by one thread %" PRIu64 ", divided %" PRIu64 "\n",
+           rast_get_threads(fp->rast), serial, parallel, jobs_serial, jobs_parallel);
 }
 
 /* FIXPIPE_STATS=1 prints a context's statistics when it is destroyed.  A

@@ -41,6 +41,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "no per-primitive rebase of REPEAT texture coordinates (large ones lose bits)" },
    { "noavx512", FP_DEBUG_NOAVX512,
      "the lanes' 256-bit instruction set where the CPU has AVX-512 (same bits)" },
+   { "serialclear", FP_DEBUG_SERIALCLEAR,
+     "large clears filled by the calling thread alone, not divided between the threads" },
    DEBUG_NAMED_VALUE_END
 };
 

@@ -1,19 +1,25 @@
 /*
  * The instruction set of the lanes, chosen once per process from the CPU.
  */
+#include <stdatomic.h>
+
 #include "rast/lanes.h"
 
-static const struct rast_lanes *chosen;
+/* Atomic: the first validation may run on several threads at once (a
+ * context's first batch drawn on all of them); each finds the same set. */
+static const struct rast_lanes *_Atomic chosen;
 
 const struct rast_lanes *rast_lanes(void)
 {
-   if (!chosen) {
+   const struct rast_lanes *set = atomic_load_explicit(&chosen, memory_order_acquire);
+   if (!set) {
       __builtin_cpu_init();
-      chosen = rast_lanes_have_avx512()         ? &rast_lanes_avx512
-               : __builtin_cpu_supports("avx2") ? &rast_lanes_avx2
-                                                : &rast_lanes_sse2;
+      set = rast_lanes_have_avx512()         ? &rast_lanes_avx512
+            : __builtin_cpu_supports("avx2") ? &rast_lanes_avx2
+                                             : &rast_lanes_sse2;
+      atomic_store_explicit(&chosen, set, memory_order_release);
    }
-   return chosen;
+   return set;
 }
 
 bool rast_lanes_have_avx512(void)
@@ -26,5 +32,5 @@ bool rast_lanes_have_avx512(void)
 
 void rast_lanes_set(const struct rast_lanes *set)
 {
-   chosen = set;
+   atomic_store_explicit(&chosen, set, memory_order_release);
 }

@@ -528,9 +528,19 @@ struct rast_context *rast_thread_context(struct rast_context *rc, unsigned t);
  * framebuffer.  Vertex memory given to rast_triangle/line/point must stay
  * valid until then; state setters flush first. */
 void rast_flush(struct rast_context *rc);
+/* Work outside the model that divides by rows (the driver's clears): the
+ * queue drawn first, then job(arg, t, n) called once for each t in 0..n-1,
+ * each on its own thread, returning when all have.  n is 1 (the caller
+ * alone) unless the workers are already running: a job does not start
+ * them, so a short program stays on one thread.  Returns n. */
+typedef void (*rast_job_fn)(void *arg, unsigned t, unsigned n);
+unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg);
 /* Primitives drawn on one thread and on all of them since creation (for
  * docs and the threads test). */
 void rast_get_flush_counts(const struct rast_context *rc, uint64_t *serial, uint64_t *parallel);
+/* Jobs run by rast_run_on_threads on the caller alone and on all threads
+ * (with one thread, no pool: both 0). */
+void rast_get_job_counts(const struct rast_context *rc, uint64_t *serial, uint64_t *parallel);
 
 /* Up to date after rast_flush: every thread's counters summed. */
 const struct rast_stats *rast_get_stats(const struct rast_context *rc);

@@ -172,6 +172,12 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
    int64_t jhi = jbot < rc->clip.maxy - 1 ? jbot : rc->clip.maxy - 1;
    if (jlo > jhi)
       return;
+   /* Below the thread's stretch every row is another thread's, which walks
+    * there itself: the walk stops at the stretch's last scan line.  The
+    * edges' extents stay the primitive's (edge_start counts by them). */
+   int64_t jstop = jhi;
+   if (rc->band_count > 1 && rc->band_hi != INT64_MAX && rc->band_hi - 1 - rc->org_y < jhi)
+      jstop = rc->band_hi - 1 - rc->org_y;
 
    for (unsigned s = 0; s < fr->nsec; s++) {
       fr->sec[s].l->j_end = INT64_MIN;
@@ -194,7 +200,7 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
    edge_start(rc, fr, L, jlo);
    edge_start(rc, fr, R, jlo);
 
-   for (int64_t p = jlo & ~(int64_t)1; p <= jhi; p += 2) {
+   for (int64_t p = jlo & ~(int64_t)1; p <= jstop; p += 2) {
       /* Every thread walks the edges over every scan line (the registers
        * are the walk's, not recomputed); the spans are drawn, and the
        * walk's events counted, by the quad row's thread. */

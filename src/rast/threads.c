@@ -22,6 +22,10 @@
  * (rast_count_stretch), and the flush adds every worker's counters to the
  * main context's.  The sums are the one-thread counts.
  *
+ * rast_run_on_threads gives every thread a part of work outside the model
+ * that divides by rows (the driver's large clears), so that each thread
+ * finds the rows it is about to draw in its own cache.
+ *
  * Small batches, where waking the workers costs more than it saves, are
  * drawn on the calling thread alone, which owns every row for them.  The
  * workers start with the first batch that is not small: a short program
@@ -93,6 +97,7 @@ struct rast_pool {
       char apart[64 - 2 * sizeof(double)];
    } share[RAST_MAX_THREADS];
    uint64_t drawn_serial, drawn_parallel;
+   uint64_t jobs_serial, jobs_parallel;           /* rast_run_on_threads */
 
    /* The flushing thread's floating-point environment, which the workers
     * take for the batch: Mesa's draw module sets denormals to zero around a
@@ -104,6 +109,10 @@ struct rast_pool {
    atomic_ulong batch;         /* batches started; a worker runs each once */
    atomic_uint pending;        /* workers still drawing the current batch */
    atomic_bool quit;
+
+   /* rast_run_on_threads: the batch is this job instead of the queue */
+   rast_job_fn job;
+   void *job_arg;
 };
 
 struct rast_worker_arg {
@@ -363,10 +372,14 @@ static void *worker_main(void *data)
       seen = b;
       polls = RAST_SPIN_POLLS;
 
-      fesetenv(&pool->fenv);
-      const double t0 = seconds_now();
-      draw_share(pool->ctx[t], pool);
-      pool->share[t].seconds = seconds_now() - t0;
+      if (pool->job) {
+         pool->job(pool->job_arg, t, pool->n);
+      } else {
+         fesetenv(&pool->fenv);
+         const double t0 = seconds_now();
+         draw_share(pool->ctx[t], pool);
+         pool->share[t].seconds = seconds_now() - t0;
+      }
 
       if (atomic_fetch_sub_explicit(&pool->pending, 1, memory_order_acq_rel) == 1) {
          pthread_mutex_lock(&pool->mtx);
@@ -454,6 +467,52 @@ static bool pool_start(struct rast_pool *pool)
    return true;
 }
 
+/* The workers on to the next batch (the queue, or pool->job). */
+static void wake_workers(struct rast_pool *pool)
+{
+   atomic_store_explicit(&pool->pending, pool->n - 1, memory_order_relaxed);
+   pthread_mutex_lock(&pool->mtx);
+   atomic_fetch_add_explicit(&pool->batch, 1, memory_order_release);
+   pthread_cond_broadcast(&pool->go);
+   pthread_mutex_unlock(&pool->mtx);
+}
+
+/* Returns when every worker has finished the batch. */
+static void wait_workers(struct rast_pool *pool)
+{
+   for (unsigned i = 0; i < RAST_SPIN_POLLS &&
+        atomic_load_explicit(&pool->pending, memory_order_acquire); i++)
+      cpu_relax();
+   if (atomic_load_explicit(&pool->pending, memory_order_acquire)) {
+      pthread_mutex_lock(&pool->mtx);
+      while (atomic_load_explicit(&pool->pending, memory_order_acquire))
+         pthread_cond_wait(&pool->done, &pool->mtx);
+      pthread_mutex_unlock(&pool->mtx);
+   }
+}
+
+unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg)
+{
+   struct rast_pool *pool = rc->pool;
+   rast_flush(rc);
+   /* only where the workers already run: a job alone does not start them */
+   if (!pool || !pool->started) {
+      job(arg, 0, 1);
+      if (pool)
+         pool->jobs_serial++;
+      return 1;
+   }
+   pool->jobs_parallel++;
+   pool->job = job;
+   pool->job_arg = arg;
+   wake_workers(pool);
+   job(arg, 0, pool->n);
+   wait_workers(pool);
+   pool->job = NULL;
+   pool->job_arg = NULL;
+   return pool->n;
+}
+
 void rast_flush(struct rast_context *rc)
 {
    struct rast_pool *pool = rc->pool;
@@ -477,25 +536,13 @@ void rast_flush(struct rast_context *rc)
    split_rows(pool, rc);
    rc->band_count = pool->n;
    fegetenv(&pool->fenv);
-   atomic_store_explicit(&pool->pending, pool->n - 1, memory_order_relaxed);
-   pthread_mutex_lock(&pool->mtx);
-   atomic_fetch_add_explicit(&pool->batch, 1, memory_order_release);
-   pthread_cond_broadcast(&pool->go);
-   pthread_mutex_unlock(&pool->mtx);
+   wake_workers(pool);
 
    const double t0 = seconds_now();
    draw_share(rc, pool);
    pool->share[0].seconds = seconds_now() - t0;
 
-   for (unsigned i = 0; i < RAST_SPIN_POLLS &&
-        atomic_load_explicit(&pool->pending, memory_order_acquire); i++)
-      cpu_relax();
-   if (atomic_load_explicit(&pool->pending, memory_order_acquire)) {
-      pthread_mutex_lock(&pool->mtx);
-      while (atomic_load_explicit(&pool->pending, memory_order_acquire))
-         pthread_cond_wait(&pool->done, &pool->mtx);
-      pthread_mutex_unlock(&pool->mtx);
-   }
+   wait_workers(pool);
    rc->band_count = 1;
    rc->band_lo = INT64_MIN;
    rc->band_hi = INT64_MAX;
@@ -611,4 +658,10 @@ void rast_get_flush_counts(const struct rast_context *rc, uint64_t *serial, uint
 {
    *serial = rc->pool ? rc->pool->drawn_serial : 0;
    *parallel = rc->pool ? rc->pool->drawn_parallel : 0;
+}
+
+void rast_get_job_counts(const struct rast_context *rc, uint64_t *serial, uint64_t *parallel)
+{
+   *serial = rc->pool ? rc->pool->jobs_serial : 0;
+   *parallel = rc->pool ? rc->pool->jobs_parallel : 0;
 }

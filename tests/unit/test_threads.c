@@ -4,7 +4,10 @@
  * boundaries, with depth, stencil and order-dependent blending, drawn with
  * random thread counts.  Colour, depth and stencil bytes and every counter
  * must be those of one thread, in each FIXPIPE_INTERP mode (whose coverage
- * must be scanline's); each thread must shade with its own shader context.  Run under ThreadSanitizer by `./fixpipe check` (build/tsan).
+ * must be scanline's); each thread must shade with its own shader context.
+ * rast_run_on_threads must run its job once on each thread, after the queue
+ * is drawn (on the caller alone before the workers start).  Run under
+ * ThreadSanitizer by `./fixpipe check` (build/tsan).
  */
 #include <math.h>
 #if defined(__x86_64__) || defined(__i386__)
@@ -70,7 +73,10 @@ static void make_scene(struct scene *s)
 {
    s->nbatch = 1 + (unsigned)(t_xorshift(&rng) % 8);
    for (unsigned b = 0; b < s->nbatch; b++) {
-      s->nprim[b] = 1 + (unsigned)(t_xorshift(&rng) % MAX_PRIMS);
+      /* a third of the batches few and large, as a window or a full-screen
+       * pass: each crosses the cuts, and the walk stops at its stretch */
+      const bool few = t_xorshift(&rng) % 3 == 0;
+      s->nprim[b] = 1 + (unsigned)(t_xorshift(&rng) % (few ? 8 : MAX_PRIMS));
       s->blend[b] = t_xorshift(&rng) & 1;
       s->line_width[b] = frnd(1.0f, 6.0f);
       s->point_size[b] = frnd(1.0f, 40.0f);
@@ -80,7 +86,7 @@ static void make_scene(struct scene *s)
          /* mostly small, near a band boundary; some large; some off the target */
          float cy = (float)(RAST_BAND_ROWS * (t_xorshift(&rng) % (H / RAST_BAND_ROWS + 2))) - 4;
          float cx = frnd(-10, W + 10);
-         float size = (t_xorshift(&rng) % 8) == 0 ? frnd(20, 300) : frnd(0.5f, 12);
+         float size = few || (t_xorshift(&rng) % 8) == 0 ? frnd(20, 300) : frnd(0.5f, 12);
          for (unsigned k = 0; k < 3; k++)
             make_vertex(s->v[b][i][k], cx + frnd(-size, size), cy + frnd(-size, size));
       }
@@ -175,6 +181,86 @@ static void draw_scene(const struct scene *s, unsigned threads, bool daz, unsign
    rast_destroy(rc);
 }
 
+/* rast_run_on_threads: the job runs once on each thread, after the queue
+ * is drawn; on the caller alone (n = 1) while the workers have not started. */
+struct job_log {
+   _Atomic unsigned calls[RAST_MAX_THREADS];
+   _Atomic unsigned wrong_n;
+   unsigned n;
+   const uint8_t *color;           /* the pixel the queued triangle covers */
+   _Atomic unsigned saw_clear_value;
+};
+
+static void job_record(void *arg, unsigned t, unsigned n)
+{
+   struct job_log *l = arg;
+   if (n != l->n || t >= n)
+      l->wrong_n++;
+   else
+      l->calls[t]++;
+   if (l->color && l->color[0] == 0x40 && l->color[1] == 0x40)
+      l->saw_clear_value++;
+}
+
+static void test_jobs(void)
+{
+   enum { threads = 4 };
+   static uint8_t color[W * H * 4];
+   static uint32_t zs[W * H];
+   static struct shade_ctx sctx[threads];
+   static float v[3][SLOTS][4];
+   struct rast_context *rc = rast_create(rast_profile_by_name("seed"));
+   CHECK(rast_set_threads(rc, threads), "%u threads", threads);
+   memset(color, 0x40, sizeof(color));
+   memset(zs, 0xff, sizeof(zs));
+   t_bind_rgba8_z24s8(rc, color, zs, W, H);
+   t_layout_persp_color(rc);
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof(fs));
+   fs.ctx = &sctx[0];
+   fs.shade = shade;
+   fs.num_outputs = 1;
+   for (unsigned t = 1; t < threads; t++)
+      fs.thread_ctx[t] = &sctx[t];
+   rast_set_shader(rc, &fs);
+   struct rast_blend_state bs;
+   memset(&bs, 0, sizeof(bs));
+   bs.rt[0] = (struct rast_blend_target){ false, RAST_BLEND_ADD, RAST_BLEND_ADD, RAST_BF_ONE,
+                                          RAST_BF_ZERO, RAST_BF_ONE, RAST_BF_ZERO, 0xf };
+   rast_set_blend(rc, &bs);
+   make_vertex(v[0], -50, -50);
+   make_vertex(v[1], 2 * W + 50, -50);
+   make_vertex(v[2], -50, 2 * H + 50);
+   for (unsigned k = 0; k < 3; k++)
+      v[k][0][3] = v[k][1][3] = 1.0f;    /* w = 1, A/w in range: a plain colour */
+
+   for (unsigned round = 0; round < 3; round++) {
+      /* round 0: nothing drawn yet, the workers asleep: the caller alone;
+       * 1 and 2: after a large batch started them, every thread, with a
+       * triangle still queued that the job must find drawn */
+      struct job_log log = { .n = round == 0 ? 1 : threads };
+      if (round > 0) {
+         memset(color, 0x40, sizeof(color));
+         memset(zs, 0xff, sizeof(zs));
+         rast_triangle(rc, T_V(v[0]), T_V(v[1]), T_V(v[2]));
+         log.color = &color[((H / 2) * W + W / 2) * 4];
+      }
+      const unsigned n = rast_run_on_threads(rc, job_record, &log);
+      CHECK(n == log.n, "round %u: the job ran on %u threads, expected %u", round, n, log.n);
+      CHECK(log.wrong_n == 0, "round %u: %u calls with a wrong thread or count", round,
+            (unsigned)log.wrong_n);
+      for (unsigned t = 0; t < log.n; t++)
+         CHECK(log.calls[t] == 1, "round %u: thread %u ran the job %u times", round, t,
+               (unsigned)log.calls[t]);
+      CHECK(log.saw_clear_value == 0, "round %u: the job ran before the queued triangle", round);
+   }
+   uint64_t serial, parallel;
+   rast_get_job_counts(rc, &serial, &parallel);
+   CHECK(serial == 1 && parallel == 2, "job counts %llu on one thread, %llu on all",
+         (unsigned long long)serial, (unsigned long long)parallel);
+   rast_destroy(rc);
+}
+
 int main(void)
 {
    static struct scene scene;
@@ -182,6 +268,7 @@ int main(void)
    unsigned scenes = 0, parallel_scenes = 0;
    uint64_t range_events = 0;
    rng = 0x7e1f00d5eed5ull;
+   test_jobs();
 
    for (unsigned n = 0; n < 60; n++) {
       make_scene(&scene);
