@@ -101,6 +101,21 @@ struct result {
    unsigned threads_shading;
 };
 
+/* `shade` on every thread, each with its own context sctx[t]. */
+static void bind_shader(struct rast_context *rc, struct shade_ctx *sctx, unsigned threads)
+{
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof(fs));
+   fs.ctx = &sctx[0];
+   fs.shade = shade;
+   fs.num_outputs = 1;
+   for (unsigned t = 1; t < threads; t++) {
+      sctx[t].thread = t;
+      fs.thread_ctx[t] = &sctx[t];
+   }
+   rast_set_shader(rc, &fs);
+}
+
 static void draw_scene(const struct scene *s, unsigned threads, bool daz, unsigned interp,
                        struct result *res)
 {
@@ -127,16 +142,7 @@ static void draw_scene(const struct scene *s, unsigned threads, bool daz, unsign
    t_bind_rgba8_z24s8(rc, res->color, res->zs, W, H);
    t_layout_persp_color(rc);
 
-   struct rast_shader fs;
-   memset(&fs, 0, sizeof(fs));
-   fs.ctx = &sctx[0];
-   fs.shade = shade;
-   fs.num_outputs = 1;
-   for (unsigned t = 1; t < threads; t++) {
-      sctx[t].thread = t;
-      fs.thread_ctx[t] = &sctx[t];
-   }
-   rast_set_shader(rc, &fs);
+   bind_shader(rc, sctx, threads);
 
    t_depth_count_hits(rc, RAST_FUNC_LEQUAL);
 
@@ -215,14 +221,7 @@ static void test_jobs(void)
    memset(zs, 0xff, sizeof(zs));
    t_bind_rgba8_z24s8(rc, color, zs, W, H);
    t_layout_persp_color(rc);
-   struct rast_shader fs;
-   memset(&fs, 0, sizeof(fs));
-   fs.ctx = &sctx[0];
-   fs.shade = shade;
-   fs.num_outputs = 1;
-   for (unsigned t = 1; t < threads; t++)
-      fs.thread_ctx[t] = &sctx[t];
-   rast_set_shader(rc, &fs);
+   bind_shader(rc, sctx, threads);
    struct rast_blend_state bs;
    memset(&bs, 0, sizeof(bs));
    bs.rt[0] = (struct rast_blend_target){ false, RAST_BLEND_ADD, RAST_BLEND_ADD, RAST_BF_ONE,
