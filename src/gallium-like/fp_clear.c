@@ -13,10 +13,11 @@
 #include "fp_screen.h"
 
 /* A clear as large as this divides its rows between the model's threads
- * where they already run (rast_run_on_threads): each thread writes the
- * rows it is about to draw, from its own cache, and the fill of a
- * full-window target no longer waits on one core.  Smaller ones are not
- * worth waking the workers. */
+ * where they already run (rast_run_on_threads), in equal stretches from the
+ * top as the batches' stretches go: each thread writes about the rows it
+ * will draw, into its own cache, and the fill of a full-window target no
+ * longer waits on one core.  Smaller ones are not worth waking the
+ * workers. */
 #define FP_CLEAR_THREADED_PIXELS (64 * 1024)
 
 /* A mapped box filled by rows, as util_clear_render_target and
@@ -34,7 +35,7 @@ struct fill_job {
 
 static void fill_rows(void *arg, unsigned t, unsigned n)
 {
-   const struct fill_job *j = arg;
+   struct fill_job *j = arg;
    const unsigned y0 = (unsigned)((uint64_t)j->height * t / n);
    const unsigned y1 = (unsigned)((uint64_t)j->height * (t + 1) / n);
    if (y1 == y0)
@@ -44,7 +45,7 @@ static void fill_rows(void *arg, unsigned t, unsigned n)
                        j->stride, j->layer_stride, j->width, y1 - y0, j->layers, j->zstencil);
    else
       util_fill_box(j->map, j->format, j->stride, j->layer_stride, 0, y0, 0, j->width, y1 - y0,
-                    j->layers, (union util_color *)&j->color);
+                    j->layers, &j->color);
 }
 
 /* Whether a clear of ps's w x h box goes to the threads: a plain texture

@@ -227,11 +227,15 @@ static void test_jobs(void)
    bs.rt[0] = (struct rast_blend_target){ false, RAST_BLEND_ADD, RAST_BLEND_ADD, RAST_BF_ONE,
                                           RAST_BF_ZERO, RAST_BF_ONE, RAST_BF_ZERO, 0xf };
    rast_set_blend(rc, &bs);
-   make_vertex(v[0], -50, -50);
-   make_vertex(v[1], 2 * W + 50, -50);
-   make_vertex(v[2], -50, 2 * H + 50);
-   for (unsigned k = 0; k < 3; k++)
-      v[k][0][3] = v[k][1][3] = 1.0f;    /* w = 1, A/w in range: a plain colour */
+   /* a triangle over the whole target, w = 1, its colour (the shader's
+    * red and green from slot 1) 1.0: never the 0x40 the target is set to */
+   const float xy[3][2] = { { -50, -50 }, { 2 * W + 50, -50 }, { -50, 2 * H + 50 } };
+   for (unsigned k = 0; k < 3; k++) {
+      const float vert[SLOTS][4] = { { xy[k][0], xy[k][1], 0.5f, 1.0f },
+                                     { 1.0f, 1.0f, 0.0f, 0.0f },
+                                     { 1.0f, 1.0f, 1.0f, 1.0f } };
+      memcpy(v[k], vert, sizeof(vert));
+   }
 
    for (unsigned round = 0; round < 3; round++) {
       /* round 0: nothing drawn yet, the workers asleep: the caller alone;
