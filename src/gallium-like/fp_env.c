@@ -43,6 +43,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "the lanes' 256-bit instruction set where the CPU has AVX-512 (same bits)" },
    { "serialclear", FP_DEBUG_SERIALCLEAR,
      "large clears filled by the calling thread alone, not divided between the threads" },
+   { "nof32", FP_DEBUG_NOF32,
+     "the perspective division on binary64 lanes only, not four quads on binary32 lanes (same bits)" },
    DEBUG_NAMED_VALUE_END
 };
 
@@ -255,7 +257,8 @@ const struct fp_env_vectors *fp_env_vectors(void)
 unsigned fp_env_rast_options(void)
 {
    const unsigned d = fp_env_debug();
-   return (d & FP_DEBUG_SCALAR ? RAST_OPT_SCALAR : 0u) | (d & FP_DEBUG_NOSKIP ? RAST_OPT_NOSKIP : 0u);
+   return (d & FP_DEBUG_SCALAR ? RAST_OPT_SCALAR : 0u) | (d & FP_DEBUG_NOSKIP ? RAST_OPT_NOSKIP : 0u) |
+          (d & FP_DEBUG_NOF32 ? RAST_OPT_NOF32 : 0u);
 }
 
 /* The interpolator of Z and colour, and whether it is measured

@@ -134,6 +134,7 @@ struct fr_tex {
    double lv[1 + FR_MAX_COMP][3];       /* pl[] as the lanes hold them: v0, Δ1, Δ2 */
    double lrdet;
    bool skip;                           /* skips taken (not RAST_OPT_NOSKIP) */
+   bool f32;                            /* four quads on binary32 lanes first (not RAST_OPT_NOF32) */
    bool w_const;                        /* 1/w constant: w = recip(v0) once */
    bool w_one;                          /* and exactly 1: A · w is A */
    double lw;                           /* that w, as the lanes hold it */

@@ -482,6 +482,7 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
    }
    t->begin = tex_begin;
    t->skip = !(rc->opts & RAST_OPT_NOSKIP);
+   t->f32 = !(rc->opts & RAST_OPT_NOF32);
    t->w_const = t->w_one = false;
    t->lanes = !t->reference && !(rc->opts & RAST_OPT_SCALAR) && !t->any_color &&
               ns->dfx.mant_bits == DFX_MANT_BITS_SEED;

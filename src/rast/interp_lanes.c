@@ -170,6 +170,112 @@ static bool persp_optimistic(struct rast_front *fr, float *const *in, const dfxl
    }
 }
 
+#if DFXL_N == 8
+#include "fixed/dfx_lanes32.h"
+
+/* Four quads in one vector of binary32 lanes (dfx_lanes32.h), quad k in
+ * lanes 4k to 4k + 3: persp's operations in its order, optimistic only.
+ * The numerators enter the system on the binary64 lanes (they are integers
+ * up to 2^52), and a = from_fixed(·)·rdet too; their registers are
+ * binary32s exactly.  False, with nothing written, where a lane of either
+ * had a range event or a reciprocal of zero: the caller then divides the
+ * four quads on the binary64 lanes. */
+static inline __attribute__((always_inline)) void store16(__m512 v, float *const *in,
+                                                          unsigned off)
+{
+   _mm_storeu_ps(in[0] + off, _mm512_castps512_ps128(v));
+   _mm_storeu_ps(in[1] + off, _mm512_extractf32x4_ps(v, 1));
+   _mm_storeu_ps(in[2] + off, _mm512_extractf32x4_ps(v, 2));
+   _mm_storeu_ps(in[3] + off, _mm512_extractf32x4_ps(v, 3));
+}
+
+static inline __attribute__((always_inline)) bool
+persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_i bn[2],
+        const unsigned n)
+{
+   struct fr_tex *t = &fr->tex;
+   struct dfxl_stats st = DFXL_STATS(true);
+   struct dfxf_stats sf = dfxf_stats_init();
+   const struct dfxl rdet = splat(t->lrdet);
+   struct dfxl a2[2], b2[2];
+   for (unsigned k = 0; k < 2; k++) {
+      a2[k] = dfxl_mul(dfxl_from_fixed(an[k], (int)t->k, &st), rdet, &st);
+      b2[k] = dfxl_mul(dfxl_from_fixed(bn[k], (int)t->k, &st), rdet, &st);
+   }
+   const struct dfxf a = { _mm512_insertf32x8(_mm512_castps256_ps512(_mm512_cvtpd_ps(
+                                                 (__m512d)a2[0].v)),
+                                              _mm512_cvtpd_ps((__m512d)a2[1].v), 1) };
+   const struct dfxf b = { _mm512_insertf32x8(_mm512_castps256_ps512(_mm512_cvtpd_ps(
+                                                 (__m512d)b2[0].v)),
+                                              _mm512_cvtpd_ps((__m512d)b2[1].v), 1) };
+
+   struct dfxf v[1 + FR_MAX_COMP], u[1 + FR_MAX_COMP];
+   for (unsigned i = 0; i < n; i++)
+      v[i] = dfxf_term(a, dfxf_splat((float)t->lv[t->lidx[i]][1]), &sf);
+   for (unsigned i = 0; i < n; i++)
+      u[i] = dfxf_term(b, dfxf_splat((float)t->lv[t->lidx[i]][2]), &sf);
+   for (unsigned i = 0; i < n; i++)
+      v[i] = dfxf_add_terms(dfxf_splat((float)t->lv[t->lidx[i]][0]), v[i], &sf);
+   for (unsigned i = 0; i < n; i++)
+      v[i] = dfxf_add_terms(v[i], u[i], &sf);
+
+   const struct dfxf w = t->w_const ? dfxf_splat((float)t->lw) : dfxf_recip(v[0], &sf);
+   struct dfxf out[1 + FR_MAX_COMP], cout[FR_MAX_COMP];
+   for (unsigned i = t->w_const ? 0 : 1; i < n; i++)
+      out[i] = t->w_one ? v[i] : dfxf_mul(v[i], w, &sf);
+   if (!t->w_const)
+      for (unsigned i = 0; i < t->n_const; i++)
+         cout[i] = dfxf_mul(dfxf_splat((float)t->lv[t->cidx[i]][0]), w, &sf);
+   if (dfxl_any(dfxl_trouble(&st)) || dfxf_trouble(&sf))
+      return false;
+
+   for (unsigned i = t->w_const ? 0 : 1; i < n; i++)
+      store16(out[i].v, in, t->lout[i]);
+   for (unsigned i = 0; i < t->n_const; i++) {
+      if (t->w_const) {
+         for (unsigned k = 0; k < 4; k++)
+            _mm_storeu_ps(in[k] + t->cout[i], _mm_set1_ps(t->cval[i]));
+         continue;
+      }
+      store16(cout[i].v, in, t->cout[i]);
+   }
+   if (t->w_const) {
+      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * 4);
+      t->n_const_w += 4;
+   }
+   t->n_const_comp += t->n_const * 4;
+   dfxl_stats_add(&t->dst, st);
+   return true;
+}
+
+#define PERSP16_N(nn)                                                                         \
+   static bool persp16_##nn(struct rast_front *fr, float *const *in, const dfxl_i an[2],      \
+                            const dfxl_i bn[2])                                               \
+   {                                                                                          \
+      return persp16(fr, in, an, bn, nn);                                                     \
+   }
+PERSP16_N(1)
+PERSP16_N(2)
+PERSP16_N(3)
+PERSP16_N(4)
+PERSP16_N(5)
+PERSP16_N(6)
+
+static bool persp16_optimistic(struct rast_front *fr, float *const *in, const dfxl_i an[2],
+                               const dfxl_i bn[2])
+{
+   switch (fr->tex.ln) {
+   case 1: return persp16_1(fr, in, an, bn);
+   case 2: return persp16_2(fr, in, an, bn);
+   case 3: return persp16_3(fr, in, an, bn);
+   case 4: return persp16_4(fr, in, an, bn);
+   case 5: return persp16_5(fr, in, an, bn);
+   case 6: return persp16_6(fr, in, an, bn);
+   default: return persp16(fr, in, an, bn, fr->tex.ln);
+   }
+}
+#endif
+
 /* The lanes' numerators of quad q0 (a at the left pixel of both scan
  * lines, then b) and, with the 512-bit set, q1: each pixel pair the left
  * one and the registers' step right.  Built here as vectors: written as
@@ -211,6 +317,10 @@ static void divide(struct rast_front *fr, float *const *in, const dfxl_i an[2],
                    const dfxl_i bn[2], unsigned nq)
 {
    struct fr_tex *t = &fr->tex;
+#if DFXL_N == 8
+   if (nq == 4 && t->skip && t->f32 && persp16_optimistic(fr, in, an, bn))
+      return;
+#endif
    if (t->skip && persp_optimistic(fr, in, an, bn, nq))
       return;
    if (QPV == 2 || nq == 1) {

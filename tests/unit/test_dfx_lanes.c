@@ -295,6 +295,95 @@ static void test_from_fixed(void)
    BOTH_WAYS("from_fixed", dfx_from_fixed_i(F, fx, v[i], &wl), FROM_FIXED, NULL, beyond);
 }
 
+#if defined(__AVX512F__) && DFXL_N == 8
+#include "fixed/dfx_lanes32.h"
+
+/* dfx_lanes32.h: sixteen binary32 lanes, the optimistic way only.  A lane
+ * is marked only where the scalar path raised a range event (or divided
+ * by zero); an unmarked one has the scalar bits, +0 for zero, and the
+ * scalar path counted nothing for it. */
+static uint64_t n_checked32, n_marked32;
+
+static __m512 load32(const struct dfx a[16])
+{
+   float f[16];
+   for (int i = 0; i < 16; i++)
+      f[i] = (float)dfxl_value(a[i]);
+   return _mm512_loadu_ps(f);
+}
+
+static void check32(const char *op, const struct dfx want[16], const struct dfx_stats ev[16],
+                    struct dfxf r, struct dfxf_stats st)
+{
+   float got[16];
+   _mm512_storeu_ps(got, r.v);
+   const __mmask16 marked = dfxf_trouble(&st);
+   for (int i = 0; i < 16; i++) {
+      n_checked32++;
+      if (marked >> i & 1) {
+         n_marked32++;
+         CHECK(ev[i].sat || ev[i].flush, "%s (binary32) lane %d: marked without an event", op,
+               i);
+         continue;
+      }
+      const struct dfx g = dfxl_fields((double)got[i]);
+      uint32_t bits;
+      memcpy(&bits, &got[i], sizeof(bits));
+      CHECK(same(g, want[i]) && bits != 0x80000000u,
+            "%s (binary32) lane %d: got (%u,%u,%u) %a want (%u,%u,%u)", op, i, g.s, g.l, g.m,
+            (double)got[i], want[i].s, want[i].l, want[i].m);
+      CHECK(!ev[i].sat && !ev[i].flush, "%s (binary32) lane %d: an event not marked", op, i);
+   }
+}
+
+#define WAY32(name, scalar, lanes)                                                            \
+   do {                                                                                      \
+      struct dfx want[16];                                                                   \
+      struct dfx_stats ev[16];                                                               \
+      for (int i = 0; i < 16; i++) {                                                         \
+         struct dfx_stats wl = { 0, 0 };                                                     \
+         want[i] = scalar;                                                                   \
+         ev[i] = wl;                                                                         \
+      }                                                                                      \
+      struct dfxf_stats st = dfxf_stats_init();                                              \
+      const struct dfxf r = lanes;                                                           \
+      check32(name, want, ev, r, st);                                                        \
+   } while (0)
+
+static void test_binary32(void)
+{
+   struct dfx a[16], b[16], bs[16], v0[16], d1[16], p[16], d2[16];
+   const bool same_signs = rnd() & 1;
+   for (int i = 0; i < 16; i++) {
+      a[i] = rnd_dfx();
+      b[i] = rnd_near(a[i]);
+      bs[i] = b[i];
+      bs[i].s = a[i].s;
+      v0[i] = rnd_dfx();
+      d1[i] = rnd_near(v0[i]);
+      p[i] = rnd_dfx();
+      d2[i] = rnd_near(d1[i]);
+      if (same_signs) {
+         v0[i].s = a[i].s = p[i].s = d1[i].s = d2[i].s = 0;
+         if (!v0[i].m)
+            v0[i] = rnd_between(-32, 32, 0);
+      }
+   }
+   const struct dfxf A = { load32(a) }, B = { load32(b) }, BS = { load32(bs) },
+                     V0 = { load32(v0) }, D1 = { load32(d1) }, P = { load32(p) },
+                     D2 = { load32(d2) };
+   WAY32("add", dfx_add_i(F, a[i], b[i], &wl), dfxf_add(A, B, &st));
+   WAY32("add_terms", dfx_add_i(F, a[i], b[i], &wl), dfxf_add_terms(A, B, &st));
+   WAY32("add_terms (same sign)", dfx_add_i(F, a[i], bs[i], &wl), dfxf_add_terms(A, BS, &st));
+   WAY32("mul", dfx_mul_i(F, a[i], b[i], &wl), dfxf_mul(A, B, &st));
+   WAY32("recip", dfx_recip_i(F, a[i], &wl), dfxf_recip(A, &st));
+   /* a term alone keeps no upper bound (the sum it enters does) */
+   WAY32("plane sum", plane_i(v0[i], a[i], d1[i], p[i], d2[i], &wl),
+         dfxf_add_terms(dfxf_add_terms(V0, dfxf_term(A, D1, &st), &st), dfxf_term(P, D2, &st),
+                        &st));
+}
+#endif
+
 int main(void)
 {
 #if defined(__AVX512F__)
@@ -318,10 +407,18 @@ int main(void)
       test_from_fixed();
       test_tex_subtractions();
       test_plane_sums();
+#if defined(__AVX512F__) && DFXL_N == 8
+      test_binary32();
+#endif
    }
    printf("dfx_lanes (%s): %llu lane results compared with the scalar data paths, "
           "%llu optimistic lanes marked for the careful way\n", TEST_ISA,
           (unsigned long long)n_checked, (unsigned long long)n_marked);
    CHECK(n_marked > 100000, "too few range events to test the optimistic way");
+#if defined(__AVX512F__) && DFXL_N == 8
+   printf("dfx_lanes (%s): %llu binary32 lane results compared, %llu marked for the binary64 "
+          "lanes\n", TEST_ISA, (unsigned long long)n_checked32, (unsigned long long)n_marked32);
+   CHECK(n_marked32 > 100000, "too few range events to test the binary32 lanes");
+#endif
    return t_summary("dfx_lanes");
 }

@@ -35,6 +35,7 @@ static const struct { unsigned opts; int isa; unsigned group; } modes[] = {
    { 0, ISA_AVX512, 0 }, { RAST_OPT_NOSKIP, ISA_AVX512, 0 },
    { 0, ISA_AVX512, 4 }, { 0, ISA_AVX512, 2 }, { 0, ISA_AVX2, 4 }, { 0, ISA_AVX2, 2 },
    { 0, ISA_SSE2, 4 }, { RAST_OPT_NOSKIP, ISA_AVX512, 4 },
+   { RAST_OPT_NOF32, ISA_AVX512, 0 }, { RAST_OPT_NOF32, ISA_AVX512, 4 },
 };
 #define NPASS (1 + (int)(sizeof(modes) / sizeof(modes[0])))
 static float *rec[NPASS];
