@@ -381,6 +381,10 @@ static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, boo
       float *const in[4] = { &q->in[0][0][0], t->next[0], t->next[1], t->next[2] };
       rast_lanes()->persp4_dfx19(fr, in);
       t->pending = t->n_next = 3;
+   } else if (divide && ahead == 2 && rast_lanes()->persp3_dfx19 &&
+              rast_lanes()->persp3_dfx19(fr, (float *const[3]){ &q->in[0][0][0], t->next[0],
+                                                                 t->next[1] })) {
+      t->pending = t->n_next = 2;
    } else if (divide && ahead) {
       rast_lanes()->persp2_dfx19(fr, &q->in[0][0][0], t->next[0]);
       t->pending = t->n_next = 1;

@@ -191,7 +191,7 @@ static inline __attribute__((always_inline)) void store16(__m512 v, float *const
 
 static inline __attribute__((always_inline)) bool
 persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_i bn[2],
-        const unsigned n)
+        const unsigned n, unsigned nq)
 {
    struct fr_tex *t = &fr->tex;
    struct dfxl_stats st = DFXL_STATS(true);
@@ -240,19 +240,19 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
       store16(cout[i].v, in, t->cout[i]);
    }
    if (t->w_const) {
-      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * 4);
-      t->n_const_w += 4;
+      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
+      t->n_const_w += nq;
    }
-   t->n_const_comp += t->n_const * 4;
+   t->n_const_comp += t->n_const * nq;
    dfxl_stats_add(&t->dst, st);
    return true;
 }
 
 #define PERSP16_N(nn)                                                                         \
    static bool persp16_##nn(struct rast_front *fr, float *const *in, const dfxl_i an[2],      \
-                            const dfxl_i bn[2])                                               \
+                            const dfxl_i bn[2], unsigned nq)                                  \
    {                                                                                          \
-      return persp16(fr, in, an, bn, nn);                                                     \
+      return persp16(fr, in, an, bn, nn, nq);                                                 \
    }
 PERSP16_N(1)
 PERSP16_N(2)
@@ -261,17 +261,20 @@ PERSP16_N(4)
 PERSP16_N(5)
 PERSP16_N(6)
 
+/* nq = 4 quads, or 3 and a fourth that repeats the third (its numerators
+ * the same, so the same bounds: it marks nothing the third does not; its
+ * planes go to in[3], a scratch quad, and nothing of it is counted). */
 static bool persp16_optimistic(struct rast_front *fr, float *const *in, const dfxl_i an[2],
-                               const dfxl_i bn[2])
+                               const dfxl_i bn[2], unsigned nq)
 {
    switch (fr->tex.ln) {
-   case 1: return persp16_1(fr, in, an, bn);
-   case 2: return persp16_2(fr, in, an, bn);
-   case 3: return persp16_3(fr, in, an, bn);
-   case 4: return persp16_4(fr, in, an, bn);
-   case 5: return persp16_5(fr, in, an, bn);
-   case 6: return persp16_6(fr, in, an, bn);
-   default: return persp16(fr, in, an, bn, fr->tex.ln);
+   case 1: return persp16_1(fr, in, an, bn, nq);
+   case 2: return persp16_2(fr, in, an, bn, nq);
+   case 3: return persp16_3(fr, in, an, bn, nq);
+   case 4: return persp16_4(fr, in, an, bn, nq);
+   case 5: return persp16_5(fr, in, an, bn, nq);
+   case 6: return persp16_6(fr, in, an, bn, nq);
+   default: return persp16(fr, in, an, bn, fr->tex.ln, nq);
    }
 }
 #endif
@@ -318,7 +321,7 @@ static void divide(struct rast_front *fr, float *const *in, const dfxl_i an[2],
 {
    struct fr_tex *t = &fr->tex;
 #if DFXL_N == 8
-   if (nq == 4 && t->skip && t->f32 && persp16_optimistic(fr, in, an, bn))
+   if (nq == 4 && t->skip && t->f32 && persp16_optimistic(fr, in, an, bn, 4))
       return;
 #endif
    if (t->skip && persp_optimistic(fr, in, an, bn, nq))
@@ -352,6 +355,36 @@ void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1)
    divide(fr, in, an, bn, 2);
 }
 
+#if DFXL_N == 8
+/* Three quads on the binary32 lanes (the skips taken), the third's
+ * numerators q0..q2 repeated as a fourth quad's; false, with nothing
+ * written, where the binary64 lanes must divide them. */
+static bool three_f32(struct rast_front *fr, float *const in[3], const int64_t q0[4],
+                      const int64_t q1[4], const int64_t q2[4])
+{
+   struct fr_tex *t = &fr->tex;
+   if (!t->skip || !t->f32)
+      return false;
+   float scratch[RAST_MAX_VARYINGS * 4 * RAST_QUAD_SIZE];
+   float *const in4[4] = { in[0], in[1], in[2], scratch };
+   dfxl_i an[2], bn[2];
+   quad_numerators(t, q0, q1, &an[0], &bn[0]);
+   quad_numerators(t, q2, q2, &an[1], &bn[1]);
+   return persp16_optimistic(fr, in4, an, bn, 3);
+}
+
+/* Three quads of a row from the registers' (the row's last three). */
+bool LANES_FN(persp3_dfx19_lanes)(struct rast_front *fr, float *const in[3])
+{
+   const struct fr_tex *t = &fr->tex;
+   const int64_t a = 2 * t->a_dx, b = 2 * t->b_dx;
+   const int64_t q0[4] = { t->an[0], t->an[1], t->bn[0], t->bn[1] };
+   const int64_t q1[4] = { q0[0] + a, q0[1] + a, q0[2] + b, q0[3] + b };
+   const int64_t q2[4] = { q1[0] + a, q1[1] + a, q1[2] + b, q1[3] + b };
+   return three_f32(fr, in, q0, q1, q2);
+}
+#endif
+
 /* nq recorded quads in one call: 2 or 4 with the 512-bit set, 1 or 2
  * with the others. */
 static void persp_recorded(struct rast_front *fr, float *const *in, const int64_t (*num)[4],
@@ -374,6 +407,8 @@ void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
       persp_recorded(fr, in, num, 4);
       return;
    }
+   if (n == 3 && three_f32(fr, in, num[0], num[1], num[2]))
+      return;
    if (n >= 2) {
       persp_recorded(fr, in, num, 2);
       k = 2;

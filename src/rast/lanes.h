@@ -36,6 +36,11 @@ struct rast_lanes {
     * where one vector leaves the processor waiting on the division's long
     * chain of dependent operations. */
    void (*persp4_dfx19)(struct rast_front *fr, float *const in[4]);
+   /* The same for the last three quads of a row in one vector of binary32
+    * lanes (the 512-bit set only, fixed/dfx_lanes32.h), where
+    * RAST_OPT_NOF32 is not set; false, with nothing written, where the
+    * caller must divide them another way (a range event, or not set). */
+   bool (*persp3_dfx19)(struct rast_front *fr, float *const in[3]);
    /* The same, optimistic, for n quads (1 to RAST_GROUP_MAX) of one
     * primitive wherever they lie on its rows, from the numerators the span
     * processor recorded for each (num[k]: a at the left pixels of both
