@@ -6,7 +6,7 @@
  * trivial shader, and prints the CPU time and covered pixels per second.
  * No GL, no Mesa: rast.h only (docs/dfx.md, "Speed").
  *
- *   fp-bench-persp [--triangles N] [--components C] [--scalar] [SYSTEM ...]
+ *   fp-bench-persp [--triangles N] [--components C] [--scalar] [--nof32] [SYSTEM ...]
  *                                          (default: float dfx24 fx8.24 fx16.16)
  *
  * --components C: C PERSPECTIVE components (1 to 16, default 2) in vec4
@@ -14,6 +14,9 @@
  *
  * --scalar: the scalar reference datapath, nothing skipped (RAST_OPT_SCALAR,
  * RAST_OPT_NOSKIP; docs/datapath.md) instead of dfx24's lanes.
+ *
+ * --nof32: dfx24's division on binary64 lanes only (RAST_OPT_NOF32), where
+ * the AVX-512 set takes three or four quads on binary32 lanes.
  */
 #define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
@@ -137,8 +140,8 @@ int main(int argc, char **argv)
    /* the options, in any order, before the systems */
    for (; first < argc && !strncmp(argv[first], "-", 1); first++) {
       if (!strcmp(argv[first], "-h") || !strcmp(argv[first], "--help")) {
-         printf("usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [SYSTEM "
-                "...]  (%s)\n",
+         printf("usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [--nof32] "
+                "[SYSTEM ...]  (%s)\n",
                 numsys_names());
          return 0;
       } else if (!strcmp(argv[first], "--triangles") && first + 1 < argc) {
@@ -146,10 +149,12 @@ int main(int argc, char **argv)
       } else if (!strcmp(argv[first], "--components") && first + 1 < argc) {
          ncomp = atoi(argv[++first]);
       } else if (!strcmp(argv[first], "--scalar")) {
-         opts = RAST_OPT_SCALAR | RAST_OPT_NOSKIP;
+         opts |= RAST_OPT_SCALAR | RAST_OPT_NOSKIP;
+      } else if (!strcmp(argv[first], "--nof32")) {
+         opts |= RAST_OPT_NOF32;
       } else {
          fprintf(stderr, "fp-bench-persp: unknown option '%s' (accepted: --triangles N, "
-                 "--components C, --scalar, --help)\n", argv[first]);
+                 "--components C, --scalar, --nof32, --help)\n", argv[first]);
          return 2;
       }
    }
