@@ -59,6 +59,18 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
    to->flush += ev.flush * times;
 }
 
+/* What nq quads divided count: their lanes' events, and the events of the
+ * values computed once per primitive, for every pixel. */
+static inline void counted(struct fr_tex *t, struct dfxl_stats st, unsigned nq)
+{
+   if (t->w_const) {
+      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
+      t->n_const_w += nq;
+   }
+   t->n_const_comp += t->n_const * nq;
+   dfxl_stats_add(&t->dst, st);
+}
+
 /* `nq` quads (1, or 2 side by side on a row: their operations interleave,
  * each quad's chain of dependent operations being long and the two
  * independent; or one vector with both; or, 512-bit set, 4: two vectors
@@ -121,13 +133,7 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
    }
    if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
-   /* the events of the values computed once per primitive, for every pixel */
-   if (t->w_const) {
-      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
-      t->n_const_w += nq;
-   }
-   t->n_const_comp += t->n_const * nq;
-   dfxl_stats_add(&t->dst, st);
+   counted(t, st, nq);
    return true;
 }
 
@@ -239,12 +245,7 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
       }
       store16(cout[i].v, in, t->cout[i]);
    }
-   if (t->w_const) {
-      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
-      t->n_const_w += nq;
-   }
-   t->n_const_comp += t->n_const * nq;
-   dfxl_stats_add(&t->dst, st);
+   counted(t, st, nq);
    return true;
 }
 
@@ -320,9 +321,14 @@ static void divide(struct rast_front *fr, float *const *in, const dfxl_i an[2],
                    const dfxl_i bn[2], unsigned nq)
 {
    struct fr_tex *t = &fr->tex;
+   /* The binary32 lanes mark exactly what the binary64 ones would (the same
+    * bounds), and a reciprocal of zero: where they fail, the careful way. */
 #if DFXL_N == 8
-   if (nq == 4 && t->skip && t->f32 && persp16_optimistic(fr, in, an, bn, 4))
+   if (nq == 4 && t->skip && t->f32) {
+      if (!persp16_optimistic(fr, in, an, bn, 4))
+         persp(fr, in, an, bn, false, t->ln, nq);
       return;
+   }
 #endif
    if (t->skip && persp_optimistic(fr, in, an, bn, nq))
       return;
