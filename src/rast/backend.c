@@ -91,6 +91,14 @@ static inline unsigned shade_group(struct rast_context *rc, struct rast_backend 
       if (rc->fs.fetch_mask)
          fetch_targets(rc, be, &q[i]);
       rc->stats.pixels_shaded += rast_popcount4(m);
+      /* the colour stage's rows, on their way while the shader runs */
+      for (unsigned k = 0; k < be->ncbufs; k++) {
+         const struct rast_cbuf_plan *p = &be->cbuf[k];
+         const uint8_t *row = p->base + (ptrdiff_t)q[i].y * p->stride +
+                              (ptrdiff_t)q[i].x * (ptrdiff_t)p->cpp;
+         __builtin_prefetch(row, 1);
+         __builtin_prefetch(row + p->stride, 1);
+      }
    }
    unsigned got;
    if (nl >= 2)
@@ -150,13 +158,39 @@ static void quad_color(struct rast_context *rc, struct rast_quad *q)
       color_stage(be, &be->out[0], q->x, q->y, mask);
 }
 
-/* color_stage for a group, `kept` as shade_group returns it. */
+/* One colour buffer's stage for a group, `kept` as shade_group returns it:
+ * the quads with four pixels in the framebuffer on one vector where the
+ * plan has the group's function and two or more of them are drawn, the
+ * others each alone (a group's quads are of one primitive: no two share a
+ * pixel, so their order does not matter). */
+static inline void cbuf_stage_group(const struct rast_backend *be,
+                                    const struct rast_cbuf_plan *p, const struct rast_quad *q,
+                                    unsigned n, unsigned kept)
+{
+   unsigned which = 0;
+   if (p->group) {
+      for (unsigned i = 0; i < n; i++) {
+         const unsigned m = kept >> 4 * i & 15;
+         which |= (unsigned)(m && c8_lanes_ok(p, q[i].x, q[i].y, m)) << i;
+      }
+      if (which & (which - 1))
+         p->group(p, q, be->out, which, kept);
+      else
+         which = 0;
+   }
+   for (unsigned i = 0; i < n; i++) {
+      const unsigned m = kept >> 4 * i & 15;
+      if (m && !(which >> i & 1))
+         p->func(p, q[i].x, q[i].y, m, (chan_quad)be->out[i].color[p->src],
+                 (chan_quad)be->out[i].color[1]);
+   }
+}
+
 static inline void color_stage_group(const struct rast_backend *be, const struct rast_quad *q,
                                      unsigned n, unsigned kept)
 {
-   for (unsigned i = 0; i < n; i++)
-      if (kept >> 4 * i & 15)
-         color_stage(be, &be->out[i], q[i].x, q[i].y, kept >> 4 * i & 15);
+   for (unsigned k = 0; k < be->ncbufs; k++)
+      cbuf_stage_group(be, &be->cbuf[k], q, n, kept);
 }
 
 static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n)
@@ -184,6 +218,10 @@ static void group_color(struct rast_context *rc, struct rast_quad *q, unsigned n
       const unsigned kept = shade_group(rc, be, q, n, group_masks(q, n)); \
       rc->stats.samples_passed += rast_popcount16(kept); \
       const struct rast_cbuf_plan *p = &be->cbuf[0]; \
+      if (p->group) { \
+         cbuf_stage_group(be, p, q, n, kept); \
+         return; \
+      } \
       for (unsigned i = 0; i < n; i++) \
          c8_store_quad(p, q[i].x, q[i].y, kept >> 4 * i & 15, \
                           (chan_quad)be->out[i].color[p->src], R, G, B, A, X8); \

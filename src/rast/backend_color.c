@@ -424,6 +424,11 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
          p->func = blend ? gen_blend : gen_store;
          break;
       }
+      /* the affine blend and the full store, a group's quads on one vector */
+      const bool affine = p->func == c8_affine_RGBA8 || p->func == c8_affine_BGRA8 ||
+                          p->func == c8_affine_BGRX8;
+      if (p->quad4 && rast_lanes()->c8_group && (affine || p->fast8 != RAST_CL_GENERIC))
+         p->group = rast_lanes()->c8_group(layout, affine);
       for (unsigned c = 0; c < 4; c++)
          p->konst[c] = p->clamp ? clamp01(rc->blend_color[c]) : rc->blend_color[c];
    }

@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <string.h>
 #include "rast/rast_priv.h"
+#include "rast/lanes.h"
 
 /* A quad's depth in the depth buffer's own units: unorm for the integer
  * layouts, IEEE float for Z32F.  The same value serves the test and the
@@ -48,6 +49,8 @@ typedef void (*rast_color_func)(const struct rast_cbuf_plan *p, int x, int y,
 
 struct rast_cbuf_plan {
    rast_color_func func;
+   /* func for the quads of a group on one vector (lanes.h), or NULL */
+   rast_c8_group_fn group;
    uint8_t *base;                 /* the sample drawn (rast_backend_sample) */
    uint8_t *base0;                /* sample 0, the single-sampled target */
    size_t sample_stride;

@@ -16,28 +16,34 @@ typedef float v4f __attribute__((vector_size(16)));
 typedef int32_t v4i __attribute__((vector_size(16)));
 typedef uint32_t v4u __attribute__((vector_size(16)));
 
-static inline v4f splat4(float v)
-{
-   return (v4f){ v, v, v, v };
-}
+/* The per-pixel conversions on N lanes (vf, vi, vu: N floats, int32s,
+ * uint32s): splatN, clamp01_N (rast_clamp01), f2ubN (rast_f2ub, in the
+ * low byte), ub2fN (rast_ub2f of each word's byte).  Four lanes here, a
+ * quad; sixteen in backend_lanes.c, a group of four quads. */
+#define C8_LANE_OPS(N, vf, vi, vu)                                                            \
+   static inline vf splat##N(float v)           /* v's bits in every lane (-0 too) */        \
+   {                                                                                          \
+      int32_t bits;                                                                           \
+      memcpy(&bits, &v, sizeof(bits));                                                        \
+      return (vf)((vi){ 0 } + bits);                                                          \
+   }                                                                                          \
+   static inline vf clamp01_##N(vf v)                                                        \
+   {                                                                                          \
+      v = (vf)((vi)v & (v > splat##N(0.0f)));          /* NaN and -0 to +0 */                 \
+      const vi below = v < splat##N(1.0f);                                                    \
+      return (vf)(((vi)v & below) | ((vi)splat##N(1.0f) & ~below));                          \
+   }                                                                                          \
+   static inline vu f2ub##N(vf f)                                                            \
+   {                                                                                          \
+      return (vu)(clamp01_##N(f) * splat##N(255.0f / 256.0f) + splat##N(32768.0f)) & 0xff;  \
+   }                                                                                          \
+   static inline vf ub2f##N(vu words, unsigned byte)                                         \
+   {                                                                                          \
+      return __builtin_convertvector((vi)((words >> (8 * byte)) & 0xff), vf) *               \
+             splat##N(1.0f / 255.0f);                                                         \
+   }
 
-static inline v4f clamp01_4(v4f v)                  /* rast_clamp01 */
-{
-   v = (v4f)((v4i)v & (v > splat4(0.0f)));          /* NaN and -0 to +0 */
-   const v4i below = v < splat4(1.0f);
-   return (v4f)(((v4i)v & below) | ((v4i)splat4(1.0f) & ~below));
-}
-
-static inline v4u f2ub4(v4f f)                      /* rast_f2ub, in the low byte */
-{
-   return (v4u)(clamp01_4(f) * splat4(255.0f / 256.0f) + splat4(32768.0f)) & 0xff;
-}
-
-static inline v4f ub2f4(v4u words, unsigned byte)   /* rast_ub2f of each word's byte */
-{
-   return __builtin_convertvector((v4i)((words >> (8 * byte)) & 0xff), v4f) *
-          splat4(1.0f / 255.0f);
-}
+C8_LANE_OPS(4, v4f, v4i, v4u)
 
 /* The quad's two rows of two words. */
 static inline v4u c8_load4(const struct rast_cbuf_plan *p, int x, int y)

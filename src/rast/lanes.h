@@ -15,6 +15,16 @@
 #include "rast/tex.h"
 
 struct rast_front;
+struct rast_cbuf_plan;
+
+/* The 8-bit colour stage of the quads of a group in `which` (bit i: q[i])
+ * on one vector of sixteen lanes (backend_lanes.c): quad i at (q[i].x,
+ * q[i].y), its pixels in bits 4i to 4i + 3 of `masks`, its colour
+ * out[i].color[p->src].  Every quad in `which` has its four pixels in the
+ * framebuffer (c8_lanes.h's c8_lanes_ok). */
+typedef void (*rast_c8_group_fn)(const struct rast_cbuf_plan *p, const struct rast_quad *q,
+                                 const struct rast_shaded_quad *out, unsigned which,
+                                 unsigned masks);
 
 /* The PERSPECTIVE components a primitive can have (front.h's FR_MAX_COMP). */
 #define RAST_PLANES_MAX (RAST_MAX_VARYINGS * 4)
@@ -70,6 +80,11 @@ struct rast_lanes {
    /* the most quads tex_dfx19_2d's functions take in one call: 4 where
     * it has four-quad functions, else 2 */
    unsigned tex_group;
+   /* The colour stage of a group for an 8-bit layout: the affine blend
+    * (`blend`, rast_cbuf_plan.affine) or the plain store of every channel;
+    * NULL for other layouts, and outside the 512-bit set (sixteen lanes
+    * there are as many vectors as the four quads' own). */
+   rast_c8_group_fn (*c8_group)(enum rast_color_layout layout, bool blend);
 };
 
 #define LANES_GLUE2(a, b) a##b

@@ -14,6 +14,7 @@ bool LANES_FN(planes_dfx19_lanes)(const float *const vtx[3], unsigned p0, unsign
                                   int64_t det, unsigned k, double (*lv)[3], double *lrdet);
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
                                         tex_quad2_fn *pair, tex_quad4_fn *four);
+rast_c8_group_fn LANES_FN(c8_group_lanes)(enum rast_color_layout layout, bool blend);
 
 /* The AVX2 set's, which the 512-bit one takes for a lone quad. */
 void persp_dfx19_lanes_avx2(struct rast_front *fr, struct rast_quad *q);

@@ -14,6 +14,7 @@
 #include "rast/rast.h"
 #include "rast/rast_priv.h"
 #include "rast/backend_priv.h"
+#include "rast/lanes.h"
 
 #if !defined(__SIZEOF_INT128__)
 #error "the reference depth conversion uses unsigned __int128"
@@ -1093,11 +1094,63 @@ static float rnd_special(void)
    return rnd(4) ? rndf(-0.25f, 1.25f) : special[rnd(sizeof(special) / sizeof(special[0]))];
 }
 
+/* Blend combination `combo` of the affine set: factors ZERO, ONE,
+ * SRC_ALPHA, INV_SRC_ALPHA for rgb src, rgb dst, alpha src, alpha dst, two
+ * bits each; 256: no blending. */
+static const struct rast_blend_target *affine_state(unsigned combo, struct rast_blend_state *bs)
+{
+   static const enum rast_blend_factor fac[] = { RAST_BF_ZERO, RAST_BF_ONE, RAST_BF_SRC_ALPHA,
+                                                 RAST_BF_INV_SRC_ALPHA };
+   memset(bs, 0, sizeof *bs);
+   struct rast_blend_target *bt = &bs->rt[0];
+   bt->blend_enable = combo < 256;
+   bt->colormask = 0xf;
+   bt->rgb_eq = bt->alpha_eq = RAST_BLEND_ADD;
+   bt->rgb_src = fac[combo & 3];
+   bt->rgb_dst = fac[(combo >> 2) & 3];
+   bt->alpha_src = fac[(combo >> 4) & 3];
+   bt->alpha_dst = fac[(combo >> 6) & 3];
+   return bt;
+}
+
+static unsigned shade_group_src(void *ctx, const struct rast_quad *const q[],
+                                struct rast_shaded_quad *const out[], unsigned n);
+
+/* Two contexts on one target of format f, w x h, with blend state bs: the
+ * lanes (rc[0]) and the per-pixel loop (rc[1], RAST_OPT_SCALAR), their
+ * targets the same random bytes; `groups`: the shader has its wide form
+ * (shade_group_src), so the back end takes groups of quads. */
+static void lanes_and_scalar(struct rast_context *rc[2], struct color_ctx cc[2], enum tfmt f,
+                             const struct rast_blend_state *bs, unsigned w, unsigned h,
+                             bool groups)
+{
+   for (unsigned m = 0; m < 2; m++) {
+      rc[m] = rast_create(profile_named("seed"));
+      rast_set_options(rc[m], m ? RAST_OPT_SCALAR : 0);
+      memset(&cc[m].sd, 0, sizeof cc[m].sd);
+      cc[m].sd.keep = 0xf;
+      struct rast_framebuffer fb;
+      memset(&fb, 0, sizeof fb);
+      fb.width = w; fb.height = h; fb.nr_cbufs = 1;
+      fb.cbuf[0] = cc[m].t[0] = make_cbuf(f, cc[m].mem[0]);
+      rast_set_framebuffer(rc[m], &fb);
+      rast_set_blend(rc[m], bs);
+      struct rast_shader fs = make_shader(&cc[m].sd, 1, false, false, false);
+      if (groups) {
+         fs.shade_n = shade_group_src;
+         fs.group = RAST_GROUP_MAX;
+      }
+      rast_set_shader(rc[m], &fs);
+      rast_validate(rc[m]);
+      CHECK(!groups || rc[m]->quads != NULL, "a shader with a wide form takes groups");
+   }
+   color_fill_random(&cc[0], 0, f);
+   memcpy(cc[1].mem[0], cc[0].mem[0], CBUF_BYTES);
+}
+
 static void test_affine_lanes(void)
 {
    static struct color_ctx cc[2];
-   static const enum rast_blend_factor fac[] = { RAST_BF_ZERO, RAST_BF_ONE, RAST_BF_SRC_ALPHA,
-                                                 RAST_BF_INV_SRC_ALPHA };
    const unsigned before = failures;
    unsigned quads = 0;
    for (unsigned fi = 0; fi < 3; fi++) {
@@ -1105,32 +1158,8 @@ static void test_affine_lanes(void)
       for (unsigned combo = 0; combo <= 256; combo++) {   /* 256: no blending */
          struct rast_context *rc[2];
          struct rast_blend_state bs;
-         memset(&bs, 0, sizeof bs);
-         struct rast_blend_target *bt = &bs.rt[0];
-         bt->blend_enable = combo < 256;
-         bt->colormask = 0xf;
-         bt->rgb_eq = bt->alpha_eq = RAST_BLEND_ADD;
-         bt->rgb_src = fac[combo & 3];
-         bt->rgb_dst = fac[(combo >> 2) & 3];
-         bt->alpha_src = fac[(combo >> 4) & 3];
-         bt->alpha_dst = fac[(combo >> 6) & 3];
-         for (unsigned m = 0; m < 2; m++) {
-            rc[m] = rast_create(profile_named("seed"));
-            rast_set_options(rc[m], m ? RAST_OPT_SCALAR : 0);
-            memset(&cc[m].sd, 0, sizeof cc[m].sd);
-            cc[m].sd.keep = 0xf;
-            struct rast_framebuffer fb;
-            memset(&fb, 0, sizeof fb);
-            fb.width = W; fb.height = H; fb.nr_cbufs = 1;
-            fb.cbuf[0] = cc[m].t[0] = make_cbuf(f, cc[m].mem[0]);
-            rast_set_framebuffer(rc[m], &fb);
-            rast_set_blend(rc[m], &bs);
-            struct rast_shader fs = make_shader(&cc[m].sd, 1, false, false, false);
-            rast_set_shader(rc[m], &fs);
-            rast_validate(rc[m]);
-         }
-         color_fill_random(&cc[0], 0, f);
-         memcpy(cc[1].mem[0], cc[0].mem[0], CBUF_BYTES);
+         const struct rast_blend_target *bt = affine_state(combo, &bs);
+         lanes_and_scalar(rc, cc, f, &bs, W, H, false);
          for (unsigned rep = 0; rep < 64; rep++) {
             struct rast_quad q;
             memset(&q, 0, sizeof q);
@@ -1155,6 +1184,95 @@ static void test_affine_lanes(void)
    }
    printf("affine blend and store on lanes: %u quads against the scalar loop: %s\n", quads,
           failures == before ? "ok" : "FAILED");
+}
+
+/* The same blends and the store on a group's quads in one call
+ * (rast_context.quads, the shader's wide form): on the 512-bit set the
+ * group's quads go through one vector of sixteen lanes (backend_lanes.c),
+ * against the per-pixel loop (RAST_OPT_SCALAR) given the same groups.  A
+ * group holds 1 to 4 quads at different places with their own colours,
+ * full and partial masks; the framebuffer is 15 x 11, so that quads on its
+ * right and bottom edges have pixels outside and take the per-quad way
+ * beside the others of their group. */
+static float group_src[W / 2][H / 2][4][RAST_QUAD_SIZE];
+static unsigned group_calls;
+
+static unsigned shade_group_src(void *ctx, const struct rast_quad *const q[],
+                                struct rast_shaded_quad *const out[], unsigned n)
+{
+   (void)ctx;
+   unsigned kept = 0;
+   group_calls++;
+   for (unsigned i = 0; i < n; i++) {
+      memcpy(out[i]->color[0], group_src[q[i]->x / 2][q[i]->y / 2], sizeof(out[i]->color[0]));
+      kept |= q[i]->mask << 4 * i;
+   }
+   return kept;
+}
+
+static void test_affine_groups(void)
+{
+   static struct color_ctx cc[2];
+   const int fw = W - 1, fh = H - 1;
+   const unsigned before = failures;
+   unsigned groups = 0, multi = 0;    /* multi: of two quads or more, one call of the wide form */
+   group_calls = 0;
+   for (unsigned fi = 0; fi < 3; fi++) {
+      const enum tfmt f = (enum tfmt)fi;         /* RGBA8, BGRA8, BGRX8 */
+      for (unsigned combo = 0; combo <= 256; combo++) {   /* 256: no blending */
+         struct rast_context *rc[2];
+         struct rast_blend_state bs;
+         const struct rast_blend_target *bt = affine_state(combo, &bs);
+         lanes_and_scalar(rc, cc, f, &bs, (unsigned)fw, (unsigned)fh, true);
+         for (unsigned rep = 0; rep < 48; rep++) {
+            struct rast_quad q[RAST_GROUP_MAX];
+            bool used[W / 2][H / 2];
+            memset(used, 0, sizeof used);
+            memset(q, 0, sizeof q);
+            const unsigned want = 1 + rnd(RAST_GROUP_MAX);
+            unsigned n = 0;
+            while (n < want) {
+               const unsigned qx = rnd(W / 2), qy = rnd(H / 2);
+               if (used[qx][qy])
+                  continue;
+               used[qx][qy] = true;
+               unsigned mask = rnd(3) ? 0xf : 1 + rnd(15);
+               if (2 * (int)qx + 1 >= fw)
+                  mask &= 0x5;                   /* the right column is outside */
+               if (2 * (int)qy + 1 >= fh)
+                  mask &= 0x3;                   /* the bottom row is outside */
+               if (!mask)
+                  continue;
+               q[n].x = 2 * (int)qx;
+               q[n].y = 2 * (int)qy;
+               q[n].mask = mask;
+               for (unsigned c = 0; c < 4; c++)
+                  for (unsigned i = 0; i < 4; i++)
+                     group_src[qx][qy][c][i] = rnd_special();
+               n++;
+            }
+            for (unsigned m = 0; m < 2; m++) {
+               struct rast_quad qm[RAST_GROUP_MAX];
+               memcpy(qm, q, sizeof q);
+               rc[m]->quads(rc[m], qm, n);
+            }
+            groups++;
+            multi += n > 1;
+         }
+         CHECK(memcmp(cc[0].mem[0], cc[1].mem[0], CBUF_BYTES) == 0,
+               "%s %s src %u/%u dst %u/%u: groups on lanes and scalar differ", tfmt_name[f],
+               combo < 256 ? "affine blend" : "store", bt->rgb_src, bt->alpha_src, bt->rgb_dst,
+               bt->alpha_dst);
+         rast_destroy(rc[0]);
+         rast_destroy(rc[1]);
+      }
+   }
+   CHECK(group_calls == 2 * multi && multi > groups / 2,
+         "every group of two quads or more was shaded in one call (%u of %u)", group_calls,
+         2 * multi);
+   printf("affine blend and store on groups (%s set%s): %u groups against the scalar loop: %s\n",
+          rast_lanes()->isa, rast_lanes()->c8_group(RAST_CL_RGBA8, true) ? ", sixteen lanes" : "",
+          groups, failures == before ? "ok" : "FAILED");
 }
 
 /* Colour mask, with and without blending, on every format. */
@@ -1646,6 +1764,7 @@ int main(void)
    test_ubyte();
    test_blend();
    test_affine_lanes();
+   test_affine_groups();
    test_colormask();
    test_color_routing();
    test_no_shader();
