@@ -419,20 +419,18 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
    return true;
 }
 
-/* Quads a call (docs/jit.md): four (sixteen lanes) where the shader
- * samples a texture and the texture unit has its four-quad functions (the
- * 512-bit lanes: their two vectors of pairs overlap a sample's long chain
- * of latencies), two otherwise (a shader without a texture gains nothing
- * from sixteen lanes, and a primitive's last group would leave more of
- * them idle); one with noskip. */
-static unsigned fp_jit_quads_a_call(const struct tgsi_shader_info *info)
+/* Quads a call (docs/jit.md): four (sixteen lanes) where the datapath's
+ * lanes are the 512-bit set, whose texture unit takes four quads in one
+ * call (two vectors of pairs overlap a sample's long chain of latencies)
+ * and whose perspective division takes four quads in one vector of
+ * binary32 lanes, the group the shader is called with being the group the
+ * division takes (interp.c); two otherwise; one with noskip. */
+static unsigned fp_jit_quads_a_call(void)
 {
    const unsigned debug = fp_env_debug();
    if (debug & FP_DEBUG_NOSKIP)
       return 1;
-   if ((info->file_count[TGSI_FILE_SAMPLER] > 0 || info->file_count[TGSI_FILE_SAMPLER_VIEW] > 0) &&
-       !(debug & FP_DEBUG_SCALAR) &&
-       rast_lanes()->tex_group == 4)
+   if (!(debug & FP_DEBUG_SCALAR) && rast_lanes()->tex_group == 4)
       return 4;
    return 2;
 }
@@ -478,7 +476,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    struct fp_jit_variant *v = CALLOC_STRUCT(fp_jit_variant);
    if (!v)
       return NULL;
-   v->quads = fp_jit_quads_a_call(info);
+   v->quads = fp_jit_quads_a_call();
 
    /* tgsi_to_nir takes the NIR options and the final passes from the
     * screen: give it gallivm's (the screen's own are for st's NIR-to-TGSI
