@@ -40,8 +40,10 @@ static inline __m128i rows_of(const struct rast_cbuf_plan *p, const struct rast_
    if (!drawn)
       return _mm_setzero_si128();
    const uint8_t *row = quad_row(p, q);
-   return _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)row),
-                             _mm_loadl_epi64((const __m128i *)(const void *)(row + p->stride)));
+   uint64_t r0, r1;
+   memcpy(&r0, row, 8);
+   memcpy(&r1, row + p->stride, 8);
+   return _mm_set_epi64x((long long)r1, (long long)r0);
 }
 
 static inline v16u load16(const struct rast_cbuf_plan *p, const struct rast_quad *q,
@@ -58,8 +60,10 @@ static inline void store_rows(const struct rast_cbuf_plan *p, const struct rast_
                               __m128i rows)
 {
    uint8_t *row = quad_row(p, q);
-   _mm_storel_epi64((__m128i *)(void *)row, rows);
-   _mm_storeh_pd((double *)(void *)(row + p->stride), _mm_castsi128_pd(rows));
+   const uint64_t r0 = (uint64_t)_mm_cvtsi128_si64(rows),
+                  r1 = (uint64_t)_mm_extract_epi64(rows, 1);
+   memcpy(row, &r0, 8);               /* a row is 4-byte aligned only */
+   memcpy(row + p->stride, &r1, 8);
 }
 
 static inline void store16(const struct rast_cbuf_plan *p, const struct rast_quad *q,
