@@ -1148,40 +1148,57 @@ static void lanes_and_scalar(struct rast_context *rc[2], struct color_ctx cc[2],
    memcpy(cc[1].mem[0], cc[0].mem[0], CBUF_BYTES);
 }
 
-static void test_affine_lanes(void)
+/* Every 8-bit format and combination of the affine set (and the unblended
+ * store), the lanes (rc[0]) against the per-pixel loop (rc[1]): `reps`
+ * draws of `draw` into both on a w x h target, then the buffers compared.
+ * `groups`: the shader has its wide form.  Returns the draws. */
+typedef void (*affine_draw_fn)(struct rast_context *rc[2], struct color_ctx cc[2]);
+
+static unsigned affine_lanes_vs_scalar(affine_draw_fn draw, unsigned reps, unsigned w,
+                                       unsigned h, bool groups)
 {
    static struct color_ctx cc[2];
-   const unsigned before = failures;
-   unsigned quads = 0;
+   unsigned draws = 0;
    for (unsigned fi = 0; fi < 3; fi++) {
       const enum tfmt f = (enum tfmt)fi;         /* RGBA8, BGRA8, BGRX8 */
       for (unsigned combo = 0; combo <= 256; combo++) {   /* 256: no blending */
          struct rast_context *rc[2];
          struct rast_blend_state bs;
          const struct rast_blend_target *bt = affine_state(combo, &bs);
-         lanes_and_scalar(rc, cc, f, &bs, W, H, false);
-         for (unsigned rep = 0; rep < 64; rep++) {
-            struct rast_quad q;
-            memset(&q, 0, sizeof q);
-            q.x = 2 * (int)rnd(W / 2);
-            q.y = 2 * (int)rnd(H / 2);
-            q.mask = rnd(4) ? 0xf : 1 + rnd(15);
-            for (unsigned c = 0; c < 4; c++)
-               for (unsigned i = 0; i < 4; i++)
-                  cc[0].sd.color[0][c][i] = rnd_special();
-            cc[1].sd = cc[0].sd;
-            rc[0]->quad(rc[0], &q);
-            rc[1]->quad(rc[1], &q);
-            quads++;
-         }
+         lanes_and_scalar(rc, cc, f, &bs, w, h, groups);
+         for (unsigned rep = 0; rep < reps; rep++, draws++)
+            draw(rc, cc);
          CHECK(memcmp(cc[0].mem[0], cc[1].mem[0], CBUF_BYTES) == 0,
-               "%s %s src %u/%u dst %u/%u: lanes and scalar differ", tfmt_name[f],
+               "%s %s src %u/%u dst %u/%u: %s on lanes and scalar differ", tfmt_name[f],
                combo < 256 ? "affine blend" : "store", bt->rgb_src, bt->alpha_src, bt->rgb_dst,
-               bt->alpha_dst);
+               bt->alpha_dst, groups ? "groups" : "quads");
          rast_destroy(rc[0]);
          rast_destroy(rc[1]);
       }
    }
+   return draws;
+}
+
+/* One quad at a random place of the W x H target, full or partial. */
+static void draw_quad(struct rast_context *rc[2], struct color_ctx cc[2])
+{
+   struct rast_quad q;
+   memset(&q, 0, sizeof q);
+   q.x = 2 * (int)rnd(W / 2);
+   q.y = 2 * (int)rnd(H / 2);
+   q.mask = rnd(4) ? 0xf : 1 + rnd(15);
+   for (unsigned c = 0; c < 4; c++)
+      for (unsigned i = 0; i < 4; i++)
+         cc[0].sd.color[0][c][i] = rnd_special();
+   cc[1].sd = cc[0].sd;
+   rc[0]->quad(rc[0], &q);
+   rc[1]->quad(rc[1], &q);
+}
+
+static void test_affine_lanes(void)
+{
+   const unsigned before = failures;
+   const unsigned quads = affine_lanes_vs_scalar(draw_quad, 64, W, H, false);
    printf("affine blend and store on lanes: %u quads against the scalar loop: %s\n", quads,
           failures == before ? "ok" : "FAILED");
 }
@@ -1195,7 +1212,7 @@ static void test_affine_lanes(void)
  * right and bottom edges have pixels outside and take the per-quad way
  * beside the others of their group. */
 static float group_src[W / 2][H / 2][4][RAST_QUAD_SIZE];
-static unsigned group_calls;
+static unsigned group_calls, group_multi;   /* multi: groups of two quads or more */
 
 static unsigned shade_group_src(void *ctx, const struct rast_quad *const q[],
                                 struct rast_shaded_quad *const out[], unsigned n)
@@ -1210,66 +1227,53 @@ static unsigned shade_group_src(void *ctx, const struct rast_quad *const q[],
    return kept;
 }
 
+/* A group of 1 to 4 quads at different places of the 15 x 11 target. */
+static void draw_group(struct rast_context *rc[2], struct color_ctx cc[2])
+{
+   const int fw = W - 1, fh = H - 1;
+   (void)cc;
+   struct rast_quad q[RAST_GROUP_MAX];
+   bool used[W / 2][H / 2];
+   memset(used, 0, sizeof used);
+   memset(q, 0, sizeof q);
+   const unsigned want = 1 + rnd(RAST_GROUP_MAX);
+   unsigned n = 0;
+   while (n < want) {
+      const unsigned qx = rnd(W / 2), qy = rnd(H / 2);
+      if (used[qx][qy])
+         continue;
+      used[qx][qy] = true;
+      unsigned mask = rnd(3) ? 0xf : 1 + rnd(15);
+      if (2 * (int)qx + 1 >= fw)
+         mask &= 0x5;                   /* the right column is outside */
+      if (2 * (int)qy + 1 >= fh)
+         mask &= 0x3;                   /* the bottom row is outside */
+      if (!mask)
+         continue;
+      q[n].x = 2 * (int)qx;
+      q[n].y = 2 * (int)qy;
+      q[n].mask = mask;
+      for (unsigned c = 0; c < 4; c++)
+         for (unsigned i = 0; i < 4; i++)
+            group_src[qx][qy][c][i] = rnd_special();
+      n++;
+   }
+   for (unsigned m = 0; m < 2; m++) {
+      struct rast_quad qm[RAST_GROUP_MAX];
+      memcpy(qm, q, sizeof q);
+      rc[m]->quads(rc[m], qm, n);
+   }
+   group_multi += n > 1;
+}
+
 static void test_affine_groups(void)
 {
-   static struct color_ctx cc[2];
-   const int fw = W - 1, fh = H - 1;
    const unsigned before = failures;
-   unsigned groups = 0, multi = 0;    /* multi: of two quads or more, one call of the wide form */
-   group_calls = 0;
-   for (unsigned fi = 0; fi < 3; fi++) {
-      const enum tfmt f = (enum tfmt)fi;         /* RGBA8, BGRA8, BGRX8 */
-      for (unsigned combo = 0; combo <= 256; combo++) {   /* 256: no blending */
-         struct rast_context *rc[2];
-         struct rast_blend_state bs;
-         const struct rast_blend_target *bt = affine_state(combo, &bs);
-         lanes_and_scalar(rc, cc, f, &bs, (unsigned)fw, (unsigned)fh, true);
-         for (unsigned rep = 0; rep < 48; rep++) {
-            struct rast_quad q[RAST_GROUP_MAX];
-            bool used[W / 2][H / 2];
-            memset(used, 0, sizeof used);
-            memset(q, 0, sizeof q);
-            const unsigned want = 1 + rnd(RAST_GROUP_MAX);
-            unsigned n = 0;
-            while (n < want) {
-               const unsigned qx = rnd(W / 2), qy = rnd(H / 2);
-               if (used[qx][qy])
-                  continue;
-               used[qx][qy] = true;
-               unsigned mask = rnd(3) ? 0xf : 1 + rnd(15);
-               if (2 * (int)qx + 1 >= fw)
-                  mask &= 0x5;                   /* the right column is outside */
-               if (2 * (int)qy + 1 >= fh)
-                  mask &= 0x3;                   /* the bottom row is outside */
-               if (!mask)
-                  continue;
-               q[n].x = 2 * (int)qx;
-               q[n].y = 2 * (int)qy;
-               q[n].mask = mask;
-               for (unsigned c = 0; c < 4; c++)
-                  for (unsigned i = 0; i < 4; i++)
-                     group_src[qx][qy][c][i] = rnd_special();
-               n++;
-            }
-            for (unsigned m = 0; m < 2; m++) {
-               struct rast_quad qm[RAST_GROUP_MAX];
-               memcpy(qm, q, sizeof q);
-               rc[m]->quads(rc[m], qm, n);
-            }
-            groups++;
-            multi += n > 1;
-         }
-         CHECK(memcmp(cc[0].mem[0], cc[1].mem[0], CBUF_BYTES) == 0,
-               "%s %s src %u/%u dst %u/%u: groups on lanes and scalar differ", tfmt_name[f],
-               combo < 256 ? "affine blend" : "store", bt->rgb_src, bt->alpha_src, bt->rgb_dst,
-               bt->alpha_dst);
-         rast_destroy(rc[0]);
-         rast_destroy(rc[1]);
-      }
-   }
-   CHECK(group_calls == 2 * multi && multi > groups / 2,
+   group_calls = group_multi = 0;
+   const unsigned groups = affine_lanes_vs_scalar(draw_group, 48, W - 1, H - 1, true);
+   CHECK(group_calls == 2 * group_multi && group_multi > groups / 2,
          "every group of two quads or more was shaded in one call (%u of %u)", group_calls,
-         2 * multi);
+         2 * group_multi);
    printf("affine blend and store on groups (%s set%s): %u groups against the scalar loop: %s\n",
           rast_lanes()->isa, rast_lanes()->c8_group(RAST_CL_RGBA8, true) ? ", sixteen lanes" : "",
           groups, failures == before ? "ok" : "FAILED");
