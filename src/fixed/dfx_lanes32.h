@@ -167,6 +167,42 @@ DFXF_INLINE struct dfxf dfxf_add_terms(struct dfxf a, struct dfxf b, struct dfxf
    return dfxf_add(a, b, st);
 }
 
+/* dfxl_from_fixed for the sixteen numerators v0 (lanes 0-7) and v1 (8-15),
+ * fixed point with k fraction bits: the magnitude rounded half up to its
+ * digit's grid (the aligner's rounding), then truncated to the grid of the
+ * digit that reached.  The conversion toward zero keeps the numerator's top
+ * 24 bits, T; the exact value is T + r with r below T's last bit, and T's
+ * half step is a whole number of those bits, so T + half and the exact
+ * value + half lie between the same two grid points and in the same
+ * binade (a carry into the next power of two truncates to that power
+ * either way: the next digit's step is larger than the half step).  The
+ * binary64 lanes mark numerators from 2^52 on, where their conversion is
+ * not exact; so do these, for the same lanes.  A half step below the
+ * binary32 range is left out: such a value is far below 2^-32, and marked. */
+DFXF_INLINE struct dfxf dfxf_from_fixed(__m512i v0, __m512i v1, int k, struct dfxf_stats *st)
+{
+   const __m512 t = _mm512_insertf32x8(
+      _mm512_castps256_ps512(_mm512_cvt_roundepi64_ps(v0, DFXF_RZ)),
+      _mm512_cvt_roundepi64_ps(v1, DFXF_RZ), 1);
+   const __mmask16 big = _mm512_cmp_ps_mask(dfxf_abs(t), _mm512_set1_ps(0x1p52f), _CMP_GE_OQ);
+   st->hi = _mm512_mask_blend_ps(big, st->hi, _mm512_set1_ps(__builtin_inff()));
+   /* 2^-k exactly: k is 1 to 62 (det·2^-k in [1/2, 1)) */
+   const __m512 x = _mm512_mul_ps(t, _mm512_castsi512_ps(_mm512_set1_epi32((127 - k) << 23)));
+   const __m512i xi = _mm512_castps_si512(x);
+   const __m512i e = _mm512_and_si512(_mm512_srli_epi32(xi, 23), _mm512_set1_epi32(255));
+   /* the half step's biased exponent: e - 16 - (e + 1) mod 4 */
+   const __m512i he = _mm512_sub_epi32(
+      _mm512_sub_epi32(e, _mm512_set1_epi32(16)),
+      _mm512_and_si512(_mm512_add_epi32(e, _mm512_set1_epi32(1)), _mm512_set1_epi32(3)));
+   const __mmask16 has_half =
+      _mm512_cmpgt_epi32_mask(he, _mm512_setzero_si512()) &
+      _mm512_cmpneq_epi32_mask(_mm512_andnot_si512(_mm512_set1_epi32(INT32_MIN), xi),
+                               _mm512_setzero_si512());
+   const __m512i half = _mm512_maskz_or_epi32(
+      has_half, _mm512_slli_epi32(he, 23), _mm512_and_si512(xi, _mm512_set1_epi32(INT32_MIN)));
+   return dfxf_round(_mm512_add_round_ps(x, _mm512_castsi512_ps(half), DFXF_RZ), st, true, true);
+}
+
 /* dfxl_recip: the quotient truncated.  1/0, which saturates and is
  * counted, marks the lane for the binary64 lanes instead. */
 DFXF_INLINE struct dfxf dfxf_recip(struct dfxf a, struct dfxf_stats *st)

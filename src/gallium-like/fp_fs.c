@@ -14,6 +14,9 @@
  * machine and Inputs[] are filled from rast_quad.in per quad.
  */
 #include <string.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "util/u_memory.h"
 #include "tgsi/tgsi_exec.h"
@@ -106,6 +109,23 @@ static const int32_t fp_quad_lanes[16][RAST_QUAD_SIZE] = {
 };
 #undef FP_LANES
 
+/* The pixels a quad's lanes keep (a lane is nonzero where kept): one
+ * vector compare, where per-lane loads would each wait for the compiled
+ * code's vector store of the lanes to be forwarded. */
+static inline unsigned fp_lanes_mask(const int32_t lanes[RAST_QUAD_SIZE])
+{
+#ifdef __SSE2__
+   const __m128i v = _mm_loadu_si128((const __m128i *)lanes);
+   return ~(unsigned)_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, _mm_setzero_si128()))) &
+          15u;
+#else
+   unsigned m = 0;
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+      m |= (unsigned)(lanes[p] != 0) << p;
+   return m;
+#endif
+}
+
 /* The compiled function on the n quads q[i] of a primitive, their outputs
  * to out[i] (n up to the variant's quads a call: one call of the eight- or
  * sixteen-lane code).  The code's other quads are q[0] again with every
@@ -130,12 +150,8 @@ static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
    v->func(&th->jit_ctx, qs, outs, &lanes[0][0]);
    th->quads_jit += n;
    unsigned kept = 0;
-   for (unsigned k = 0; k < n; k++) {
-      unsigned m = 0;
-      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
-         m |= (unsigned)(lanes[k][p] != 0) << p;
-      kept |= (m & q[k]->mask) << 4 * k;
-   }
+   for (unsigned k = 0; k < n; k++)
+      kept |= (fp_lanes_mask(lanes[k]) & q[k]->mask) << 4 * k;
    return kept;
 }
 

@@ -147,6 +147,13 @@ struct fr_tex {
    unsigned ln;
    uint8_t lidx[1 + FR_MAX_COMP];
    uint16_t lout[1 + FR_MAX_COMP];
+   /* which of those planes' two terms (a·Δ1 bit 0, b·Δ2 bit 1) have a
+    * nonzero difference (FR_TERM_*); a zero one is left out, and how many
+    * are: the lanes' skip of a plane that follows one edge */
+   uint8_t lterm[1 + FR_MAX_COMP];
+#define FR_TERM_A 1u
+#define FR_TERM_B 2u
+   unsigned n_zero_terms;
    /* the constant components (A/w constant) likewise, and with w constant
     * their values */
    unsigned n_const;
@@ -154,6 +161,7 @@ struct fr_tex {
    uint16_t cout[FR_MAX_COMP];
    float cval[FR_MAX_COMP];
    uint64_t n_const_w, n_const_comp;    /* moved to rast_stats per quad row */
+   uint64_t n_zero_terms_quads;         /* the same: terms left out, per quad */
    uint64_t n_divided;                  /* quads divided, the same */
    /* the lanes' quads in pairs or fours: the next quads' planes, divided
     * with this one's, wait in `next` (rast_quad.in's layout, the planes'

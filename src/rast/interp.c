@@ -183,6 +183,7 @@ static void lanes_skips_setup(struct rast_front *fr)
    t->n_const = 0;
    if (!t->w_const)
       t->lidx[t->ln++] = 0;
+   t->n_zero_terms = 0;
    for (unsigned j = 0; j < fr->npersp; j++) {
       const uint16_t out = (uint16_t)(&fr->quad[0].in[fr->persp[j].var][fr->persp[j].chan][0] -
                                       &fr->quad[0].in[0][0][0]);
@@ -196,6 +197,19 @@ static void lanes_skips_setup(struct rast_front *fr)
                                                                    &t->const_ev));
       t->cout[t->n_const] = out;
       t->cidx[t->n_const++] = (uint8_t)(1 + j);
+   }
+   /* A plane with one zero difference (a 2-D window's texture coordinate
+    * along an edge that follows its axis): a·0 and b·0 are zero registers,
+    * and the adder returns the other operand unchanged, neither with a
+    * range event, so the term is left out. */
+   for (unsigned i = 0; i < t->ln; i++) {
+      const struct fr_plane *p = &t->pl[t->lidx[i]];
+      t->lterm[i] = FR_TERM_A | FR_TERM_B;
+      if (t->skip) {
+         t->lterm[i] =
+            (uint8_t)((p->d1.d.m ? FR_TERM_A : 0u) | (p->d2.d.m ? FR_TERM_B : 0u));
+         t->n_zero_terms += (p->d1.d.m == 0) + (p->d2.d.m == 0);
+      }
    }
 }
 
@@ -540,9 +554,10 @@ static inline void tex_end(struct rast_context *rc, struct rast_front *fr)
    t->st.sat = t->st.flush = t->dst.sat = t->dst.flush = 0;
    rc->stats.skip_persp_w += t->n_const_w;
    rc->stats.skip_persp_comp += t->n_const_comp;
+   rc->stats.skip_persp_terms += t->n_zero_terms_quads;
    rc->stats.persp_quads += t->n_divided;
    rc->stats.persp_comp_quads += t->n_divided * fr->npersp;
-   t->n_const_w = t->n_const_comp = t->n_divided = 0;
+   t->n_const_w = t->n_const_comp = t->n_zero_terms_quads = t->n_divided = 0;
 }
 
 static inline unsigned span_bits(const struct fr_row *r, int64_t x)
@@ -771,6 +786,9 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
    const int qy = (int)(y + rc->org_y);
    q->y = qy;
 
+   /* counted when the row is done: the shader and the back end called in
+    * between would make the compiler store each count every quad */
+   uint64_t covered = 0, pixels = 0;
    for (int64_t x = xq; x <= xe; x += 2) {
       unsigned mask = span_bits(r0, x) | (span_bits(r1, x) << 2);
 
@@ -845,16 +863,12 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
                ahead++;
          fr->tex.quad(fr, q, mask != 0, ahead);
       }
-      if (has_persp)
-         fr->tex.n_divided += mask != 0;
       if (!mask)
          continue;
       q->x = (int)(x + rc->org_x);
       q->mask = mask;
-      rc->stats.quads++;
-      rc->stats.skip_fragcoord += !fragcoord;
-      rc->stats.skip_z += !has_z;
-      rc->stats.pixels_covered += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
+      covered++;
+      pixels += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
       if (!rc->quads) {
          rc->quad(rc, q);
       } else if (++fr->npending < rc->fs.group) {
@@ -869,8 +883,14 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
          q->y = qy;
       }
    }
-   if (has_persp)
+   rc->stats.quads += covered;
+   rc->stats.skip_fragcoord += fragcoord ? 0 : covered;
+   rc->stats.skip_z += has_z ? 0 : covered;
+   rc->stats.pixels_covered += pixels;
+   if (has_persp) {
+      fr->tex.n_divided += covered;
       tex_end(rc, fr);
+   }
 }
 
 #define PAIR_VARIANT(name, z, c, l, p)                                     \

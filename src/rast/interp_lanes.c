@@ -68,6 +68,7 @@ static inline void counted(struct fr_tex *t, struct dfxl_stats st, unsigned nq)
       t->n_const_w += nq;
    }
    t->n_const_comp += t->n_const * nq;
+   t->n_zero_terms_quads += t->n_zero_terms * nq;
    dfxl_stats_add(&t->dst, st);
 }
 
@@ -95,19 +96,25 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
       b[k] = dfxl_mul(dfxl_from_fixed(bn[k], (int)t->k, &st), rdet, &st);
 
    struct dfxl v[2][1 + FR_MAX_COMP], u[2][1 + FR_MAX_COMP];
-   /* v0 + a·Δ1 + b·Δ2, one bound an operation (dfxl_add_terms) */
+   /* v0 + a·Δ1 + b·Δ2, one bound an operation (dfxl_add_terms); a term
+    * whose difference is zero is left out (t->lterm) */
+   for (unsigned i = 0; i < n; i++)
+      if (t->lterm[i] & FR_TERM_A)
+         for (unsigned k = 0; k < nv; k++)
+            v[k][i] = dfxl_term(a[k], splat(t->lv[t->lidx[i]][1]), &st);
+   for (unsigned i = 0; i < n; i++)
+      if (t->lterm[i] & FR_TERM_B)
+         for (unsigned k = 0; k < nv; k++)
+            u[k][i] = dfxl_term(b[k], splat(t->lv[t->lidx[i]][2]), &st);
    for (unsigned i = 0; i < n; i++)
       for (unsigned k = 0; k < nv; k++)
-         v[k][i] = dfxl_term(a[k], splat(t->lv[t->lidx[i]][1]), &st);
+         v[k][i] = t->lterm[i] & FR_TERM_A
+                      ? dfxl_add_terms(splat(t->lv[t->lidx[i]][0]), v[k][i], &st)
+                      : splat(t->lv[t->lidx[i]][0]);
    for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nv; k++)
-         u[k][i] = dfxl_term(b[k], splat(t->lv[t->lidx[i]][2]), &st);
-   for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nv; k++)
-         v[k][i] = dfxl_add_terms(splat(t->lv[t->lidx[i]][0]), v[k][i], &st);
-   for (unsigned i = 0; i < n; i++)
-      for (unsigned k = 0; k < nv; k++)
-         v[k][i] = dfxl_add_terms(v[k][i], u[k][i], &st);
+      if (t->lterm[i] & FR_TERM_B)
+         for (unsigned k = 0; k < nv; k++)
+            v[k][i] = dfxl_add_terms(v[k][i], u[k][i], &st);
 
    struct dfxl w[2];
    unsigned first = 0;
@@ -180,12 +187,11 @@ static bool persp_optimistic(struct rast_front *fr, float *const *in, const dfxl
 #include "fixed/dfx_lanes32.h"
 
 /* Four quads in one vector of binary32 lanes (dfx_lanes32.h), quad k in
- * lanes 4k to 4k + 3: persp's operations in its order, optimistic only.
- * The numerators enter the system on the binary64 lanes (they are integers
- * up to 2^52), and a = from_fixed(·)·rdet too; their registers are
- * binary32s exactly.  False, with nothing written, where a lane of either
- * had a range event or a reciprocal of zero: the caller then divides the
- * four quads on the binary64 lanes. */
+ * lanes 4k to 4k + 3: persp's operations in its order, optimistic only,
+ * from the numerators' entry into the system (dfxf_from_fixed: integers up
+ * to 2^52, whose top 24 bits decide the register) on.  False, with nothing
+ * written, where a lane had a range event or a reciprocal of zero: the
+ * caller then divides the four quads on the binary64 lanes. */
 static inline __attribute__((always_inline)) void store16(__m512 v, float *const *in,
                                                           unsigned off)
 {
@@ -200,30 +206,28 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
         const unsigned n, unsigned nq)
 {
    struct fr_tex *t = &fr->tex;
-   struct dfxl_stats st = DFXL_STATS(true);
+   const struct dfxl_stats st = DFXL_STATS(true);     /* nothing on binary64 lanes */
    struct dfxf_stats sf = dfxf_stats_init();
-   const struct dfxl rdet = splat(t->lrdet);
-   struct dfxl a2[2], b2[2];
-   for (unsigned k = 0; k < 2; k++) {
-      a2[k] = dfxl_mul(dfxl_from_fixed(an[k], (int)t->k, &st), rdet, &st);
-      b2[k] = dfxl_mul(dfxl_from_fixed(bn[k], (int)t->k, &st), rdet, &st);
-   }
-   const struct dfxf a = { _mm512_insertf32x8(_mm512_castps256_ps512(_mm512_cvtpd_ps(
-                                                 (__m512d)a2[0].v)),
-                                              _mm512_cvtpd_ps((__m512d)a2[1].v), 1) };
-   const struct dfxf b = { _mm512_insertf32x8(_mm512_castps256_ps512(_mm512_cvtpd_ps(
-                                                 (__m512d)b2[0].v)),
-                                              _mm512_cvtpd_ps((__m512d)b2[1].v), 1) };
+   const struct dfxf rdet = dfxf_splat((float)t->lrdet);
+   const struct dfxf a = dfxf_mul(dfxf_from_fixed((__m512i)an[0], (__m512i)an[1], (int)t->k,
+                                                  &sf), rdet, &sf);
+   const struct dfxf b = dfxf_mul(dfxf_from_fixed((__m512i)bn[0], (__m512i)bn[1], (int)t->k,
+                                                  &sf), rdet, &sf);
 
    struct dfxf v[1 + FR_MAX_COMP], u[1 + FR_MAX_COMP];
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxf_term(a, dfxf_splat((float)t->lv[t->lidx[i]][1]), &sf);
+      if (t->lterm[i] & FR_TERM_A)
+         v[i] = dfxf_term(a, dfxf_splat((float)t->lv[t->lidx[i]][1]), &sf);
    for (unsigned i = 0; i < n; i++)
-      u[i] = dfxf_term(b, dfxf_splat((float)t->lv[t->lidx[i]][2]), &sf);
+      if (t->lterm[i] & FR_TERM_B)
+         u[i] = dfxf_term(b, dfxf_splat((float)t->lv[t->lidx[i]][2]), &sf);
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxf_add_terms(dfxf_splat((float)t->lv[t->lidx[i]][0]), v[i], &sf);
+      v[i] = t->lterm[i] & FR_TERM_A
+                ? dfxf_add_terms(dfxf_splat((float)t->lv[t->lidx[i]][0]), v[i], &sf)
+                : dfxf_splat((float)t->lv[t->lidx[i]][0]);
    for (unsigned i = 0; i < n; i++)
-      v[i] = dfxf_add_terms(v[i], u[i], &sf);
+      if (t->lterm[i] & FR_TERM_B)
+         v[i] = dfxf_add_terms(v[i], u[i], &sf);
 
    const struct dfxf w = t->w_const ? dfxf_splat((float)t->lw) : dfxf_recip(v[0], &sf);
    struct dfxf out[1 + FR_MAX_COMP], cout[FR_MAX_COMP];
@@ -232,7 +236,7 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
    if (!t->w_const)
       for (unsigned i = 0; i < t->n_const; i++)
          cout[i] = dfxf_mul(dfxf_splat((float)t->lv[t->cidx[i]][0]), w, &sf);
-   if (dfxl_any(dfxl_trouble(&st)) || dfxf_trouble(&sf))
+   if (dfxf_trouble(&sf))
       return false;
 
    for (unsigned i = t->w_const ? 0 : 1; i < n; i++)

@@ -368,6 +368,7 @@ struct rast_stats {
     * quads whose 1/w is constant (one reciprocal per primitive), and
     * component-quads whose A/w is constant (no plane evaluated). */
    uint64_t skip_persp_w, skip_persp_comp;
+   uint64_t skip_persp_terms;          /* plane terms with a zero difference left out, per quad */
    /* texture quads sampled without computing their LOD, which the sampler
     * cannot use (tex_unit_lod_unused) */
    uint64_t skip_tex_lod;

@@ -269,21 +269,26 @@ static void test_tex_subtractions(void)
    CHECK(!loads.sat && !loads.flush, "the offset and the floors are not exact registers");
 }
 
-/* Numerators as the perspective division makes them: any sign, up to
- * 2^60, with k (the determinant's length) 1..60. */
+/* A numerator as the perspective division makes one: any sign, up to 2^60. */
+static int64_t rnd_numerator(void)
+{
+   const unsigned bits = (unsigned)(rnd() % 61);
+   int64_t x = bits ? (int64_t)(rnd() >> (64 - bits)) : 0;
+   if (rnd() % 8 == 0)
+      x = (int64_t)1 << (rnd() % 60);                 /* a power of two */
+   if (rnd() % 8 == 0)
+      x |= (int64_t)((1ull << (rnd() % 40)) - 1);     /* rounding carries */
+   return rnd() & 1 ? -x : x;
+}
+
+/* Numerators with k (the determinant's length) 1..60. */
 static void test_from_fixed(void)
 {
    int64_t v[DFXL_N];
    struct dfx want[DFXL_N], in[DFXL_N];
    const int k = 1 + (int)(rnd() % 60);
    for (int i = 0; i < DFXL_N; i++) {
-      const unsigned bits = (unsigned)(rnd() % 61);
-      int64_t x = bits ? (int64_t)(rnd() >> (64 - bits)) : 0;
-      if (rnd() % 8 == 0)
-         x = (int64_t)1 << (rnd() % 60);                 /* a power of two */
-      if (rnd() % 8 == 0)
-         x |= (int64_t)((1ull << (rnd() % 40)) - 1);     /* rounding carries */
-      v[i] = rnd() & 1 ? -x : x;
+      v[i] = rnd_numerator();
       in[i] = dfx_zero();
    }
    const struct fx_format fx = { 0, (uint8_t)k };
@@ -350,6 +355,46 @@ static void check32(const char *op, const struct dfx want[16], const struct dfx_
       check32(name, want, ev, r, st);                                                        \
    } while (0)
 
+/* dfxf_from_fixed on test_from_fixed's numerators: besides the lanes with
+ * an event, it may mark those from 2^52 on, as the binary64 lanes do. */
+static void test_from_fixed32(void)
+{
+   int64_t v[16];
+   struct dfx want[16];
+   struct dfx_stats ev[16];
+   const int k = 1 + (int)(rnd() % 60);
+   const struct fx_format fx = { 0, (uint8_t)k };
+   for (int i = 0; i < 16; i++) {
+      v[i] = rnd_numerator();
+      struct dfx_stats wl = { 0, 0 };
+      want[i] = dfx_from_fixed_i(F, fx, v[i], &wl);
+      ev[i] = wl;
+   }
+   struct dfxf_stats st = dfxf_stats_init();
+   const struct dfxf r = dfxf_from_fixed(_mm512_loadu_si512(v), _mm512_loadu_si512(v + 8), k, &st);
+   float got[16];
+   _mm512_storeu_ps(got, r.v);
+   const __mmask16 marked = dfxf_trouble(&st);
+   for (int i = 0; i < 16; i++) {
+      const bool beyond = v[i] >= (int64_t)1 << 52 || v[i] <= -((int64_t)1 << 52);
+      n_checked32++;
+      if (marked >> i & 1) {
+         n_marked32++;
+         CHECK(ev[i].sat || ev[i].flush || beyond,
+               "from_fixed (binary32) lane %d: %lld marked without an event", i, (long long)v[i]);
+         continue;
+      }
+      const struct dfx g = dfxl_fields((double)got[i]);
+      uint32_t bits;
+      memcpy(&bits, &got[i], sizeof(bits));
+      CHECK(same(g, want[i]) && bits != 0x80000000u,
+            "from_fixed (binary32) lane %d: %lld, k %d: got (%u,%u,%u) %a want (%u,%u,%u)", i,
+            (long long)v[i], k, g.s, g.l, g.m, (double)got[i], want[i].s, want[i].l, want[i].m);
+      CHECK(!ev[i].sat && !ev[i].flush, "from_fixed (binary32) lane %d: an event not marked",
+            i);
+   }
+}
+
 static void test_binary32(void)
 {
    struct dfx a[16], b[16], bs[16], v0[16], d1[16], p[16], d2[16];
@@ -409,6 +454,7 @@ int main(void)
       test_plane_sums();
 #if defined(__AVX512F__) && DFXL_N == 8
       test_binary32();
+      test_from_fixed32();
 #endif
    }
    printf("dfx_lanes (%s): %llu lane results compared with the scalar data paths, "

@@ -12,7 +12,8 @@
  * (lanes.h: dfx24 on the default path, every instruction set the CPU
  * runs), with and without the skips, and through RAST_OPT_SCALAR; some
  * primitives have a constant 1/w (sometimes 1) and constant components,
- * so that the skips are taken.  Some passes shade groups of two or four
+ * and some a 1/w or components equal at two vertices (one difference of
+ * the plane zero where V0 is one of them), so that the skips are taken.  Some passes shade groups of two or four
  * quads (rast_shader.shade_n), where the lanes divide a group's quads
  * together wherever they lie on the primitive's rows. */
 #include <math.h>
@@ -40,7 +41,7 @@ static const struct { unsigned opts; int isa; unsigned group; } modes[] = {
 #define NPASS (1 + (int)(sizeof(modes) / sizeof(modes[0])))
 static float *rec[NPASS];
 static size_t nrec[NPASS];
-static uint64_t skipped_w, skipped_comp;
+static uint64_t skipped_w, skipped_comp, skipped_terms;
 static int pass;
 static bool avx2, avx512;
 static uint64_t quads, helpers, values;
@@ -151,9 +152,17 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
          v[k][0][3] = (float)(1.0 / (0.5 * pow(wmax, t_rand())));
          if (shape < 0.3)
             v[k][0][3] = shape < 0.15 ? 1.0f : v[0][0][3];
+         /* 2-D content along one edge: two vertices share a value (1/w
+          * here, components 2 and 3 below), so that one of a plane's
+          * differences is zero wherever V0 is one of the two */
+         else if (shape < 0.4 && k == 1)
+            v[k][0][3] = v[0][0][3];
          for (unsigned s = 1; s <= vl.num_varyings; s++)
             for (int c = 0; c < 4; c++)
-               v[k][s][c] = shape < 0.5 && c == 1 ? v[0][s][c] : rnd_attr();
+               v[k][s][c] = shape < 0.5 && c == 1                ? v[0][s][c]
+                            : shape < 0.7 && c == 2 && k == 1     ? v[0][s][c]
+                            : shape < 0.7 && c == 3 && k == 2     ? v[1][s][c]
+                                                                  : rnd_attr();
       }
       bool line = t_rand() < 0.1;
       uint64_t e[NPASS];
@@ -195,6 +204,7 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
    }
    skipped_w += rast_get_stats(t.rc)->skip_persp_w;
    skipped_comp += rast_get_stats(t.rc)->skip_persp_comp;
+   skipped_terms += rast_get_stats(t.rc)->skip_persp_terms;
    t_fini(&t);
    printf("%-5s %-6s %u primitives: %llu differ; range events %llu sat, %llu flush\n",
           profile, texfmt, nprim, (unsigned long long)bad,
@@ -226,9 +236,12 @@ int main(void)
           (unsigned long long)helpers, (unsigned long long)values);
    CHECK(quads > 10000 && helpers > 1000, "the primitives covered quads with helpers");
    CHECK((ev & 0xffffffffu) > 0 || (ev >> 32) > 0, "range events were exercised");
-   printf("skips taken: %llu quads with a constant 1/w, %llu constant component-quads\n",
-          (unsigned long long)skipped_w, (unsigned long long)skipped_comp);
-   CHECK(skipped_w > 1000 && skipped_comp > 1000, "the skips were exercised");
+   printf("skips taken: %llu quads with a constant 1/w, %llu constant component-quads, "
+          "%llu plane terms with a zero difference (per quad)\n",
+          (unsigned long long)skipped_w, (unsigned long long)skipped_comp,
+          (unsigned long long)skipped_terms);
+   CHECK(skipped_w > 1000 && skipped_comp > 1000 && skipped_terms > 1000,
+         "the skips were exercised");
    printf("%llu calls of a group of quads\n", (unsigned long long)group_calls);
    CHECK(group_calls > 10000, "groups of quads were shaded");
    for (int p = 0; p < NPASS; p++)
