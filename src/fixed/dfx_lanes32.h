@@ -101,7 +101,11 @@ DFXF_INLINE __m512 dfxf_to_grid(__m512 x)
 DFXF_INLINE struct dfxf dfxf_round(__m512 x, struct dfxf_stats *st, bool hi, bool lo)
 {
    const __m512 ax = dfxf_abs(x);
-   if (hi)
+   /* the larger magnitude, its sign cleared: max(|x|, hi) in one operation
+    * where |x| is not needed for the lower bound */
+   if (hi && !lo)
+      st->hi = _mm512_range_ps(x, st->hi, 0x0b);
+   else if (hi)
       st->hi = _mm512_max_ps(ax, st->hi);
    if (lo)
       st->lo = _mm512_min_ps(
@@ -123,10 +127,13 @@ DFXF_INLINE struct dfxf dfxf_mul(struct dfxf a, struct dfxf b, struct dfxf_stats
    return dfxf_round(dfxf_product(a.v, b.v), st, true, true);
 }
 
-/* dfxl_term: a product as a term of dfxf_add_terms, which bounds it above */
+/* dfxl_term: a product as a term of dfxf_add_terms, which bounds it above.
+ * A -0 is left as it is: the sum it enters gives what +0 would (a zero
+ * addend of either sign leaves the other operand, and +0 + -0 is +0 when
+ * rounding toward zero), through dfxf_add where the signs differ. */
 DFXF_INLINE struct dfxf dfxf_term(struct dfxf a, struct dfxf b, struct dfxf_stats *st)
 {
-   return dfxf_round(dfxf_product(a.v, b.v), st, false, true);
+   return dfxf_round(_mm512_mul_round_ps(a.v, b.v, DFXF_RZ), st, false, true);
 }
 
 /* dfxl_add: order by magnitude; the smaller cut to the guard digit's grid

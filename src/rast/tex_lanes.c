@@ -350,6 +350,16 @@ soa_channel(const struct tex_unit *u, taps_i words, bool border, taps_i out, uns
    return (taps_f)(((taps_i)bv & out) | ((taps_i)v & ~out));
 }
 
+/* A result channel that is one value at every tap (a swizzle's 0 or 1, an
+ * RGBX texture's alpha) where no tap can be the border: the filter gives
+ * that value itself (a + f (a - a) is a, f >= 0), so it is not decoded or
+ * filtered.  Decided by the unit's state, the same for every call. */
+static inline __attribute__((always_inline)) bool
+constant_channel(const struct tex_unit *u, bool border, unsigned ch)
+{
+   return !border && u->lanes_ch[ch].mask == 0;
+}
+
 /* lerp4 per element: a + f (b - a), f the weight over TEX_WEIGHT_ONE. */
 static inline __attribute__((always_inline)) lanes_f weights(lanes_i w)
 {
@@ -370,7 +380,8 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
       taps_i o;
       const taps_i w = gather(lv, soa_offsets(lv, TWICE(A->i0), TWICE(B->i0), z, border, &o));
       for (unsigned ch = 0; ch < 4; ch++)
-         out[ch] = LO(soa_channel(u, w, border, o, ch));
+         out[ch] = constant_channel(u, border, ch) ? (lanes_f){ 0 } + u->lanes_ch[ch].add
+                                                   : LO(soa_channel(u, w, border, o, ch));
       return;
    }
    /* taps (i0, j0) and (i0, j1) in one vector, (i1, j0) and (i1, j1) in the other */
@@ -381,6 +392,10 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
    const lanes_f fa = weights(A->w), fb = weights(B->w);
    const taps_f fa2 = TWICE(fa);
    for (unsigned ch = 0; ch < 4; ch++) {
+      if (constant_channel(u, border, ch)) {
+         out[ch] = (lanes_f){ 0 } + u->lanes_ch[ch].add;
+         continue;
+      }
       const taps_f t0 = soa_channel(u, w0, border, o0, ch),
                    t1 = soa_channel(u, w1, border, o1, ch);
       const taps_f e = t0 + fa2 * (t1 - t0);
