@@ -163,6 +163,24 @@ static bool plane_is_const(const struct fr_plane *p)
    return !p->d1.d.m && !p->d2.d.m;
 }
 
+/* Plane `idx` into the planes the lanes evaluate per pixel, its output at
+ * float offset `out`, with the terms it has.  A plane with one zero
+ * difference (a 2-D window's texture coordinate along an edge that follows
+ * its axis) leaves that term out: a·0 and b·0 are zero registers, and the
+ * adder returns the other operand unchanged, neither with a range event. */
+static void lanes_plane(struct fr_tex *t, unsigned idx, uint16_t out)
+{
+   const struct fr_plane *p = &t->pl[idx];
+   const unsigned i = t->ln++;
+   t->lidx[i] = (uint8_t)idx;
+   t->lout[i] = out;
+   t->lterm[i] = FR_TERM_A | FR_TERM_B;
+   if (t->skip) {
+      t->lterm[i] = (uint8_t)((p->d1.d.m ? FR_TERM_A : 0u) | (p->d2.d.m ? FR_TERM_B : 0u));
+      t->n_zero_terms += (p->d1.d.m == 0) + (p->d2.d.m == 0);
+   }
+}
+
 /* The skips of the dfx24 lanes (interp_lanes.c) for this primitive: which
  * planes are constant, and what a constant 1/w and the constant
  * components give, with the range events each pixel would raise. */
@@ -181,15 +199,14 @@ static void lanes_skips_setup(struct rast_front *fr)
    }
    t->ln = 0;
    t->n_const = 0;
-   if (!t->w_const)
-      t->lidx[t->ln++] = 0;
    t->n_zero_terms = 0;
+   if (!t->w_const)
+      lanes_plane(t, 0, 0);
    for (unsigned j = 0; j < fr->npersp; j++) {
       const uint16_t out = (uint16_t)(&fr->quad[0].in[fr->persp[j].var][fr->persp[j].chan][0] -
                                       &fr->quad[0].in[0][0][0]);
       if (!(t->skip && plane_is_const(&t->pl[1 + j]))) {
-         t->lout[t->ln] = out;
-         t->lidx[t->ln++] = (uint8_t)(1 + j);
+         lanes_plane(t, 1 + j, out);
          continue;
       }
       if (t->w_const)
@@ -197,19 +214,6 @@ static void lanes_skips_setup(struct rast_front *fr)
                                                                    &t->const_ev));
       t->cout[t->n_const] = out;
       t->cidx[t->n_const++] = (uint8_t)(1 + j);
-   }
-   /* A plane with one zero difference (a 2-D window's texture coordinate
-    * along an edge that follows its axis): a·0 and b·0 are zero registers,
-    * and the adder returns the other operand unchanged, neither with a
-    * range event, so the term is left out. */
-   for (unsigned i = 0; i < t->ln; i++) {
-      const struct fr_plane *p = &t->pl[t->lidx[i]];
-      t->lterm[i] = FR_TERM_A | FR_TERM_B;
-      if (t->skip) {
-         t->lterm[i] =
-            (uint8_t)((p->d1.d.m ? FR_TERM_A : 0u) | (p->d2.d.m ? FR_TERM_B : 0u));
-         t->n_zero_terms += (p->d1.d.m == 0) + (p->d2.d.m == 0);
-      }
    }
 }
 

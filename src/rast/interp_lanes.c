@@ -59,9 +59,9 @@ static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned tim
    to->flush += ev.flush * times;
 }
 
-/* What nq quads divided count: their lanes' events, and the events of the
- * values computed once per primitive, for every pixel. */
-static inline void counted(struct fr_tex *t, struct dfxl_stats st, unsigned nq)
+/* What nq quads divided count besides their lanes' events: the skips, and
+ * the events of the values computed once per primitive, for every pixel. */
+static inline void counted(struct fr_tex *t, unsigned nq)
 {
    if (t->w_const) {
       count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
@@ -69,7 +69,6 @@ static inline void counted(struct fr_tex *t, struct dfxl_stats st, unsigned nq)
    }
    t->n_const_comp += t->n_const * nq;
    t->n_zero_terms_quads += t->n_zero_terms * nq;
-   dfxl_stats_add(&t->dst, st);
 }
 
 /* `nq` quads (1, or 2 side by side on a row: their operations interleave,
@@ -140,7 +139,8 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
    }
    if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
-   counted(t, st, nq);
+   dfxl_stats_add(&t->dst, st);
+   counted(t, nq);
    return true;
 }
 
@@ -206,7 +206,6 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
         const unsigned n, unsigned nq)
 {
    struct fr_tex *t = &fr->tex;
-   const struct dfxl_stats st = DFXL_STATS(true);     /* nothing on binary64 lanes */
    struct dfxf_stats sf = dfxf_stats_init();
    const struct dfxf rdet = dfxf_splat((float)t->lrdet);
    const struct dfxf a = dfxf_mul(dfxf_from_fixed((__m512i)an[0], (__m512i)an[1], (int)t->k,
@@ -249,7 +248,7 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
       }
       store16(cout[i].v, in, t->cout[i]);
    }
-   counted(t, st, nq);
+   counted(t, nq);
    return true;
 }
 
