@@ -10,7 +10,10 @@
  * the unit has no four-quad function, a four is two pairs).
  * No GL, no Mesa: the model's texture unit only.
  *
- *   fp-bench-tex [--quads N] [--runs N] [--scalar] [--noskip]
+ *   fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]
+ *
+ * --case N runs only the N-th case of the list (from 1), for a profile or
+ * an instruction count of one sampler state.
  *
  * Each case runs N times (5); the fastest run is the figure, the mean shows
  * the noise.
@@ -73,19 +76,21 @@ static void plane_quad(struct tex_quad *q, int qx, int qy, int turn)
 int main(int argc, char **argv)
 {
    long nquads = 2000000;
-   int runs = 5;
+   int runs = 5, only = 0;
    bool scalar = false, noskip = false;
    for (int i = 1; i < argc; i++) {
       if (!strcmp(argv[i], "--quads") && i + 1 < argc)
          nquads = atol(argv[++i]);
       else if (!strcmp(argv[i], "--runs") && i + 1 < argc)
          runs = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--case") && i + 1 < argc)
+         only = atoi(argv[++i]);
       else if (!strcmp(argv[i], "--scalar"))
          scalar = true;
       else if (!strcmp(argv[i], "--noskip"))
          noskip = true;
       else {
-         fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--scalar] [--noskip]\n");
+         fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]\n");
          return 2;
       }
    }
@@ -115,7 +120,14 @@ int main(int argc, char **argv)
    enum { SCREEN = ROW_QUADS * 4 };
    static struct tex_quad q[SCREEN];
    float check = 0;
-   for (unsigned c = 0; c < sizeof(cases) / sizeof(cases[0]); c++) {
+   const int ncases = (int)(sizeof(cases) / sizeof(cases[0]));
+   if (only < 0 || only > ncases) {
+      fprintf(stderr, "fp-bench-tex: --case takes 1 to %d (0: all)\n", ncases);
+      return 2;
+   }
+   for (unsigned c = 0; c < (unsigned)ncases; c++) {
+      if (only && c + 1 != (unsigned)only)
+         continue;
       struct tex_unit u;
       struct ns_stats st;
       memset(&st, 0, sizeof(st));

@@ -199,12 +199,30 @@ struct tex_unit {
    /* with lanes_soa, each result channel (after the swizzle) from the
     * texel word: ((word >> shift) & mask) / 255 + add, the border's where
     * outside; a constant channel (swizzle 0 or 1, X formats' alpha) has
-    * mask 0 */
+    * mask 0.  `pick`: the same byte as a byte shuffle's control (each
+    * word's byte shift / 8 to its low byte, the others zero; all zero for
+    * mask 0). */
    struct tex_lanes_channel {
       int32_t shift, mask;
       float add, border;
+      uint8_t pick[16];
    } lanes_ch[4];
+   uint8_t lanes_const;           /* bit ch: lanes_ch[ch] is a constant (mask 0) */
    double laxis[TEX_MAX_LEVELS][3][3];
+   /* level 0's s and t constants side by side, as the address unit takes
+    * both axes in one vector (tex_lanes.c's pair_addr): [0] scale, [1] lo,
+    * [2] hi, lanes 0-3 of s, 4-7 of t; and the two sizes */
+   double laxis_st[3][8];
+   int32_t lsize_st[8];
+   /* The rows' addresses of the last four quads whose t followed the rows
+    * (tex_lanes.c's pairs4): the next four quads of the same rows take
+    * them instead of the address unit.  The unit's one part written while
+    * sampling (a unit is a thread's own), cleared by binding. */
+   struct tex_rows_memo {
+      bool valid;
+      double t[2];
+      int32_t i0[8], i1[8], w[8];
+   } rows_memo;
 };
 
 /* Bind: copies the descriptors, converts constants into the number system

@@ -78,17 +78,22 @@ static void lanes_channels(struct tex_unit *u)
       const unsigned s = u->view.swizzle[ch];
       if (s < 4 && !(s == 3 && x)) {
          *c = (struct tex_lanes_channel){ bgr ? shift_bgra[s] : shift_rgba[s], 0xff, 0.0f,
-                                          u->samp.border[s] };
+                                          u->samp.border[s], { 0 } };
       } else {
          const float k = s == 3 || s == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
-         *c = (struct tex_lanes_channel){ 0, 0, k, s < 4 ? u->samp.border[s] : k };
+         *c = (struct tex_lanes_channel){ 0, 0, k, s < 4 ? u->samp.border[s] : k, { 0 } };
       }
+      for (unsigned b = 0; b < 16; b++)
+         c->pick[b] = b % 4 == 0 && c->mask ? (uint8_t)(b + c->shift / 8) : 0x80;
+      if (!c->mask)
+         u->lanes_const |= (uint8_t)(1u << ch);
    }
 }
 
 static void lanes_constants(struct tex_unit *u)
 {
    u->lanes_soa = lanes_soa(u);
+   u->lanes_const = 0;
    if (u->lanes_soa)
       lanes_channels(u);
    u->lk_one = lanes_value(u, u->k_one);
@@ -98,6 +103,11 @@ static void lanes_constants(struct tex_unit *u)
          u->laxis[l][a][1] = lanes_value(u, u->axis[l][a].lo);
          u->laxis[l][a][2] = lanes_value(u, u->axis[l][a].hi);
       }
+   for (unsigned k = 0; k < 3; k++)
+      for (unsigned i = 0; i < 8; i++)
+         u->laxis_st[k][i] = u->laxis[0][i / 4][k];
+   for (unsigned i = 0; i < 8; i++)
+      u->lsize_st[i] = (int32_t)u->axis[0][i / 4].size;
 }
 
 void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex_view_desc *v,

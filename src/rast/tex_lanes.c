@@ -335,19 +335,35 @@ soa_offsets(const struct tex_level *lv, taps_i x, taps_i y, taps_i zoff, bool bo
    return off & ~*out;
 }
 
+/* (word >> shift) & mask of the channel: one byte shuffle where the set
+ * has it. */
+static inline __attribute__((always_inline)) taps_i
+channel_byte(const struct tex_lanes_channel *c, taps_i words)
+{
+#if DFXL_N == 8 && defined(__AVX512BW__)
+   const __m128i pick = _mm_loadu_si128((const __m128i *)(const void *)c->pick);
+   return (taps_i)_mm512_shuffle_epi8((__m512i)words, _mm512_broadcast_i32x4(pick));
+#elif DFXL_N == 4 && defined(__AVX2__)
+   const __m128i pick = _mm_loadu_si128((const __m128i *)(const void *)c->pick);
+   return (taps_i)_mm256_shuffle_epi8((__m256i)words, _mm256_broadcastsi128_si256(pick));
+#else
+   return (words >> c->shift) & c->mask;
+#endif
+}
+
 /* Result channel `ch` of the words (tex_unorm8 of its byte after the
- * swizzle, tex_bind.c's lanes_channels), the border where outside. */
+ * swizzle, tex_bind.c's lanes_channels), the border where outside.
+ * Without a border the channel is not a constant one (constant_channel
+ * takes those), so its `add` is 0, and v + 0 is v for v >= 0. */
 static inline __attribute__((always_inline)) taps_f
 soa_channel(const struct tex_unit *u, taps_i words, bool border, taps_i out, unsigned ch)
 {
    const struct tex_lanes_channel *c = &u->lanes_ch[ch];
-   const taps_f v =
-      __builtin_convertvector((words >> c->shift) & c->mask, taps_f) * (1.0f / 255.0f) +
-      c->add;
+   const taps_f v = __builtin_convertvector(channel_byte(c, words), taps_f) * (1.0f / 255.0f);
    if (!border)
       return v;
    const taps_f bv = (taps_f){ 0 } + c->border;
-   return (taps_f)(((taps_i)bv & out) | ((taps_i)v & ~out));
+   return (taps_f)(((taps_i)(v + c->add) & ~out) | ((taps_i)bv & out));
 }
 
 /* A result channel that is one value at every tap (a swizzle's 0 or 1, an
@@ -357,7 +373,7 @@ soa_channel(const struct tex_unit *u, taps_i words, bool border, taps_i out, uns
 static inline __attribute__((always_inline)) bool
 constant_channel(const struct tex_unit *u, bool border, unsigned ch)
 {
-   return !border && u->lanes_ch[ch].mask == 0;
+   return !border && (u->lanes_const >> ch & 1);
 }
 
 /* lerp4 per element: a + f (b - a), f the weight over TEX_WEIGHT_ONE. */
@@ -379,6 +395,7 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
    if (!linear) {
       taps_i o;
       const taps_i w = gather(lv, soa_offsets(lv, TWICE(A->i0), TWICE(B->i0), z, border, &o));
+#pragma GCC unroll 4
       for (unsigned ch = 0; ch < 4; ch++)
          out[ch] = constant_channel(u, border, ch) ? (lanes_f){ 0 } + u->lanes_ch[ch].add
                                                    : LO(soa_channel(u, w, border, o, ch));
@@ -391,6 +408,7 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
    const taps_i w1 = gather(lv, soa_offsets(lv, TWICE(A->i1), y, z, border, &o1));
    const lanes_f fa = weights(A->w), fb = weights(B->w);
    const taps_f fa2 = TWICE(fa);
+#pragma GCC unroll 4
    for (unsigned ch = 0; ch < 4; ch++) {
       if (constant_channel(u, border, ch)) {
          out[ch] = (lanes_f){ 0 } + u->lanes_ch[ch].add;
@@ -756,12 +774,11 @@ pair_addr(const struct tex_unit *u, const struct quad_kind k, const bool linear,
        * the address unit at once, each lane with its own axis's constants:
        * one pass of the unit where each axis alone would fill a vector
        * with copies */
-#define BOTH(a, b) __builtin_shufflevector(a, b, 0, 1, 2, 3, 8, 9, 10, 11)
-      const struct lanes_axis both = { BOTH(ax[0].scale, ax[1].scale), BOTH(ax[0].lo, ax[1].lo),
-                                       BOTH(ax[0].hi, ax[1].hi),
-                                       __builtin_shufflevector(ax[0].size, ax[1].size, 0, 1, 2,
-                                                               3, 8, 9, 10, 11) };
-#undef BOTH
+      struct lanes_axis both;
+      memcpy(&both.scale, u->laxis_st[0], sizeof(both.scale));
+      memcpy(&both.lo, u->laxis_st[1], sizeof(both.lo));
+      memcpy(&both.hi, u->laxis_st[2], sizeof(both.hi));
+      memcpy(&both.size, u->lsize_st, sizeof(both.size));
       const struct dfxl st_v = { __builtin_shufflevector(cs.v, ct.v, 0, 1, 4, 5, 8, 10, 8, 10) };
       struct lanes_addr AB;
       lanes_addr_of(u, linear, (unsigned)k.ws, &both, st_v, &AB, st);
@@ -785,6 +802,60 @@ pair_addr(const struct tex_unit *u, const struct quad_kind k, const bool linear,
    return (int)s_col + (int)t_row;
 }
 
+/* The four quads' addresses where, in both vectors, s follows the
+ * columns and t the rows, and both vectors are on the same two rows (a
+ * 2-D window's four quads side by side): the eight columns' s through the
+ * address unit in one vector, and the two rows' t through it only where
+ * the unit's rows memo does not hold them already.  The memo holds rows
+ * whose pass raised nothing, and a pass is a function of its inputs and
+ * the unit's state (its wrap modes and filter too: a unit's four-quad
+ * function filters one way): taking it gives the very registers, and
+ * leaves out no count (a shared lane with a count declines, as in
+ * pair_addr).
+ * false where the vectors are not such; *st_s, *st_t: the passes' events. */
+static inline __attribute__((always_inline)) bool
+pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool linear,
+                 const struct dfxl cs[2], const struct dfxl ct[2], struct lanes_addr A[2],
+                 struct lanes_addr B[2], struct dfxl_stats *st_s, struct dfxl_stats *st_t,
+                 int sh[2])
+{
+   if (k.ws != k.wt || !s_by_column(cs[0]) || !s_by_column(cs[1]) || !t_by_row(ct[0]) ||
+       !t_by_row(ct[1]) || ct[0].v[0] != ct[1].v[0] || ct[0].v[2] != ct[1].v[2])
+      return false;
+   const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
+   const struct dfxl sv = { __builtin_shufflevector(cs[0].v, cs[1].v, 0, 1, 4, 5, 8, 9, 12,
+                                                    13) };
+   struct lanes_addr S;
+   lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], sv, &S, st_s);
+   A[0] = SPREAD(S, 0, 1, 0, 1, 2, 3, 2, 3);
+   A[1] = SPREAD(S, 4, 5, 4, 5, 6, 7, 6, 7);
+   struct tex_rows_memo *m = (struct tex_rows_memo *)&u->rows_memo;
+   uint64_t t0, t1, m0, m1;
+   memcpy(&t0, &ct[0].v[0], 8);
+   memcpy(&t1, &ct[0].v[2], 8);
+   memcpy(&m0, &m->t[0], 8);
+   memcpy(&m1, &m->t[1], 8);
+   if (m->valid && t0 == m0 && t1 == m1) {
+      memcpy(&B[0].i0, m->i0, sizeof(B[0].i0));
+      memcpy(&B[0].i1, m->i1, sizeof(B[0].i1));
+      memcpy(&B[0].w, m->w, sizeof(B[0].w));
+   } else {
+      const struct dfxl tv = { __builtin_shufflevector(ct[0].v, ct[0].v, 0, 2, 0, 2, 0, 2, 0,
+                                                       2) };
+      struct lanes_addr T;
+      lanes_addr_of(u, linear, (unsigned)k.wt, &ax[1], tv, &T, st_t);
+      B[0] = SPREAD(T, 0, 0, 1, 1, 0, 0, 1, 1);
+      m->valid = !dfxl_any(dfxl_trouble(st_t) | (st_t->sat != 0) | (st_t->flush != 0));
+      memcpy(m->t, (const double[2]){ ct[0].v[0], ct[0].v[2] }, sizeof(m->t));
+      memcpy(m->i0, &B[0].i0, sizeof(m->i0));
+      memcpy(m->i1, &B[0].i1, sizeof(m->i1));
+      memcpy(m->w, &B[0].w, sizeof(m->w));
+   }
+   B[1] = B[0];
+   sh[0] = sh[1] = 2;
+   return true;
+}
+
 /* A vector's pixels' layers, as byte offsets. */
 static inline __attribute__((always_inline)) lanes_i pair_layers(const struct tex_unit *u,
                                                                  const struct tex_quad q[2])
@@ -797,16 +868,19 @@ static inline __attribute__((always_inline)) lanes_i pair_layers(const struct te
    return zoff;
 }
 
-/* A vector's results to its two quads' arrays. */
+/* A vector's results to its two quads' arrays: each quad's four channels
+ * (the channels' low halves, then their high halves) are one vector. */
 static inline __attribute__((always_inline)) void pair_store(const lanes_f out[4],
                                                              float rgba[2][4][TEX_QUAD])
 {
-   for (unsigned ch = 0; ch < 4; ch++) {
-      const lanes_v4f lo = __builtin_shufflevector(out[ch], out[ch], 0, 1, 2, 3),
-                      hi = __builtin_shufflevector(out[ch], out[ch], 4, 5, 6, 7);
-      memcpy(rgba[0][ch], &lo, sizeof(lo));
-      memcpy(rgba[1][ch], &hi, sizeof(hi));
-   }
+   const taps_f rg = CONCAT(out[0], out[1]), ba = CONCAT(out[2], out[3]);
+   const taps_f q0 = __builtin_shufflevector(rg, ba, 0, 1, 2, 3, 8, 9, 10, 11, 16, 17, 18, 19,
+                                             24, 25, 26, 27),
+                q1 = __builtin_shufflevector(rg, ba, 4, 5, 6, 7, 12, 13, 14, 15, 20, 21, 22, 23,
+                                             28, 29, 30, 31);
+   _Static_assert(sizeof(q0) == sizeof(rgba[0]), "a quad's channels are one vector");
+   memcpy(rgba[0], &q0, sizeof(q0));
+   memcpy(rgba[1], &q1, sizeof(q1));
 }
 
 /* pair2 above with both quads in one vector: each of its operations is
@@ -862,11 +936,17 @@ pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TE
       coords(u, &q[2 * v], &cs[v], &ct[v], &x);
       zoff[v] = pair_layers(u, &q[2 * v]);
    }
+   if (pairs4_addr_rows(u, k, linear, cs, ct, A, B, &st[0], &st[1], sh)) {
+      /* the counts are numbers, not masks: compared with zero first */
+      if (dfxl_any((st[0].sat | st[0].flush | st[1].sat | st[1].flush) != 0))
+         return false;
+   } else {
 #pragma GCC unroll 2
-   for (unsigned v = 0; v < 2; v++)
-      sh[v] = pair_addr(u, k, linear, cs[v], ct[v], &A[v], &B[v], &st[v]);
-   if ((sh[0] | sh[1]) < 0)
-      return false;
+      for (unsigned v = 0; v < 2; v++)
+         sh[v] = pair_addr(u, k, linear, cs[v], ct[v], &A[v], &B[v], &st[v]);
+      if ((sh[0] | sh[1]) < 0)
+         return false;
+   }
 #pragma GCC unroll 2
    for (unsigned v = 0; v < 2; v++)
       soa_level2(u, linear, border, 0, &A[v], &B[v], zoff[v], out[v]);

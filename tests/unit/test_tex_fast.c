@@ -411,6 +411,97 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
           fast_units, per_unit, mode_names[mode], bad);
 }
 
+/* Four quads side by side on the same two rows, as a 2-D window's quad
+ * row gives them: s follows the eight columns from `s0`, t the two rows
+ * `row`. */
+static void axis_four(struct tex_quad four[4], const struct tex_unit *u, float s0, float ds,
+                      const float row[2])
+{
+   (void)u;
+   for (unsigned i = 0; i < 4; i++)
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         four[i].s[p] = s0 + (float)(2 * i + (p & 1)) * ds;
+         four[i].t[p] = row[p >> 1];
+      }
+}
+
+/* The four-quad function's rows memo: runs of calls along the rows of a
+ * 2-D window, a row taken again, another between, the unit bound anew
+ * (the memo cleared): every call's bits, range events and shared
+ * quad-axes those of its two pairs, which never take the memo. */
+static void rows_memo_runs(unsigned units, unsigned calls)
+{
+   __builtin_cpu_init();
+   rast_lanes_set(rast_lanes_have_avx512()            ? &rast_lanes_avx512
+                  : __builtin_cpu_supports("avx2") ? &rast_lanes_avx2
+                                                   : &rast_lanes_sse2);
+   const struct numsys *ns = numsys_by_name("dfx24");
+   unsigned bad = 0;
+   uint64_t taken = 0, four = 0;
+   for (unsigned i = 0; i < units; i++) {
+      struct tex_unit u;
+      struct ns_stats s_each = { 0, 0 }, s_four = { 0, 0 };
+      /* a unit with a four-quad function (the others have no memo) */
+      for (unsigned tries = 0; tries == 0 || (!u.quad4 && tries < 1000); tries++) {
+         rand_unit(&u, ns, &s_four);
+         tex_unit_set_datapath(&u, false, false);
+      }
+      const float scale = u.samp.normalized ? 1.0f : (float)u.view.level[0].w;
+      float rows[3][2];
+      for (unsigned r = 0; r < 3; r++) {
+         const float t0 = rndn(8) ? rndu() * scale : rand_float();
+         const float dt = ldexpf(rndu(), -(int)rndn(14)) * scale;
+         rows[r][0] = t0;
+         rows[r][1] = rndn(16) ? t0 + dt : rand_float();
+      }
+      /* rows that differ in the second only, or in the first only */
+      const unsigned same = rndn(3);
+      if (same < 2)
+         rows[2][same] = rows[0][same];
+      float s0 = rndu() * scale;
+      const float ds = ldexpf(rndu(), -(int)rndn(14)) * scale;
+      for (unsigned c = 0; c < calls; c++) {
+         /* mostly the same rows, moving along them; now and then another */
+         const unsigned r = rndn(4) ? 0 : 1 + rndn(2);
+         struct tex_quad q[4];
+         memset(q, 0, sizeof(q));
+         axis_four(q, &u, s0, ds, rows[r]);
+         s0 += 8 * ds;
+         const struct tex_rows_memo before = u.rows_memo;
+         float each[2][2][4][TEX_QUAD], together[4][4][TEX_QUAD];
+         uint64_t axes_each = 0, axes_four = 0;
+         u.stats = &s_four;
+         u.axes_shared = &axes_four;
+         tex_unit_sample_quads(&u, q, 4, TEX_LOD_IMPLICIT, together);
+         /* the memo held the rows before and still does: taken */
+         taken += before.valid && !memcmp(&before, &u.rows_memo, sizeof(before));
+         u.stats = &s_each;
+         u.axes_shared = &axes_each;
+         tex_unit_sample2(&u, &q[0], TEX_LOD_IMPLICIT, each[0]);
+         tex_unit_sample2(&u, &q[2], TEX_LOD_IMPLICIT, each[1]);
+         u.axes_shared = NULL;
+         four += u.quad4 != NULL;
+         const bool ok = !memcmp(each, together, sizeof(together)) &&
+                         s_each.sat == s_four.sat && s_each.flush == s_four.flush &&
+                         axes_each == axes_four;
+         if (!ok && bad++ < 5)
+            CHECK(ok, "unit %u call %u (rows %u): four quads with the rows memo differ from "
+                  "the pairs (wrap %d/%d filt %d/%d; sat %llu vs %llu, flush %llu vs %llu, "
+                  "axes %llu vs %llu)", i, c, r, u.samp.wrap[0], u.samp.wrap[1],
+                  u.samp.min_filter, u.samp.mag_filter, (unsigned long long)s_each.sat,
+                  (unsigned long long)s_four.sat, (unsigned long long)s_each.flush,
+                  (unsigned long long)s_four.flush, (unsigned long long)axes_each,
+                  (unsigned long long)axes_four);
+      }
+   }
+   CHECK(bad == 0, "rows memo: %u calls differ", bad);
+   printf("  rows memo: %llu calls of four quads through a four-quad function, the rows' "
+          "addresses taken from the memo in %llu\n", (unsigned long long)four,
+          (unsigned long long)taken);
+   if (rast_lanes_have_avx512())
+      CHECK(taken > 20000, "only %llu calls took the rows memo", (unsigned long long)taken);
+}
+
 int main(void)
 {
    for (unsigned l = 0; l < MAXL; l++)
@@ -449,5 +540,6 @@ int main(void)
          (unsigned long long)axes_quads);
    CHECK(fast_quads > 1000000, "only %llu quads took the specialised path",
          (unsigned long long)fast_quads);
+   rows_memo_runs(1000, 100);
    return t_summary("tex_fast");
 }
