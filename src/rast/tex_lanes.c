@@ -819,8 +819,10 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
                  struct lanes_addr B[2], struct dfxl_stats *st_s, struct dfxl_stats *st_t,
                  int sh[2])
 {
+   /* the registers compared bit for bit, as s_by_column and t_by_row do */
+   const dfxl_i t_0 = (dfxl_i)ct[0].v, t_1 = (dfxl_i)ct[1].v;
    if (k.ws != k.wt || !s_by_column(cs[0]) || !s_by_column(cs[1]) || !t_by_row(ct[0]) ||
-       !t_by_row(ct[1]) || ct[0].v[0] != ct[1].v[0] || ct[0].v[2] != ct[1].v[2])
+       !t_by_row(ct[1]) || t_0[0] != t_1[0] || t_0[2] != t_1[2])
       return false;
    const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
    const struct dfxl sv = { __builtin_shufflevector(cs[0].v, cs[1].v, 0, 1, 4, 5, 8, 9, 12,
@@ -830,12 +832,10 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
    A[0] = SPREAD(S, 0, 1, 0, 1, 2, 3, 2, 3);
    A[1] = SPREAD(S, 4, 5, 4, 5, 6, 7, 6, 7);
    struct tex_rows_memo *m = (struct tex_rows_memo *)&u->rows_memo;
-   uint64_t t0, t1, m0, m1;
-   memcpy(&t0, &ct[0].v[0], 8);
-   memcpy(&t1, &ct[0].v[2], 8);
+   int64_t m0, m1;
    memcpy(&m0, &m->t[0], 8);
    memcpy(&m1, &m->t[1], 8);
-   if (m->valid && t0 == m0 && t1 == m1) {
+   if (m->valid && t_0[0] == m0 && t_0[2] == m1) {
       memcpy(&B[0].i0, m->i0, sizeof(B[0].i0));
       memcpy(&B[0].i1, m->i1, sizeof(B[0].i1));
       memcpy(&B[0].w, m->w, sizeof(B[0].w));
