@@ -11,6 +11,14 @@
  * No GL, no Mesa: the model's texture unit only.
  *
  *   fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]
+ *   fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--runs N] [--scalar] [--noskip]
+ *
+ * --window samples a 640x480 texture one texel a pixel over a whole
+ * 640x480 screen, quad row by quad row, N taps a quad one texel apart along
+ * the row (a horizontal blur, as glmark2's desktop does): the texels come
+ * from memory as they do in a replay, where the 300x200 cases stay in the
+ * caches.  --hot samples the first quad row over and over instead, the same
+ * calls on texels in the caches: the difference is what memory costs.
  *
  * --case N runs only the N-th case of the list (from 1), for a profile or
  * an instruction count of one sampler state.
@@ -37,7 +45,11 @@ enum { TW = 300, TH = 200, ROW_QUADS = 320 };   /* a 640-pixel row of quads */
 
 static uint8_t texels[TW * TH * 4];
 
-static void bind(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap, enum tex_filter f)
+enum { WW = 640, WH = 480 };
+static uint8_t window_texels[WW * WH * 4];
+
+static void bind_level(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap,
+                       enum tex_filter f, uint8_t *data, unsigned w, unsigned h)
 {
    struct tex_view_desc v;
    struct tex_sampler_desc s;
@@ -47,7 +59,7 @@ static void bind(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap, en
    v.format = TEX_FMT_RGBA8;
    v.num_levels = 1;
    v.layers = 1;
-   v.level[0] = (struct tex_level){ texels, TW * 4, TW * TH * 4, TW, TH, 1 };
+   v.level[0] = (struct tex_level){ data, w * 4, w * h * 4, w, h, 1 };
    for (unsigned c = 0; c < 4; c++)
       v.swizzle[c] = (uint8_t)c;
    s.wrap[0] = s.wrap[1] = s.wrap[2] = wrap;
@@ -57,6 +69,72 @@ static void bind(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap, en
    s.min_lod = -1000;
    s.max_lod = 1000;
    tex_unit_bind(u, numsys_by_name("dfx24"), &v, &s, st);
+}
+
+static void bind(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap, enum tex_filter f)
+{
+   bind_level(u, st, wrap, f, texels, TW, TH);
+}
+
+/* The quads of quad row qy, tap k of n: one texel a pixel, the tap k - n/2
+ * texels along the row (or down the column: `vertical`), a quarter texel
+ * off the centres (the filter blends). */
+static void window_row(struct tex_quad *q, int qy, int k, int n, bool vertical)
+{
+   const float d = (float)(k - n / 2);
+   const float dx = (vertical ? 0.0f : d) + 0.25f, dy = (vertical ? d : 0.0f) + 0.25f;
+   for (int qx = 0; qx < WW / 2; qx++) {
+      for (int p = 0; p < TEX_QUAD; p++) {
+         const float x = (float)(2 * qx + (p & 1)) + 0.5f, y = (float)(2 * qy + (p >> 1)) + 0.5f;
+         q[qx].s[p] = (x + dx) * (1.0f / WW);
+         q[qx].t[p] = (y + dy) * (1.0f / WH);
+      }
+   }
+}
+
+enum { MAX_TAPS = 64 };
+
+/* --window: ns a quad-sample, the whole screen or its first row (`hot`),
+ * the taps of four quads one after the other, as a blur's shader calls
+ * the unit. */
+static int window_bench(int taps, int nrows, bool vertical, bool hot, int runs, bool scalar,
+                        bool noskip)
+{
+   for (unsigned i = 0; i < sizeof(window_texels); i++)
+      window_texels[i] = (uint8_t)(i * 2654435761u >> 24);
+   struct tex_unit u;
+   struct ns_stats st;
+   memset(&st, 0, sizeof(st));
+   bind_level(&u, &st, TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR, window_texels, WW, WH);
+   tex_unit_set_datapath(&u, scalar, noskip);
+   static struct tex_quad q[MAX_TAPS][WW / 2];
+   float rgba[4][4][TEX_QUAD], check = 0;
+   double best = 1e30, total = 0, rows_best = 1e30;
+   for (int r = 0; r < runs; r++) {
+      double t0 = cpu_seconds(), gen = 0;
+      for (int qy = 0; qy < nrows; qy++) {
+         const double g0 = cpu_seconds();
+         for (int k = 0; k < taps; k++)
+            window_row(q[k], hot ? 0 : qy, k, taps, vertical);
+         gen += cpu_seconds() - g0;
+         for (int qx = 0; qx < WW / 2; qx += 4)
+            for (int k = 0; k < taps; k++) {
+               tex_unit_sample_quads(&u, &q[k][qx], 4, TEX_LOD_IMPLICIT, rgba);
+               check += rgba[3][0][3];
+            }
+      }
+      const double t = cpu_seconds() - t0 - gen;
+      best = t < best ? t : best;
+      rows_best = gen < rows_best ? gen : rows_best;
+      total += t;
+   }
+   const double n = (double)(WW / 2) * nrows * taps;
+   printf("window %dx%d, %d tap%s %s, %s: fours %5.1f ns a quad (the fastest of %d runs of %.0f "
+          "quads; mean %.1f; making the coordinates %.1f more), range events %llu\n",
+          WW, WH, taps, taps == 1 ? "" : "s", vertical ? "down the columns" : "along the rows",
+          hot ? "first row over and over" : "whole screen", 1e9 * best / n, runs, n,
+          1e9 * total / runs / n, 1e9 * rows_best / n, (unsigned long long)(st.sat + st.flush));
+   return check == -1.0f;
 }
 
 /* Quad (qx, qy) of the screen: pixel (x, y) at s = s0 + x·ds_dx + y·ds_dy;
@@ -76,8 +154,8 @@ static void plane_quad(struct tex_quad *q, int qx, int qy, int turn)
 int main(int argc, char **argv)
 {
    long nquads = 2000000;
-   int runs = 5, only = 0;
-   bool scalar = false, noskip = false;
+   int runs = 5, only = 0, taps = 1, nrows = WH / 2;
+   bool scalar = false, noskip = false, window = false, hot = false, vertical = false;
    for (int i = 1; i < argc; i++) {
       if (!strcmp(argv[i], "--quads") && i + 1 < argc)
          nquads = atol(argv[++i]);
@@ -85,12 +163,23 @@ int main(int argc, char **argv)
          runs = atoi(argv[++i]);
       else if (!strcmp(argv[i], "--case") && i + 1 < argc)
          only = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--taps") && i + 1 < argc)
+         taps = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--window"))
+         window = true;
+      else if (!strcmp(argv[i], "--hot"))
+         hot = true;
+      else if (!strcmp(argv[i], "--rows") && i + 1 < argc)
+         nrows = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--vertical"))
+         vertical = true;
       else if (!strcmp(argv[i], "--scalar"))
          scalar = true;
       else if (!strcmp(argv[i], "--noskip"))
          noskip = true;
       else {
-         fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]\n");
+         fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]\n"
+                         "       fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--runs N] [--scalar] [--noskip]\n");
          return 2;
       }
    }
@@ -98,6 +187,13 @@ int main(int argc, char **argv)
    if (nquads < 4 || nquads > 1000000000 || runs < 1 || runs > 1000) {
       fprintf(stderr, "fp-bench-tex: --quads takes 4 to 10^9, --runs 1 to 1000\n");
       return 2;
+   }
+   if (window) {
+      if (taps < 1 || taps > MAX_TAPS || nrows < 1 || nrows > WH / 2) {
+         fprintf(stderr, "fp-bench-tex: --taps takes 1 to %d, --rows 1 to %d\n", MAX_TAPS, WH / 2);
+         return 2;
+      }
+      return window_bench(taps, nrows, vertical, hot, runs, scalar, noskip);
    }
    for (unsigned i = 0; i < sizeof(texels); i++)
       texels[i] = (uint8_t)(i * 2654435761u >> 24);
