@@ -13,12 +13,15 @@
  *   fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]
  *   fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--runs N] [--scalar] [--noskip]
  *
- * --window samples a 640x480 texture one texel a pixel over a whole
- * 640x480 screen, quad row by quad row, N taps a quad one texel apart along
- * the row (a horizontal blur, as glmark2's desktop does): the texels come
- * from memory as they do in a replay, where the 300x200 cases stay in the
- * caches.  --hot samples the first quad row over and over instead, the same
- * calls on texels in the caches: the difference is what memory costs.
+ * --window samples a 640x480 texture one texel a pixel over the first N
+ * quad rows (--rows, default all 240) of a 640x480 screen, each four
+ * quads' taps (--taps, default 1) one after the other, a texel apart along
+ * the rows or, with --vertical, down the columns (a blur's two passes, as
+ * glmark2's desktop draws them): the texels come from memory as they do in
+ * a replay, where the 300x200 cases stay in the caches.  --hot samples the
+ * first quad row over and over instead, the same calls on texels in the
+ * caches: the difference is what memory costs.  --quads and --case are the
+ * other cases' and are refused with --window.
  *
  * --case N runs only the N-th case of the list (from 1), for a profile or
  * an instruction count of one sampler state.
@@ -76,6 +79,13 @@ static void bind(struct tex_unit *u, struct ns_stats *st, enum tex_wrap wrap, en
    bind_level(u, st, wrap, f, texels, TW, TH);
 }
 
+/* Texels that vary from one to the next (no filter takes a shortcut). */
+static void fill_texels(uint8_t *t, size_t n)
+{
+   for (size_t i = 0; i < n; i++)
+      t[i] = (uint8_t)(i * 2654435761u >> 24);
+}
+
 /* The quads of quad row qy, tap k of n: one texel a pixel, the tap k - n/2
  * texels along the row (or down the column: `vertical`), a quarter texel
  * off the centres (the filter blends). */
@@ -100,8 +110,7 @@ enum { MAX_TAPS = 64 };
 static int window_bench(int taps, int nrows, bool vertical, bool hot, int runs, bool scalar,
                         bool noskip)
 {
-   for (unsigned i = 0; i < sizeof(window_texels); i++)
-      window_texels[i] = (uint8_t)(i * 2654435761u >> 24);
+   fill_texels(window_texels, sizeof(window_texels));
    struct tex_unit u;
    struct ns_stats st;
    memset(&st, 0, sizeof(st));
@@ -156,9 +165,12 @@ int main(int argc, char **argv)
    long nquads = 2000000;
    int runs = 5, only = 0, taps = 1, nrows = WH / 2;
    bool scalar = false, noskip = false, window = false, hot = false, vertical = false;
+   bool quads_set = false;
    for (int i = 1; i < argc; i++) {
-      if (!strcmp(argv[i], "--quads") && i + 1 < argc)
+      if (!strcmp(argv[i], "--quads") && i + 1 < argc) {
          nquads = atol(argv[++i]);
+         quads_set = true;
+      }
       else if (!strcmp(argv[i], "--runs") && i + 1 < argc)
          runs = atoi(argv[++i]);
       else if (!strcmp(argv[i], "--case") && i + 1 < argc)
@@ -189,14 +201,18 @@ int main(int argc, char **argv)
       return 2;
    }
    if (window) {
+      if (quads_set || only) {
+         fprintf(stderr, "fp-bench-tex: --window takes --taps, --rows, --vertical, --hot, --runs, "
+                         "--scalar and --noskip, not --quads or --case\n");
+         return 2;
+      }
       if (taps < 1 || taps > MAX_TAPS || nrows < 1 || nrows > WH / 2) {
          fprintf(stderr, "fp-bench-tex: --taps takes 1 to %d, --rows 1 to %d\n", MAX_TAPS, WH / 2);
          return 2;
       }
       return window_bench(taps, nrows, vertical, hot, runs, scalar, noskip);
    }
-   for (unsigned i = 0; i < sizeof(texels); i++)
-      texels[i] = (uint8_t)(i * 2654435761u >> 24);
+   fill_texels(texels, sizeof(texels));
 
    static const struct {
       const char *name;
