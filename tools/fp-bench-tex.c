@@ -11,7 +11,7 @@
  * No GL, no Mesa: the model's texture unit only.
  *
  *   fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]
- *   fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--runs N] [--scalar] [--noskip]
+ *   fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--fresh] [--runs N] [--scalar] [--noskip]
  *
  * --window samples a 640x480 texture one texel a pixel over the first N
  * quad rows (--rows, default all 240) of a 640x480 screen, each four
@@ -20,8 +20,12 @@
  * glmark2's desktop draws them): the texels come from memory as they do in
  * a replay, where the 300x200 cases stay in the caches.  --hot samples the
  * first quad row over and over instead, the same calls on texels in the
- * caches: the difference is what memory costs.  --quads and --case are the
- * other cases' and are refused with --window.
+ * caches: the difference is what memory costs.  --fresh writes each call's
+ * four quads just before the call, s and t as one 16-byte store each, as
+ * the compiled shader does (docs/jit.md), where otherwise the rows are
+ * written long before: the difference is what reading freshly stored
+ * coordinates costs.  --quads and --case are the other cases' and are
+ * refused with --window.
  *
  * --case N runs only the N-th case of the list (from 1), for a profile or
  * an instruction count of one sampler state.
@@ -107,8 +111,8 @@ enum { MAX_TAPS = 64 };
 /* --window: ns a quad-sample, the whole screen or its first row (`hot`),
  * the taps of four quads one after the other, as a blur's shader calls
  * the unit. */
-static int window_bench(int taps, int nrows, bool vertical, bool hot, int runs, bool scalar,
-                        bool noskip)
+static int window_bench(int taps, int nrows, bool vertical, bool hot, bool fresh, int runs,
+                        bool scalar, bool noskip)
 {
    fill_texels(window_texels, sizeof(window_texels));
    struct tex_unit u;
@@ -117,6 +121,8 @@ static int window_bench(int taps, int nrows, bool vertical, bool hot, int runs, 
    bind_level(&u, &st, TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR, window_texels, WW, WH);
    tex_unit_set_datapath(&u, scalar, noskip);
    static struct tex_quad q[MAX_TAPS][WW / 2];
+   struct tex_quad staged[4];
+   memset(staged, 0, sizeof(staged));
    float rgba[4][4][TEX_QUAD], check = 0;
    double best = 1e30, total = 0, rows_best = 1e30;
    for (int r = 0; r < runs; r++) {
@@ -128,7 +134,15 @@ static int window_bench(int taps, int nrows, bool vertical, bool hot, int runs, 
          gen += cpu_seconds() - g0;
          for (int qx = 0; qx < WW / 2; qx += 4)
             for (int k = 0; k < taps; k++) {
-               tex_unit_sample_quads(&u, &q[k][qx], 4, TEX_LOD_IMPLICIT, rgba);
+               const struct tex_quad *in = &q[k][qx];
+               if (fresh) {
+                  for (int j = 0; j < 4; j++) {
+                     memcpy(staged[j].s, q[k][qx + j].s, sizeof(staged[j].s));
+                     memcpy(staged[j].t, q[k][qx + j].t, sizeof(staged[j].t));
+                  }
+                  in = staged;
+               }
+               tex_unit_sample_quads(&u, in, 4, TEX_LOD_IMPLICIT, rgba);
                check += rgba[3][0][3];
             }
       }
@@ -138,10 +152,11 @@ static int window_bench(int taps, int nrows, bool vertical, bool hot, int runs, 
       total += t;
    }
    const double n = (double)(WW / 2) * nrows * taps;
-   printf("window %dx%d, %d tap%s %s, %s: fours %5.1f ns a quad (the fastest of %d runs of %.0f "
+   printf("window %dx%d, %d tap%s %s, %s%s: fours %5.1f ns a quad (the fastest of %d runs of %.0f "
           "quads; mean %.1f; making the coordinates %.1f more), range events %llu\n",
           WW, WH, taps, taps == 1 ? "" : "s", vertical ? "down the columns" : "along the rows",
-          hot ? "first row over and over" : "whole screen", 1e9 * best / n, runs, n,
+          hot ? "first row over and over" : "whole screen",
+          fresh ? ", stored before each call" : "", 1e9 * best / n, runs, n,
           1e9 * total / runs / n, 1e9 * rows_best / n, (unsigned long long)(st.sat + st.flush));
    return check == -1.0f;
 }
@@ -165,6 +180,7 @@ int main(int argc, char **argv)
    long nquads = 2000000;
    int runs = 5, only = 0, taps = 1, nrows = WH / 2;
    bool scalar = false, noskip = false, window = false, hot = false, vertical = false;
+   bool fresh = false;
    bool quads_set = false;
    for (int i = 1; i < argc; i++) {
       if (!strcmp(argv[i], "--quads") && i + 1 < argc) {
@@ -185,13 +201,15 @@ int main(int argc, char **argv)
          nrows = atoi(argv[++i]);
       else if (!strcmp(argv[i], "--vertical"))
          vertical = true;
+      else if (!strcmp(argv[i], "--fresh"))
+         fresh = true;
       else if (!strcmp(argv[i], "--scalar"))
          scalar = true;
       else if (!strcmp(argv[i], "--noskip"))
          noskip = true;
       else {
          fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]\n"
-                         "       fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--runs N] [--scalar] [--noskip]\n");
+                         "       fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--fresh] [--runs N] [--scalar] [--noskip]\n");
          return 2;
       }
    }
@@ -202,15 +220,19 @@ int main(int argc, char **argv)
    }
    if (window) {
       if (quads_set || only) {
-         fprintf(stderr, "fp-bench-tex: --window takes --taps, --rows, --vertical, --hot, --runs, "
-                         "--scalar and --noskip, not --quads or --case\n");
+         fprintf(stderr, "fp-bench-tex: --window takes --taps, --rows, --vertical, --hot, --fresh, "
+                         "--runs, --scalar and --noskip, not --quads or --case\n");
          return 2;
       }
       if (taps < 1 || taps > MAX_TAPS || nrows < 1 || nrows > WH / 2) {
          fprintf(stderr, "fp-bench-tex: --taps takes 1 to %d, --rows 1 to %d\n", MAX_TAPS, WH / 2);
          return 2;
       }
-      return window_bench(taps, nrows, vertical, hot, runs, scalar, noskip);
+      return window_bench(taps, nrows, vertical, hot, fresh, runs, scalar, noskip);
+   }
+   if (fresh || hot || vertical) {
+      fprintf(stderr, "fp-bench-tex: --fresh, --hot and --vertical are --window's\n");
+      return 2;
    }
    fill_texels(texels, sizeof(texels));
 

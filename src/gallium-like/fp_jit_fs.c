@@ -247,9 +247,18 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
                                "");
    }
 
+   /* Each quad's four lanes loaded alone: the caller has just stored them
+    * quad by quad (fp_fs_shade_n_jit), and one load over the four stores
+    * would wait for them to reach the cache (docs/datapath.md, "Coordinates
+    * read as they were stored"). */
    struct lp_build_mask_context mask;
-   LLVMValueRef mask_in = LLVMBuildLoad2(b, ivec, mask_ptr, "");
-   LLVMSetAlignment(mask_in, 4);
+   const struct lp_type itype4 = lp_int_type(type4);
+   LLVMValueRef mask_bytes = LLVMBuildBitCast(b, mask_ptr, i8p, "");
+   LLVMValueRef mask_q[FP_JIT_MAX_QUADS];
+   for (unsigned k = 0; k < nq; k++)
+      mask_q[k] = fp_load_vec(gallivm, mask_bytes, k * RAST_QUAD_SIZE * sizeof(int32_t),
+                              lp_build_vec_type(gallivm, itype4));
+   LLVMValueRef mask_in = fp_jit_join_quads(gallivm, mask_q, itype4, nq);
    lp_build_mask_begin(&mask, gallivm, type, mask_in);
 
    /* Inputs, as fp_fs_shade fills tgsi_exec's. */

@@ -223,6 +223,10 @@ struct tex_unit {
       double t[2];
       int32_t i0[8], i1[8], w[8];
    } rows_memo;
+   /* Four-quad calls whose taps were read from their texel rows instead of
+    * gathered (tex_lanes.c's rows_words): the tests' proof that the path
+    * ran.  Written while sampling, as the memo. */
+   uint64_t rows_loaded;
 };
 
 /* Bind: copies the descriptors, converts constants into the number system

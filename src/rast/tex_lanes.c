@@ -83,15 +83,26 @@ static inline __attribute__((always_inline)) void
 coords(const struct tex_unit *u, const struct tex_quad *q, struct dfxl *cs, struct dfxl *ct,
        struct tex_fst *x)
 {
+   /* Each quad's s and t read as the two vectors they are: the compiled
+    * shader stores them one vector each just before the call, and one load
+    * over both would wait for the two stores to reach the cache, as the
+    * processor forwards a load from one store only (docs/datapath.md,
+    * "Coordinates read as they were stored"). */
+   typedef int32_t v4i __attribute__((vector_size(16)));
+   v4i s0, t0;
+   memcpy(&s0, q[0].s, sizeof(s0));
+   memcpy(&t0, q[0].t, sizeof(t0));
    taps_i v;                                    /* the lanes' s, then their t */
 #if DFXL_N == 8
    typedef int32_t v8i __attribute__((vector_size(32)));
-   v8i q0, q1;
-   memcpy(&q0, q[0].s, sizeof(q0));             /* s[4] then t[4] */
-   memcpy(&q1, q[1].s, sizeof(q1));
-   v = __builtin_shufflevector(q0, q1, 0, 1, 2, 3, 8, 9, 10, 11, 4, 5, 6, 7, 12, 13, 14, 15);
+   v4i s1, t1;
+   memcpy(&s1, q[1].s, sizeof(s1));
+   memcpy(&t1, q[1].t, sizeof(t1));
+   const v8i s = __builtin_shufflevector(s0, s1, 0, 1, 2, 3, 4, 5, 6, 7);
+   const v8i t = __builtin_shufflevector(t0, t1, 0, 1, 2, 3, 4, 5, 6, 7);
+   v = __builtin_shufflevector(s, t, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
 #else
-   memcpy(&v, q->s, sizeof(v));                 /* s[4] then t[4] */
+   v = __builtin_shufflevector(s0, t0, 0, 1, 2, 3, 4, 5, 6, 7);
 #endif
    const taps_i drop = 8 - (((v >> 23) + 1) & 3);
    const taps_i kept = (taps_i)((taps_u)v & (((taps_u){ 0 } - 1) << (taps_u)drop));
@@ -382,6 +393,30 @@ static inline __attribute__((always_inline)) lanes_f weights(lanes_i w)
    return __builtin_convertvector(w, lanes_f) * (1.0f / TEX_WEIGHT_ONE);
 }
 
+/* The linear filter of soa_level2 on its taps' words: w0 holds taps
+ * (i0, j0) and (i0, j1), w1 (i1, j0) and (i1, j1); o0, o1 the taps
+ * outside (the border). */
+static inline __attribute__((always_inline)) void
+soa_filter2(const struct tex_unit *u, const bool border, const struct lanes_addr *A,
+            const struct lanes_addr *B, taps_i w0, taps_i o0, taps_i w1, taps_i o1,
+            lanes_f out[4])
+{
+   const lanes_f fa = weights(A->w), fb = weights(B->w);
+   const taps_f fa2 = TWICE(fa);
+#pragma GCC unroll 4
+   for (unsigned ch = 0; ch < 4; ch++) {
+      if (constant_channel(u, border, ch)) {
+         out[ch] = (lanes_f){ 0 } + u->lanes_ch[ch].add;
+         continue;
+      }
+      const taps_f t0 = soa_channel(u, w0, border, o0, ch),
+                   t1 = soa_channel(u, w1, border, o1, ch);
+      const taps_f e = t0 + fa2 * (t1 - t0);
+      const lanes_f e0 = LO(e), e1 = HI(e);
+      out[ch] = e0 + fb * (e1 - e0);
+   }
+}
+
 /* tex_fast_path.h's level for two dimensions, one channel of the lanes'
  * pixels per vector, the result channels (after the swizzle).  `border`:
  * whether a tap can be outside (the wrap modes). */
@@ -406,20 +441,7 @@ soa_level2(const struct tex_unit *u, const bool linear, const bool border, unsig
    taps_i o0, o1;
    const taps_i w0 = gather(lv, soa_offsets(lv, TWICE(A->i0), y, z, border, &o0));
    const taps_i w1 = gather(lv, soa_offsets(lv, TWICE(A->i1), y, z, border, &o1));
-   const lanes_f fa = weights(A->w), fb = weights(B->w);
-   const taps_f fa2 = TWICE(fa);
-#pragma GCC unroll 4
-   for (unsigned ch = 0; ch < 4; ch++) {
-      if (constant_channel(u, border, ch)) {
-         out[ch] = (lanes_f){ 0 } + u->lanes_ch[ch].add;
-         continue;
-      }
-      const taps_f t0 = soa_channel(u, w0, border, o0, ch),
-                   t1 = soa_channel(u, w1, border, o1, ch);
-      const taps_f e = t0 + fa2 * (t1 - t0);
-      const lanes_f e0 = LO(e), e1 = HI(e);
-      out[ch] = e0 + fb * (e1 - e0);
-   }
+   soa_filter2(u, border, A, B, w0, o0, w1, o1, out);
 }
 
 /* What a quad function is specialised for (a negative field: read from
@@ -911,6 +933,51 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
    return true;
 }
 
+#if defined(__AVX512F__)
+/* The taps of four quads on the same two rows (pairs4_addr_rows) read from
+ * their texel rows instead of gathered: where every column of the four
+ * quads' taps lies within 16 texels of the leftmost, each of the (up to)
+ * four texel rows is one load of 16 words, and each vector of taps is
+ * picked from two of them.  The words are the ones the gathers read
+ * (soa_level2: w0 taps (i0, j0) and (i0, j1), w1 (i1, j0) and (i1, j1), in
+ * a level without layers and without a border), so the filter's bits are
+ * the same; the processor reads four rows where it would gather 64 words.
+ * False where the columns spread wider. */
+static inline __attribute__((always_inline)) bool
+rows_words(const struct tex_level *lv, const struct lanes_addr A[2], const struct lanes_addr *B,
+           taps_i w0[2], taps_i w1[2])
+{
+   const __m512i i0 = (__m512i)CONCAT(A[0].i0, A[1].i0), i1 = (__m512i)CONCAT(A[0].i1, A[1].i1);
+   const int32_t base = _mm512_reduce_min_epi32(_mm512_min_epi32(i0, i1));
+   const int32_t top = _mm512_reduce_max_epi32(_mm512_max_epi32(i0, i1));
+   if (top - base > 15)
+      return false;
+   /* the words of the row from `base` on, those inside the level */
+   const int32_t n = lv->w - base;
+   const __mmask16 m = n >= 16 ? (__mmask16)0xffff : (__mmask16)((1u << n) - 1);
+   const int32_t row[4] = { B->i0[0], B->i0[2], B->i1[0], B->i1[2] };
+   __m512i r[4];
+   for (unsigned k = 0; k < 4; k++)
+      r[k] = _mm512_maskz_loadu_epi32(
+         m, lv->data + (size_t)row[k] * lv->row_stride + (size_t)base * 4);
+   /* lane p of a vector: pixel p & 7, on pixel row (p >> 1) & 1 (16 picks
+    * the second row of a pair), texel row j0 in lanes 0-7, j1 in 8-15 */
+   const __m512i second = _mm512_setr_epi32(0, 0, 16, 16, 0, 0, 16, 16, 0, 0, 16, 16, 0, 0, 16,
+                                            16);
+   const __m512i b = _mm512_set1_epi32(base);
+#pragma GCC unroll 2
+   for (unsigned v = 0; v < 2; v++) {
+      const __m512i c0 = _mm512_add_epi32(_mm512_sub_epi32((__m512i)TWICE(A[v].i0), b), second);
+      const __m512i c1 = _mm512_add_epi32(_mm512_sub_epi32((__m512i)TWICE(A[v].i1), b), second);
+      w0[v] = (taps_i)_mm512_mask_blend_epi32(0xff00, _mm512_permutex2var_epi32(r[0], c0, r[1]),
+                                              _mm512_permutex2var_epi32(r[2], c0, r[3]));
+      w1[v] = (taps_i)_mm512_mask_blend_epi32(0xff00, _mm512_permutex2var_epi32(r[0], c1, r[1]),
+                                              _mm512_permutex2var_epi32(r[2], c1, r[3]));
+   }
+   return true;
+}
+#endif
+
 /* Four quads, two vectors of pair2, each step for both vectors before the
  * next: a pair's chain of dependent operations (coordinate input,
  * addressing, offsets, gathers, filter) is long, and one chain a call
@@ -936,7 +1003,8 @@ pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TE
       coords(u, &q[2 * v], &cs[v], &ct[v], &x);
       zoff[v] = pair_layers(u, &q[2 * v]);
    }
-   if (pairs4_addr_rows(u, k, linear, cs, ct, A, B, &st[0], &st[1], sh)) {
+   const bool rows = pairs4_addr_rows(u, k, linear, cs, ct, A, B, &st[0], &st[1], sh);
+   if (rows) {
       /* the counts are numbers, not masks: compared with zero first */
       if (dfxl_any((st[0].sat | st[0].flush | st[1].sat | st[1].flush) != 0))
          return false;
@@ -947,6 +1015,18 @@ pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TE
       if ((sh[0] | sh[1]) < 0)
          return false;
    }
+#if defined(__AVX512F__)
+   taps_i w0[2], w1[2];
+   if (linear && rows && !border && u->view.target != TEX_TARGET_2D_ARRAY &&
+       rows_words(&u->view.level[0], A, &B[0], w0, w1)) {
+      struct tex_unit *mu = (struct tex_unit *)u;
+      mu->rows_loaded++;
+#pragma GCC unroll 2
+      for (unsigned v = 0; v < 2; v++)
+         soa_filter2(u, false, &A[v], &B[v], w0[v], (taps_i){ 0 }, w1[v], (taps_i){ 0 },
+                     out[v]);
+   } else
+#endif
 #pragma GCC unroll 2
    for (unsigned v = 0; v < 2; v++)
       soa_level2(u, linear, border, 0, &A[v], &B[v], zoff[v], out[v]);

@@ -437,7 +437,7 @@ static void rows_memo_runs(unsigned units, unsigned calls)
                                                    : &rast_lanes_sse2);
    const struct numsys *ns = numsys_by_name("dfx24");
    unsigned bad = 0;
-   uint64_t taken = 0, four = 0;
+   uint64_t taken = 0, four = 0, loaded = 0;
    for (unsigned i = 0; i < units; i++) {
       struct tex_unit u;
       struct ns_stats s_each = { 0, 0 }, s_four = { 0, 0 };
@@ -481,6 +481,8 @@ static void rows_memo_runs(unsigned units, unsigned calls)
          tex_unit_sample2(&u, &q[2], TEX_LOD_IMPLICIT, each[1]);
          u.axes_shared = NULL;
          four += u.quad4 != NULL;
+         loaded += u.rows_loaded;
+         u.rows_loaded = 0;
          const bool ok = !memcmp(each, together, sizeof(together)) &&
                          s_each.sat == s_four.sat && s_each.flush == s_four.flush &&
                          axes_each == axes_four;
@@ -496,10 +498,14 @@ static void rows_memo_runs(unsigned units, unsigned calls)
    }
    CHECK(bad == 0, "rows memo: %u calls differ", bad);
    printf("  rows memo: %llu calls of four quads through a four-quad function, the rows' "
-          "addresses taken from the memo in %llu\n", (unsigned long long)four,
-          (unsigned long long)taken);
-   if (rast_lanes_have_avx512())
+          "addresses taken from the memo in %llu, the taps read from their texel rows in "
+          "%llu\n", (unsigned long long)four, (unsigned long long)taken,
+          (unsigned long long)loaded);
+   if (rast_lanes_have_avx512()) {
       CHECK(taken > 20000, "only %llu calls took the rows memo", (unsigned long long)taken);
+      CHECK(loaded > 10000, "only %llu calls read their taps from the texel rows",
+            (unsigned long long)loaded);
+   }
 }
 
 int main(void)
