@@ -261,14 +261,38 @@ static void quad_early(struct rast_context *rc, struct rast_quad *q)
 
 /* The same for a block of quads: one the tests reject whole is left out of
  * the shader's call, and a block they reject whole makes no call. */
+/* Whether a group's quads can take the early depth test on lanes
+ * (lanes.h's rast_zgroup_fn): each with its four pixels in the target (all
+ * four covered puts them there), and no two at one place (the lanes read
+ * every quad's depth before writing any). */
+static inline bool zgroup_ok(const struct rast_backend *be, const struct rast_quad *q,
+                             unsigned n)
+{
+   for (unsigned i = 0; i < n; i++) {
+      if (q[i].mask != 0xf && !(q[i].x + 1 < be->fb_w && q[i].y + 1 < be->fb_h))
+         return false;
+      for (unsigned j = 0; j < i; j++)
+         if (q[j].x == q[i].x && q[j].y == q[i].y)
+            return false;
+   }
+   return true;
+}
+
 static void group_early(struct rast_context *rc, struct rast_quad *q, unsigned n)
 {
    struct rast_backend *be = backend(rc);
    unsigned masks = 0, live = 0;
-   for (unsigned i = 0; i < n; i++) {
-      const unsigned m = early_zs(rc, be, &q[i]);
-      masks |= m << 4 * i;
-      live += m != 0;
+   if (be->zgroup && zgroup_ok(be, q, n)) {
+      masks = be->zgroup(be, q, n);
+      for (unsigned i = 0; i < n; i++)
+         live += (masks >> 4 * i & 15) != 0;
+      rc->stats.samples_passed += rast_popcount16(masks);
+   } else {
+      for (unsigned i = 0; i < n; i++) {
+         const unsigned m = early_zs(rc, be, &q[i]);
+         masks |= m << 4 * i;
+         live += m != 0;
+      }
    }
    rc->stats.skip_early_quads += be->skips_counted * (n - live);
    if (!masks || !be->shade_needed) {

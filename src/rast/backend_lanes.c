@@ -24,28 +24,38 @@ typedef uint32_t v16u __attribute__((vector_size(64)));
 
 C8_LANE_OPS(16, v16f, v16i, v16u)
 
-/* A row of quad i: its top-left pixel's word, and the row below. */
-static inline uint8_t *quad_row(const struct rast_cbuf_plan *p, const struct rast_quad *q)
+/* A quad's words in a buffer of 4-byte pixels: its row of two, then the
+ * row below (a quad's pixel order), from 8-byte loads (a row is 4-byte
+ * aligned only); and their store. */
+static inline __m128i quad_words(const uint8_t *base, ptrdiff_t stride, const struct rast_quad *q)
 {
-   return p->base + (ptrdiff_t)q->y * p->stride + (ptrdiff_t)q->x * 4;
+   const uint8_t *row = base + (ptrdiff_t)q->y * stride + (ptrdiff_t)q->x * 4;
+   uint64_t r0, r1;
+   memcpy(&r0, row, 8);
+   memcpy(&r1, row + stride, 8);
+   return _mm_set_epi64x((long long)r1, (long long)r0);
+}
+
+static inline void quad_words_store(uint8_t *base, ptrdiff_t stride, const struct rast_quad *q,
+                                    __m128i rows)
+{
+   uint8_t *row = base + (ptrdiff_t)q->y * stride + (ptrdiff_t)q->x * 4;
+   const uint64_t r0 = (uint64_t)_mm_cvtsi128_si64(rows),
+                  r1 = (uint64_t)_mm_extract_epi64(rows, 1);
+   memcpy(row, &r0, 8);
+   memcpy(row + stride, &r1, 8);
+}
+
+static inline __m128i rows_of(const struct rast_cbuf_plan *p, const struct rast_quad *q,
+                              bool drawn)
+{
+   return drawn ? quad_words(p->base, p->stride, q) : _mm_setzero_si128();
 }
 
 /* The words of the quads in `which` (bit i: quad i), their two rows of two
  * pixels in lanes 4i to 4i + 3; the others' lanes 0.  Built in registers
  * from 8-byte loads: through memory, a 64-byte load of what narrower
  * stores have just written waits for them to retire. */
-static inline __m128i rows_of(const struct rast_cbuf_plan *p, const struct rast_quad *q,
-                              bool drawn)
-{
-   if (!drawn)
-      return _mm_setzero_si128();
-   const uint8_t *row = quad_row(p, q);
-   uint64_t r0, r1;
-   memcpy(&r0, row, 8);
-   memcpy(&r1, row + p->stride, 8);
-   return _mm_set_epi64x((long long)r1, (long long)r0);
-}
-
 static inline v16u load16(const struct rast_cbuf_plan *p, const struct rast_quad *q,
                           unsigned which)
 {
@@ -59,11 +69,7 @@ static inline v16u load16(const struct rast_cbuf_plan *p, const struct rast_quad
 static inline void store_rows(const struct rast_cbuf_plan *p, const struct rast_quad *q,
                               __m128i rows)
 {
-   uint8_t *row = quad_row(p, q);
-   const uint64_t r0 = (uint64_t)_mm_cvtsi128_si64(rows),
-                  r1 = (uint64_t)_mm_extract_epi64(rows, 1);
-   memcpy(row, &r0, 8);               /* a row is 4-byte aligned only */
-   memcpy(row + p->stride, &r1, 8);
+   quad_words_store(p->base, p->stride, q, rows);
 }
 
 static inline void store16(const struct rast_cbuf_plan *p, const struct rast_quad *q,
@@ -171,11 +177,138 @@ rast_c8_group_fn LANES_FN(c8_group_lanes)(enum rast_color_layout layout, bool bl
    default: return NULL;
    }
 }
+
+/* ---- the early depth test of a group (lanes.h's rast_zgroup_fn) ----
+ *
+ * Sixteen lanes, quad i's pixels in lanes 4i to 4i + 3, each lane the
+ * per-quad path's operations on its pixel: zconv_mul's clamp and rule
+ * (backend_zs.c), the comparison with the stored 24 bits, and where it
+ * passes on a covered pixel the write that keeps the word's top byte.
+ * zconv_mul divides t = (2 z max + full) >> s by B with a multiply;
+ * here a division of doubles gives the same floor(t / B) for the states
+ * rast_zs_plan lets through (zdiv_exact_in_doubles). */
+
+/* Quad q's depth words (quad_words) and their store. */
+static inline __m128i zs_rows(const struct rast_backend *be, const struct rast_quad *q)
+{
+   return quad_words(be->zs_base, be->zs_stride, q);
+}
+
+static inline void zs_store_rows(const struct rast_backend *be, const struct rast_quad *q,
+                                 __m128i rows)
+{
+   quad_words_store(be->zs_base, be->zs_stride, q, rows);
+}
+
+/* The unorm depth of quads a and b (eight 64-bit lanes, then eight
+ * 32-bit ones).  The registers are read one by one: the span processor has
+ * just stored them so, and a wider load over several stores would wait for
+ * them to reach the cache. */
+static inline __m256i zs_unorm8(const struct rast_backend *be, const struct rast_quad *a,
+                                const struct rast_quad *b)
+{
+   __m512i z = _mm512_set_epi64(b->z[3], b->z[2], b->z[1], b->z[0], a->z[3], a->z[2], a->z[1],
+                                a->z[0]);
+   z = _mm512_min_epi64(_mm512_max_epi64(z, _mm512_setzero_si512()),
+                        _mm512_set1_epi64((long long)be->z_full));
+   const __m512i n = _mm512_add_epi64(_mm512_mullo_epi64(z, _mm512_set1_epi64((long long)(2 * be->z_max))),
+                                      _mm512_set1_epi64((long long)be->z_full));
+   const __m512i t = _mm512_srl_epi64(n, _mm_cvtsi32_si128((int)be->zdiv.s));
+   const __m512d q = _mm512_div_pd(_mm512_cvtepu64_pd(t), _mm512_set1_pd(be->zgroup_b));
+   return _mm512_cvttpd_epu32(q);
+}
+
+static inline __attribute__((always_inline)) __mmask16 zs_compare(enum rast_func f, __m512i z,
+                                                                    __m512i stored)
+{
+   switch (f) {
+   case RAST_FUNC_NEVER: return 0;
+   case RAST_FUNC_LESS: return _mm512_cmp_epu32_mask(z, stored, _MM_CMPINT_LT);
+   case RAST_FUNC_EQUAL: return _mm512_cmp_epu32_mask(z, stored, _MM_CMPINT_EQ);
+   case RAST_FUNC_LEQUAL: return _mm512_cmp_epu32_mask(z, stored, _MM_CMPINT_LE);
+   case RAST_FUNC_GREATER: return _mm512_cmp_epu32_mask(z, stored, _MM_CMPINT_NLE);
+   case RAST_FUNC_NOTEQUAL: return _mm512_cmp_epu32_mask(z, stored, _MM_CMPINT_NE);
+   case RAST_FUNC_GEQUAL: return _mm512_cmp_epu32_mask(z, stored, _MM_CMPINT_NLT);
+   default: return 0xffff;
+   }
+}
+
+static inline __attribute__((always_inline)) unsigned
+zgroup_u24lo(const struct rast_backend *be, const struct rast_quad *q, unsigned n,
+             const enum rast_func f, const bool write)
+{
+   /* quads past n repeat the first: read, never written or counted */
+   const struct rast_quad *q1 = n > 1 ? &q[1] : q, *q2 = n > 2 ? &q[2] : q,
+                          *q3 = n > 3 ? &q[3] : q;
+   const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(zs_unorm8(be, q, q1)),
+                                        zs_unorm8(be, q2, q3), 1);
+   __m512i words = _mm512_castsi128_si512(zs_rows(be, q));
+   words = _mm512_inserti32x4(words, zs_rows(be, q1), 1);
+   words = _mm512_inserti32x4(words, zs_rows(be, q2), 2);
+   words = _mm512_inserti32x4(words, zs_rows(be, q3), 3);
+   unsigned covered = 0;
+   for (unsigned i = 0; i < n; i++)
+      covered |= (q[i].mask & 15u) << 4 * i;
+   const unsigned pass =
+      covered & zs_compare(f, z, _mm512_and_si512(words, _mm512_set1_epi32(0xffffff)));
+   if (write && pass) {
+      const __m512i top = _mm512_and_si512(words, _mm512_set1_epi32((int)0xff000000u));
+      const __m512i out = _mm512_mask_blend_epi32((__mmask16)pass, words, _mm512_or_si512(top, z));
+      if (pass & 15)
+         zs_store_rows(be, q, _mm512_castsi512_si128(out));
+      if (pass >> 4 & 15)
+         zs_store_rows(be, q1, _mm512_extracti32x4_epi32(out, 1));
+      if (pass >> 8 & 15)
+         zs_store_rows(be, q2, _mm512_extracti32x4_epi32(out, 2));
+      if (pass >> 12 & 15)
+         zs_store_rows(be, q3, _mm512_extracti32x4_epi32(out, 3));
+   }
+   return pass;
+}
+
+#define ZGROUP_FNS(FUNC)                                                                     \
+   static unsigned zgroup_##FUNC##_0(const struct rast_backend *be, const struct rast_quad *q, \
+                                     unsigned n)                                             \
+   {                                                                                         \
+      return zgroup_u24lo(be, q, n, RAST_FUNC_##FUNC, false);                                \
+   }                                                                                         \
+   static unsigned zgroup_##FUNC##_1(const struct rast_backend *be, const struct rast_quad *q, \
+                                     unsigned n)                                             \
+   {                                                                                         \
+      return zgroup_u24lo(be, q, n, RAST_FUNC_##FUNC, true);                                 \
+   }
+
+ZGROUP_FNS(NEVER)
+ZGROUP_FNS(LESS)
+ZGROUP_FNS(EQUAL)
+ZGROUP_FNS(LEQUAL)
+ZGROUP_FNS(GREATER)
+ZGROUP_FNS(NOTEQUAL)
+ZGROUP_FNS(GEQUAL)
+ZGROUP_FNS(ALWAYS)
+
+rast_zgroup_fn LANES_FN(zgroup_lanes)(enum rast_func func, bool write)
+{
+   static const rast_zgroup_fn fns[8][2] = {
+      { zgroup_NEVER_0, zgroup_NEVER_1 },       { zgroup_LESS_0, zgroup_LESS_1 },
+      { zgroup_EQUAL_0, zgroup_EQUAL_1 },       { zgroup_LEQUAL_0, zgroup_LEQUAL_1 },
+      { zgroup_GREATER_0, zgroup_GREATER_1 },   { zgroup_NOTEQUAL_0, zgroup_NOTEQUAL_1 },
+      { zgroup_GEQUAL_0, zgroup_GEQUAL_1 },     { zgroup_ALWAYS_0, zgroup_ALWAYS_1 },
+   };
+   return fns[func & 7][write];
+}
 #else
 rast_c8_group_fn LANES_FN(c8_group_lanes)(enum rast_color_layout layout, bool blend)
 {
    (void)layout;
    (void)blend;
+   return NULL;
+}
+
+rast_zgroup_fn LANES_FN(zgroup_lanes)(enum rast_func func, bool write)
+{
+   (void)func;
+   (void)write;
    return NULL;
 }
 #endif

@@ -124,6 +124,12 @@ struct rast_backend {
    unsigned z_frac;               /* frac_bits of the profile */
    unsigned z_nbits;              /* N */
    struct rast_zdiv zdiv;         /* the rule's division as a multiply */
+   /* A group's early depth test on lanes (lanes.h), or NULL; zgroup_b is
+    * the rule's divisor (2 z_full >> zdiv.s) as a double, and the target's
+    * size says which quads have all four pixels in it. */
+   rast_zgroup_fn zgroup;
+   double zgroup_b;
+   int fb_w, fb_h;
 
    /* Colour. */
    bool shade_needed;             /* false: no visible effect of the shader */

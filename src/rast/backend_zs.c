@@ -124,7 +124,27 @@ uint32_t rast_zdiv_to_unorm(const struct rast_zdiv *d, uint64_t z, uint64_t full
    const uint64_t t = (2 * z * max + full) >> d->s;
    return (uint32_t)(((rast_u128)t * d->m) >> d->k);
 }
+
+/* Whether the same floor(t / B) comes from a division of doubles, as the
+ * group's lanes take it (backend_lanes.c): every t below 2^53 is a double
+ * exactly, and the quotient's rounding never reaches the next integer
+ * where half its ulp is below 1/B (a quotient that is not an integer lies
+ * at least 1/B below the next one).  The quotient is at most max, below
+ * 2^nbits, where the ulp is at most 2^(nbits - 53). */
+static bool zdiv_exact_in_doubles(const struct rast_zdiv *d, uint64_t full, uint64_t max)
+{
+   const uint64_t B = (2 * full) >> d->s;
+   const rast_u128 tmax = ((rast_u128)2 * full * max + full) >> d->s;
+   const unsigned nbits = max ? 64 - (unsigned)__builtin_clzll(max) : 1;
+   return tmax < ((rast_u128)1 << 53) && nbits < 53 && B < (UINT64_C(1) << (53 - nbits));
+}
 #else
+static bool zdiv_exact_in_doubles(const struct rast_zdiv *d, uint64_t full, uint64_t max)
+{
+   (void)d; (void)full; (void)max;
+   return false;
+}
+
 bool rast_zdiv_init(struct rast_zdiv *d, uint64_t full, uint64_t max)
 {
    (void)d; (void)full; (void)max;
@@ -508,6 +528,9 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
       be->zs = NULL;
 
    be->zconv = NULL;
+   be->zgroup = NULL;
+   be->fb_w = (int)rc->fb.width;
+   be->fb_h = (int)rc->fb.height;
    if (!be->depth_test)
       return;
    const bool is_float = be->zfamily == RAST_ZF_F32 || be->zfamily == RAST_ZF_F32S8;
@@ -523,4 +546,14 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
       be->zconv = zconv_div;
    else
       be->zconv = zconv_div_wide;
+
+   /* A group's early test on lanes where the state is depth only on a
+    * 24-bit buffer and the conversion the multiply's (RAST_OPT_SCALAR
+    * keeps the per-quad functions) */
+   if (be->zconv == zconv_mul && be->zs && !be->stencil_test &&
+       be->zfamily == RAST_ZF_U24LO && rast_lanes()->zgroup &&
+       zdiv_exact_in_doubles(&be->zdiv, be->z_full, be->z_max)) {
+      be->zgroup = rast_lanes()->zgroup(be->depth_func, be->depth_write);
+      be->zgroup_b = (double)((2 * be->z_full) >> be->zdiv.s);
+   }
 }

@@ -26,6 +26,17 @@ typedef void (*rast_c8_group_fn)(const struct rast_cbuf_plan *p, const struct ra
                                  const struct rast_shaded_quad *out, unsigned which,
                                  unsigned masks);
 
+/* The early depth test of a group's n quads (backend_lanes.c) where the
+ * state is depth only, on a 24-bit buffer in the low bits of each word
+ * (RAST_ZF_U24LO), with zconv_mul's conversion: each lane a pixel's clamp,
+ * conversion, comparison and write as the per-quad functions do them.
+ * Returns the pixels that pass, bits 4i to 4i + 3 for q[i].  The quads lie
+ * apart, each with its four pixels in the target or all four covered
+ * (backend.c's zgroup_ok). */
+struct rast_backend;
+typedef unsigned (*rast_zgroup_fn)(const struct rast_backend *be, const struct rast_quad *q,
+                                   unsigned n);
+
 /* The PERSPECTIVE components a primitive can have (front.h's FR_MAX_COMP). */
 #define RAST_PLANES_MAX (RAST_MAX_VARYINGS * 4)
 
@@ -85,6 +96,9 @@ struct rast_lanes {
     * NULL for other layouts, and outside the 512-bit set (sixteen lanes
     * there are as many vectors as the four quads' own). */
    rast_c8_group_fn (*c8_group)(enum rast_color_layout layout, bool blend);
+   /* The early depth test of a group for a depth func, writing or not;
+    * NULL outside the 512-bit set. */
+   rast_zgroup_fn (*zgroup)(enum rast_func func, bool write);
 };
 
 #define LANES_GLUE2(a, b) a##b

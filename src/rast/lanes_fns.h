@@ -15,6 +15,7 @@ bool LANES_FN(planes_dfx19_lanes)(const float *const vtx[3], unsigned p0, unsign
 tex_quad_fn LANES_FN(tex_dfx19_2d_lanes)(const struct tex_unit *u, bool noskip, bool nolod,
                                         tex_quad2_fn *pair, tex_quad4_fn *four);
 rast_c8_group_fn LANES_FN(c8_group_lanes)(enum rast_color_layout layout, bool blend);
+rast_zgroup_fn LANES_FN(zgroup_lanes)(enum rast_func func, bool write);
 
 /* The AVX2 set's, which the 512-bit one takes for a lone quad. */
 void persp_dfx19_lanes_avx2(struct rast_front *fr, struct rast_quad *q);

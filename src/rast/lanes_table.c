@@ -29,4 +29,5 @@ const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
 #endif
    .tex_dfx19_2d = LANES_FN(tex_dfx19_2d_lanes),
    .c8_group = LANES_FN(c8_group_lanes),
+   .zgroup = LANES_FN(zgroup_lanes),
 };

@@ -1750,6 +1750,131 @@ static void test_logicop_paths(void)
    printf("logic op behind depth, two targets: %s\n", failures == before ? "ok" : "FAILED");
 }
 
+/* The early depth test of a group on lanes (backend_lanes.c) against the
+ * per-quad functions (RAST_OPT_SCALAR): every func, with and without
+ * writes, on both layouts with 24 bits in the low bits of a word (the
+ * stencil or padding byte beside them random and kept), groups of one to
+ * four quads at distinct places, some partly covered at the target's last
+ * column and row (those groups take the per-quad path), registers below 0
+ * and above full scale.  The same depth and colour bytes, the same counts. */
+static void test_depth_groups(void)
+{
+   static uint8_t zs[2][ZS_BYTES], cb[2][CBUF_BYTES];
+   if (!rast_lanes()->zgroup(RAST_FUNC_LESS, true)) {
+      printf("depth groups on lanes: not in this instruction set (%s)\n", rast_lanes()->isa);
+      return;
+   }
+   static const enum rast_zs_layout layouts[] = { RAST_ZS_Z24_S8, RAST_ZS_Z24X8 };
+   const unsigned fw = W - 1, fh = H - 1;        /* a last column and row of half quads */
+   unsigned before = failures, lanes_groups = 0, groups = 0;
+   for (unsigned li = 0; li < 2; li++)
+      for (unsigned f = 0; f < 8; f++)
+         for (unsigned wr = 0; wr < 2; wr++) {
+            struct zs_setup s;
+            memset(&s, 0, sizeof s);
+            s.prof = profile_named("seed");
+            s.layout = layouts[li];
+            s.dsa.depth_enabled = true;
+            s.dsa.depth_func = (enum rast_func)f;
+            s.dsa.depth_writemask = wr;
+            int64_t zpool[8];
+            float dpool[8];
+            make_pools(s.prof, zpool, dpool);
+            fill_zs(&s, zs[0], zpool, dpool);
+            memcpy(zs[1], zs[0], ZS_BYTES);
+            for (unsigned i = 0; i < CBUF_BYTES; i++)
+               cb[0][i] = cb[1][i] = (uint8_t)rnd64();
+            struct rast_context *rc[2];
+            struct shader_data sd[2];
+            for (unsigned m = 0; m < 2; m++) {
+               rc[m] = rast_create(s.prof);
+               rast_set_options(rc[m], m ? RAST_OPT_SCALAR : 0);
+               memset(&sd[m], 0, sizeof sd[m]);
+               struct rast_framebuffer fb;
+               memset(&fb, 0, sizeof fb);
+               fb.width = fw;
+               fb.height = fh;
+               fb.nr_cbufs = 1;
+               fb.cbuf[0] = make_cbuf(TF_RGBA8, cb[m]);
+               fb.zs.base = zs[m];
+               fb.zs.layout = s.layout;
+               fb.zs.stride = zs_stride(s.layout);
+               rast_set_framebuffer(rc[m], &fb);
+               struct rast_blend_state bs;
+               memset(&bs, 0, sizeof bs);
+               bs.rt[0].colormask = 0xf;
+               rast_set_blend(rc[m], &bs);
+               rast_set_depth_stencil(rc[m], &s.dsa);
+               struct rast_shader fs = make_shader(&sd[m], 1, false, false, false);
+               fs.shade_n = shade_group_src;
+               fs.group = RAST_GROUP_MAX;
+               rast_set_shader(rc[m], &fs);
+               rast_validate(rc[m]);
+            }
+            const struct rast_backend *be0 = rc[0]->back_priv, *be1 = rc[1]->back_priv;
+            /* ALWAYS without a write has no depth work at all */
+            const bool work = f != RAST_FUNC_ALWAYS || wr;
+            CHECK(rc[0]->quads && be0 && !be0->zgroup == !work,
+                  "%s func %u write %u: %s group on lanes", zs_name(s.layout), f, wr,
+                  work ? "no" : "a");
+            CHECK(be1 && !be1->zgroup, "RAST_OPT_SCALAR keeps the per-quad depth test");
+            for (unsigned g = 0; g < 300; g++) {
+               struct rast_quad q[RAST_GROUP_MAX];
+               memset(q, 0, sizeof q);
+               const unsigned n = 1 + rnd(RAST_GROUP_MAX);
+               bool lanes = true;
+               for (unsigned i = 0; i < n; i++) {
+                  bool apart;
+                  do {
+                     q[i].x = 2 * (int)rnd(W / 2);
+                     q[i].y = 2 * (int)rnd(H / 2);
+                     apart = true;
+                     for (unsigned j = 0; j < i; j++)
+                        apart &= q[j].x != q[i].x || q[j].y != q[i].y;
+                  } while (!apart);
+                  unsigned mask = rnd(3) ? 0xf : 1 + rnd(15);
+                  if ((unsigned)q[i].x + 1 >= fw)
+                     mask &= 0x5;               /* the right column is outside */
+                  if ((unsigned)q[i].y + 1 >= fh)
+                     mask &= 0x3;               /* the bottom row is outside */
+                  q[i].mask = mask ? mask : 1;
+                  for (unsigned k = 0; k < 4; k++)
+                     q[i].z[k] = rnd(8) ? zpool[rnd(8)] : (int64_t)(rnd64() % (1u << 31));
+                  for (unsigned c = 0; c < 4; c++)
+                     for (unsigned k = 0; k < 4; k++)
+                        group_src[q[i].x / 2][q[i].y / 2][c][k] = (float)rnd(256) / 255.0f;
+                  lanes &= q[i].mask == 0xf ||
+                           ((unsigned)q[i].x + 1 < fw && (unsigned)q[i].y + 1 < fh);
+               }
+               groups++;
+               lanes_groups += lanes;
+               for (unsigned m = 0; m < 2; m++) {
+                  struct rast_quad qm[RAST_GROUP_MAX];
+                  memcpy(qm, q, sizeof qm);
+                  rc[m]->quads(rc[m], qm, n);
+               }
+            }
+            CHECK(memcmp(zs[0], zs[1], ZS_BYTES) == 0, "%s func %u write %u: depth groups on "
+                  "lanes and per quad leave different depth bytes", zs_name(s.layout), f, wr);
+            CHECK(memcmp(cb[0], cb[1], CBUF_BYTES) == 0, "%s func %u write %u: different "
+                  "colour bytes", zs_name(s.layout), f, wr);
+            const struct rast_stats *a = rast_get_stats(rc[0]), *b = rast_get_stats(rc[1]);
+            CHECK(a->samples_passed == b->samples_passed && a->pixels_shaded == b->pixels_shaded &&
+                     a->skip_early_quads == b->skip_early_quads,
+                  "%s func %u write %u: samples passed %llu vs %llu, shaded %llu vs %llu, "
+                  "rejected quads %llu vs %llu", zs_name(s.layout), f, wr,
+                  (unsigned long long)a->samples_passed, (unsigned long long)b->samples_passed,
+                  (unsigned long long)a->pixels_shaded, (unsigned long long)b->pixels_shaded,
+                  (unsigned long long)a->skip_early_quads, (unsigned long long)b->skip_early_quads);
+            rast_destroy(rc[0]);
+            rast_destroy(rc[1]);
+         }
+   CHECK(lanes_groups > groups / 4, "only %u of %u groups could take the lanes", lanes_groups,
+         groups);
+   printf("depth groups on lanes against per quad: %u groups, %u of them on lanes: %s\n",
+          groups, lanes_groups, failures == before ? "ok" : "FAILED");
+}
+
 int main(void)
 {
    const char *seed = getenv("FIXPIPE_TEST_SEED");
@@ -1769,6 +1894,7 @@ int main(void)
    test_blend();
    test_affine_lanes();
    test_affine_groups();
+   test_depth_groups();
    test_colormask();
    test_color_routing();
    test_no_shader();
