@@ -259,8 +259,6 @@ static void quad_early(struct rast_context *rc, struct rast_quad *q)
       color_stage(be, &be->out[0], q->x, q->y, mask);
 }
 
-/* The same for a block of quads: one the tests reject whole is left out of
- * the shader's call, and a block they reject whole makes no call. */
 /* Whether a group's quads can take the early depth test on lanes
  * (lanes.h's rast_zgroup_fn): each with its four pixels in the target (all
  * four covered puts them there), and no two at one place (the lanes read
@@ -278,6 +276,8 @@ static inline bool zgroup_ok(const struct rast_backend *be, const struct rast_qu
    return true;
 }
 
+/* The same for a block of quads: one the tests reject whole is left out of
+ * the shader's call, and a block they reject whole makes no call. */
 static void group_early(struct rast_context *rc, struct rast_quad *q, unsigned n)
 {
    struct rast_backend *be = backend(rc);
