@@ -260,19 +260,15 @@ static void quad_early(struct rast_context *rc, struct rast_quad *q)
 }
 
 /* Whether a group's quads can take the early depth test on lanes
- * (lanes.h's rast_zgroup_fn): each with its four pixels in the target (all
- * four covered puts them there), and no two at one place (the lanes read
- * every quad's depth before writing any). */
+ * (lanes.h's rast_zgroup_fn): each with its four pixels in the target.  No
+ * two are at one place (rast_quads_func), so reading every quad's depth
+ * before writing any is what one quad after the other would read. */
 static inline bool zgroup_ok(const struct rast_backend *be, const struct rast_quad *q,
                              unsigned n)
 {
-   for (unsigned i = 0; i < n; i++) {
-      if (q[i].mask != 0xf && !(q[i].x + 1 < be->fb_w && q[i].y + 1 < be->fb_h))
+   for (unsigned i = 0; i < n; i++)
+      if (!rast_quad_whole(q[i].x, q[i].y, q[i].mask, be->fb_w, be->fb_h))
          return false;
-      for (unsigned j = 0; j < i; j++)
-         if (q[j].x == q[i].x && q[j].y == q[i].y)
-            return false;
-   }
    return true;
 }
 
@@ -283,7 +279,7 @@ static void group_early(struct rast_context *rc, struct rast_quad *q, unsigned n
    struct rast_backend *be = backend(rc);
    unsigned masks = 0, live = 0;
    if (be->zgroup && zgroup_ok(be, q, n)) {
-      masks = be->zgroup(be, q, n);
+      masks = be->zgroup(be, q, n, group_masks(q, n));
       for (unsigned i = 0; i < n; i++)
          live += (masks >> 4 * i & 15) != 0;
       rc->stats.samples_passed += rast_popcount16(masks);

@@ -188,18 +188,6 @@ rast_c8_group_fn LANES_FN(c8_group_lanes)(enum rast_color_layout layout, bool bl
  * here a division of doubles gives the same floor(t / B) for the states
  * rast_zs_plan lets through (zdiv_exact_in_doubles). */
 
-/* Quad q's depth words (quad_words) and their store. */
-static inline __m128i zs_rows(const struct rast_backend *be, const struct rast_quad *q)
-{
-   return quad_words(be->zs_base, be->zs_stride, q);
-}
-
-static inline void zs_store_rows(const struct rast_backend *be, const struct rast_quad *q,
-                                 __m128i rows)
-{
-   quad_words_store(be->zs_base, be->zs_stride, q, rows);
-}
-
 /* The unorm depth of quads a and b (eight 64-bit lanes, then eight
  * 32-bit ones).  The registers are read one by one: the span processor has
  * just stored them so, and a wider load over several stores would wait for
@@ -235,47 +223,46 @@ static inline __attribute__((always_inline)) __mmask16 zs_compare(enum rast_func
 
 static inline __attribute__((always_inline)) unsigned
 zgroup_u24lo(const struct rast_backend *be, const struct rast_quad *q, unsigned n,
-             const enum rast_func f, const bool write)
+             unsigned covered, const enum rast_func f, const bool write)
 {
    /* quads past n repeat the first: read, never written or counted */
    const struct rast_quad *q1 = n > 1 ? &q[1] : q, *q2 = n > 2 ? &q[2] : q,
                           *q3 = n > 3 ? &q[3] : q;
    const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(zs_unorm8(be, q, q1)),
                                         zs_unorm8(be, q2, q3), 1);
-   __m512i words = _mm512_castsi128_si512(zs_rows(be, q));
-   words = _mm512_inserti32x4(words, zs_rows(be, q1), 1);
-   words = _mm512_inserti32x4(words, zs_rows(be, q2), 2);
-   words = _mm512_inserti32x4(words, zs_rows(be, q3), 3);
-   unsigned covered = 0;
-   for (unsigned i = 0; i < n; i++)
-      covered |= (q[i].mask & 15u) << 4 * i;
+   uint8_t *const base = be->zs_base;
+   const ptrdiff_t stride = be->zs_stride;
+   __m512i words = _mm512_castsi128_si512(quad_words(base, stride, q));
+   words = _mm512_inserti32x4(words, quad_words(base, stride, q1), 1);
+   words = _mm512_inserti32x4(words, quad_words(base, stride, q2), 2);
+   words = _mm512_inserti32x4(words, quad_words(base, stride, q3), 3);
    const unsigned pass =
       covered & zs_compare(f, z, _mm512_and_si512(words, _mm512_set1_epi32(0xffffff)));
    if (write && pass) {
       const __m512i top = _mm512_and_si512(words, _mm512_set1_epi32((int)0xff000000u));
       const __m512i out = _mm512_mask_blend_epi32((__mmask16)pass, words, _mm512_or_si512(top, z));
       if (pass & 15)
-         zs_store_rows(be, q, _mm512_castsi512_si128(out));
+         quad_words_store(base, stride, q, _mm512_castsi512_si128(out));
       if (pass >> 4 & 15)
-         zs_store_rows(be, q1, _mm512_extracti32x4_epi32(out, 1));
+         quad_words_store(base, stride, q1, _mm512_extracti32x4_epi32(out, 1));
       if (pass >> 8 & 15)
-         zs_store_rows(be, q2, _mm512_extracti32x4_epi32(out, 2));
+         quad_words_store(base, stride, q2, _mm512_extracti32x4_epi32(out, 2));
       if (pass >> 12 & 15)
-         zs_store_rows(be, q3, _mm512_extracti32x4_epi32(out, 3));
+         quad_words_store(base, stride, q3, _mm512_extracti32x4_epi32(out, 3));
    }
    return pass;
 }
 
 #define ZGROUP_FNS(FUNC)                                                                     \
    static unsigned zgroup_##FUNC##_0(const struct rast_backend *be, const struct rast_quad *q, \
-                                     unsigned n)                                             \
+                                     unsigned n, unsigned covered)                           \
    {                                                                                         \
-      return zgroup_u24lo(be, q, n, RAST_FUNC_##FUNC, false);                                \
+      return zgroup_u24lo(be, q, n, covered, RAST_FUNC_##FUNC, false);                       \
    }                                                                                         \
    static unsigned zgroup_##FUNC##_1(const struct rast_backend *be, const struct rast_quad *q, \
-                                     unsigned n)                                             \
+                                     unsigned n, unsigned covered)                           \
    {                                                                                         \
-      return zgroup_u24lo(be, q, n, RAST_FUNC_##FUNC, true);                                 \
+      return zgroup_u24lo(be, q, n, covered, RAST_FUNC_##FUNC, true);                        \
    }
 
 ZGROUP_FNS(NEVER)

@@ -164,6 +164,15 @@ uint8_t rast_float_to_ubyte(float f);
 bool rast_logicop_plan(struct rast_cbuf_plan *p, enum rast_color_layout layout,
                        enum rast_logicop op);
 
+/* Whether a quad's four pixels are all in a w x h target: a quad whose
+ * four are covered has them there (coverage is clipped to the target), and
+ * a partly covered one must not be at the last column or row.  The lanes
+ * read and write a quad's two rows of two pixels whole. */
+static inline bool rast_quad_whole(int x, int y, unsigned mask, int w, int h)
+{
+   return mask == 0xf || (x + 1 < w && y + 1 < h);
+}
+
 static inline unsigned rast_popcount4(unsigned mask)
 {
    return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1);

@@ -76,7 +76,7 @@ static inline v4u c8_merge(v4u out, v4u d, unsigned mask)
  * written back as they were; a quad is one thread's). */
 static inline bool c8_lanes_ok(const struct rast_cbuf_plan *p, int x, int y, unsigned mask)
 {
-   return p->quad4 && (mask == 0xf || (x + 1 < p->fb_w && y + 1 < p->fb_h));
+   return p->quad4 && rast_quad_whole(x, y, mask, p->fb_w, p->fb_h);
 }
 
 /* rast_store8_quad on the lanes: every channel converted, unblended. */

@@ -30,12 +30,12 @@ typedef void (*rast_c8_group_fn)(const struct rast_cbuf_plan *p, const struct ra
  * state is depth only, on a 24-bit buffer in the low bits of each word
  * (RAST_ZF_U24LO), with zconv_mul's conversion: each lane a pixel's clamp,
  * conversion, comparison and write as the per-quad functions do them.
- * Returns the pixels that pass, bits 4i to 4i + 3 for q[i].  The quads lie
- * apart, each with its four pixels in the target or all four covered
+ * `covered`: the quads' masks, bits 4i to 4i + 3 for q[i]; returns those
+ * that pass.  The quads lie apart, each with its four pixels in the target
  * (backend.c's zgroup_ok). */
 struct rast_backend;
 typedef unsigned (*rast_zgroup_fn)(const struct rast_backend *be, const struct rast_quad *q,
-                                   unsigned n);
+                                   unsigned n, unsigned covered);
 
 /* The PERSPECTIVE components a primitive can have (front.h's FR_MAX_COMP). */
 #define RAST_PLANES_MAX (RAST_MAX_VARYINGS * 4)

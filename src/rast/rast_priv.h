@@ -13,7 +13,7 @@ struct rast_context;
 /* The back end's entry, chosen by rast_backend_validate(): the quad's mask is
  * already clipped to the scissor and the framebuffer. */
 typedef void (*rast_quad_func)(struct rast_context *rc, struct rast_quad *q);
-/* n quads of a primitive, one after another in q. */
+/* n quads of a primitive, one after another in q, each at a place of its own. */
 typedef void (*rast_quads_func)(struct rast_context *rc, struct rast_quad *q, unsigned n);
 
 struct rast_context {
