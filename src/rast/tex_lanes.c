@@ -824,11 +824,14 @@ pair_addr(const struct tex_unit *u, const struct quad_kind k, const bool linear,
    return (int)s_col + (int)t_row;
 }
 
-/* The four quads' addresses where, in both vectors, s follows the
- * columns and t the rows, and both vectors are on the same two rows (a
- * 2-D window's four quads side by side): the eight columns' s through the
- * address unit in one vector, and the two rows' t through it only where
- * the unit's rows memo does not hold them already.  The memo holds rows
+/* The four quads' addresses where, in both vectors, t follows the rows,
+ * and both vectors are on the same two rows (a 2-D window's four quads
+ * side by side): the two rows' t through the address unit only where the
+ * unit's rows memo does not hold them already, and s, where it follows
+ * the columns in both vectors, as the eight columns' s in one vector, or
+ * else each pixel's (pair_addr's passes: a coordinate interpolated across
+ * the rows may differ in its last bits from one row to the next, as in
+ * half of glmark2's desktop blur).  The memo holds rows
  * whose pass raised nothing, and a pass is a function of its inputs and
  * the unit's state (its wrap modes and filter too: a unit's four-quad
  * function filters one way): taking it gives the very registers, and
@@ -843,16 +846,23 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
 {
    /* the registers compared bit for bit, as s_by_column and t_by_row do */
    const dfxl_i t_0 = (dfxl_i)ct[0].v, t_1 = (dfxl_i)ct[1].v;
-   if (k.ws != k.wt || !s_by_column(cs[0]) || !s_by_column(cs[1]) || !t_by_row(ct[0]) ||
-       !t_by_row(ct[1]) || t_0[0] != t_1[0] || t_0[2] != t_1[2])
+   if (k.ws != k.wt || !t_by_row(ct[0]) || !t_by_row(ct[1]) || t_0[0] != t_1[0] ||
+       t_0[2] != t_1[2])
       return false;
    const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
-   const struct dfxl sv = { __builtin_shufflevector(cs[0].v, cs[1].v, 0, 1, 4, 5, 8, 9, 12,
-                                                    13) };
-   struct lanes_addr S;
-   lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], sv, &S, st_s);
-   A[0] = SPREAD(S, 0, 1, 0, 1, 2, 3, 2, 3);
-   A[1] = SPREAD(S, 4, 5, 4, 5, 6, 7, 6, 7);
+   const bool s_col = s_by_column(cs[0]) && s_by_column(cs[1]);
+   if (s_col) {
+      const struct dfxl sv = { __builtin_shufflevector(cs[0].v, cs[1].v, 0, 1, 4, 5, 8, 9,
+                                                       12, 13) };
+      struct lanes_addr S;
+      lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], sv, &S, st_s);
+      A[0] = SPREAD(S, 0, 1, 0, 1, 2, 3, 2, 3);
+      A[1] = SPREAD(S, 4, 5, 4, 5, 6, 7, 6, 7);
+   } else {
+#pragma GCC unroll 2
+      for (unsigned v = 0; v < 2; v++)
+         lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], cs[v], &A[v], st_s);
+   }
    struct tex_rows_memo *m = (struct tex_rows_memo *)&u->rows_memo;
    int64_t m0, m1;
    memcpy(&m0, &m->t[0], 8);
@@ -874,7 +884,11 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
       memcpy(m->w, &B[0].w, sizeof(m->w));
    }
    B[1] = B[0];
-   sh[0] = sh[1] = 2;
+   /* the quad-axes each vector's pair would count: t, and s where it
+    * follows the columns in that vector (the lanes' registers are the same
+    * either way: a pass is lane by lane) */
+   for (unsigned v = 0; v < 2; v++)
+      sh[v] = 1 + (int)s_by_column(cs[v]);
    return true;
 }
 

@@ -412,15 +412,16 @@ static void quads_vs_generic(const char *name, bool fast, unsigned units, unsign
 }
 
 /* Four quads side by side on the same two rows, as a 2-D window's quad
- * row gives them: s follows the eight columns from `s0`, t the two rows
- * `row`. */
+ * row gives them: s follows the eight columns from `s0`, moved by `ds_row`
+ * on the second row (a coordinate interpolated across the rows: 0, or a
+ * few last bits), t the two rows `row`. */
 static void axis_four(struct tex_quad four[4], const struct tex_unit *u, float s0, float ds,
-                      const float row[2])
+                      float ds_row, const float row[2])
 {
    (void)u;
    for (unsigned i = 0; i < 4; i++)
       for (unsigned p = 0; p < TEX_QUAD; p++) {
-         four[i].s[p] = s0 + (float)(2 * i + (p & 1)) * ds;
+         four[i].s[p] = s0 + (float)(2 * i + (p & 1)) * ds + (float)(p >> 1) * ds_row;
          four[i].t[p] = row[p >> 1];
       }
 }
@@ -437,7 +438,7 @@ static void rows_memo_runs(unsigned units, unsigned calls)
                                                    : &rast_lanes_sse2);
    const struct numsys *ns = numsys_by_name("dfx24");
    unsigned bad = 0;
-   uint64_t taken = 0, four = 0, loaded = 0;
+   uint64_t taken = 0, four = 0, loaded = 0, loaded_moved = 0;
    for (unsigned i = 0; i < units; i++) {
       struct tex_unit u;
       struct ns_stats s_each = { 0, 0 }, s_four = { 0, 0 };
@@ -460,12 +461,15 @@ static void rows_memo_runs(unsigned units, unsigned calls)
          rows[2][same] = rows[0][same];
       float s0 = rndu() * scale;
       const float ds = ldexpf(rndu(), -(int)rndn(14)) * scale;
+      /* s the same down each column in half the units, and in the others
+       * moved on the second row by a few of its last bits or more */
+      const float ds_row = rndn(2) ? 0.0f : ldexpf(ds, -(int)(4 + rndn(20)));
       for (unsigned c = 0; c < calls; c++) {
          /* mostly the same rows, moving along them; now and then another */
          const unsigned r = rndn(4) ? 0 : 1 + rndn(2);
          struct tex_quad q[4];
          memset(q, 0, sizeof(q));
-         axis_four(q, &u, s0, ds, rows[r]);
+         axis_four(q, &u, s0, ds, ds_row, rows[r]);
          s0 += 8 * ds;
          const struct tex_rows_memo before = u.rows_memo;
          float each[2][2][4][TEX_QUAD], together[4][4][TEX_QUAD];
@@ -482,6 +486,7 @@ static void rows_memo_runs(unsigned units, unsigned calls)
          u.axes_shared = NULL;
          four += u.quad4 != NULL;
          loaded += u.rows_loaded;
+         loaded_moved += ds_row != 0.0f ? u.rows_loaded : 0;
          u.rows_loaded = 0;
          const bool ok = !memcmp(each, together, sizeof(together)) &&
                          s_each.sat == s_four.sat && s_each.flush == s_four.flush &&
@@ -499,12 +504,15 @@ static void rows_memo_runs(unsigned units, unsigned calls)
    CHECK(bad == 0, "rows memo: %u calls differ", bad);
    printf("  rows memo: %llu calls of four quads through a four-quad function, the rows' "
           "addresses taken from the memo in %llu, the taps read from their texel rows in "
-          "%llu\n", (unsigned long long)four, (unsigned long long)taken,
-          (unsigned long long)loaded);
+          "%llu (%llu of them with s moved on the second row)\n", (unsigned long long)four,
+          (unsigned long long)taken, (unsigned long long)loaded,
+          (unsigned long long)loaded_moved);
    if (rast_lanes_have_avx512()) {
       CHECK(taken > 20000, "only %llu calls took the rows memo", (unsigned long long)taken);
       CHECK(loaded > 10000, "only %llu calls read their taps from the texel rows",
             (unsigned long long)loaded);
+      CHECK(loaded_moved > 3000, "only %llu calls with s moved on the second row read their "
+            "taps from the texel rows", (unsigned long long)loaded_moved);
    }
 }
 
