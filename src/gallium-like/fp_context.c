@@ -192,10 +192,12 @@ static void fp_print_stats(const struct fp_context *fp)
            PRIu64 "\n", rast_get_profile(fp->rast)->tile_size, st->tile_passes, st->tile_guard);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
-           "; vertex shaders compiled %" PRIu64 "; hot before a batch %" PRIu64 "\n",
+           "; vertex shaders compiled %" PRIu64 "; hot before a batch %" PRIu64
+           ", hot in a later frame %" PRIu64 "\n",
            fp->jit ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
-           quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead);
+           quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead,
+           fp->jit_stats.hot_loop);
    fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64
            "; large clears filled by one thread %" PRIu64 ", divided %" PRIu64 "\n",
            rast_get_threads(fp->rast), serial, parallel, jobs_serial, jobs_parallel);

@@ -59,9 +59,12 @@ struct fp_fragment_shader {
    uint8_t coord_other[RAST_MAX_VARYINGS];
    /* Tiered execution: interpreted until hot, then compiled (fp_fs.c). */
    uint64_t quads_interpreted;
+   bool drawn;                    /* first_frame: the frame of its first batch */
+   unsigned long first_frame;
    struct fp_jit_variant *jit;
    bool jit_failed;
    bool hot_ahead;                /* a batch about to be drawn makes it hot */
+   bool hot_loop;                 /* hot by the rendering loop's rule only */
 };
 
 /* Tiered like fragment shaders: draw runs it in tgsi_exec until it is hot,
@@ -74,6 +77,8 @@ struct fp_vertex_shader {
    bool samples;
    bool llvm_failed;
    uint64_t vertices;
+   bool drawn;                      /* first_frame: the frame of its first draw */
+   unsigned long first_frame;
 };
 
 /* What one thread of the model shades its quads with (fp_fs.c): the
@@ -151,6 +156,7 @@ struct fp_context {
       uint64_t compiled, failed;
       uint64_t vs_compiled, cache_hits;
       uint64_t hot_ahead;         /* fragment shaders hot before a batch */
+      uint64_t hot_loop;          /* compiled as drawn again in a later frame */
       double compile_ms;
    } jit_stats;
 

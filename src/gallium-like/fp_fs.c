@@ -160,6 +160,27 @@ static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct ras
    return fp_fs_shade_n_jit(ctx, &q, &out, 1);
 }
 
+/* Hot with `more` quads interpreted besides: past the threshold, or drawn
+ * again in a later presented frame than its first batch's and past the
+ * loop threshold.  A shader a program draws frame after frame is in its
+ * rendering loop and will be drawn for as long again; each frame it stays
+ * interpreted costs more than compiling it (a fraction of a millisecond
+ * from the disk cache, a few without).  A conformance test, which draws
+ * one image, and a program that presents nothing never meet the second
+ * rule.  Frames are presented between batches, so the decision is the
+ * same on every thread count. */
+enum fp_fs_heat { FP_FS_COLD, FP_FS_HOT, FP_FS_HOT_LOOP };
+static enum fp_fs_heat fp_fs_hot(const struct fp_context *fp,
+                                 const struct fp_fragment_shader *fs, double more)
+{
+   const double quads = (double)fs->quads_interpreted + more;
+   if (quads >= FP_JIT_HOT_QUADS)
+      return FP_FS_HOT;
+   if (fs->drawn && fp->frames > fs->first_frame && quads >= FP_JIT_LOOP_QUADS)
+      return FP_FS_HOT_LOOP;
+   return FP_FS_COLD;
+}
+
 /* Compiles the bound shader when it is due; false leaves it interpreted. */
 static bool fp_fs_compiled(struct fp_context *fp)
 {
@@ -168,7 +189,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
       return true;
    if (!fp->jit || fs->jit_failed)
       return false;
-   if (fs->quads_interpreted < FP_JIT_HOT_QUADS && !fs->hot_ahead &&
+   if (fp_fs_hot(fp, fs, 0) == FP_FS_COLD && !fs->hot_ahead &&
        !(fp_env_debug() & FP_DEBUG_JITALL))
       return false;
    fs->jit = fp_jit_fs_compile(fp, fs->tokens, &fs->info, fs->depth_output, fs->color_output,
@@ -179,6 +200,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
       return false;
    }
    fp->jit_stats.compiled++;
+   fp->jit_stats.hot_loop += fs->hot_loop && !(fp_env_debug() & FP_DEBUG_JITALL);
    fp->jit_stats.cache_hits += fs->jit->cache_hit;
    fp->jit_stats.compile_ms += fs->jit->compile_ms;
    return true;
@@ -209,10 +231,12 @@ bool fp_fs_batch_may_compile(const struct fp_context *fp)
 void fp_fs_batch_ahead(struct fp_context *fp, double quads)
 {
    struct fp_fragment_shader *fs = fp->fs;
-   if ((double)fs->quads_interpreted + quads >= FP_JIT_HOT_QUADS) {
+   const enum fp_fs_heat heat = fp_fs_hot(fp, fs, quads);
+   if (heat != FP_FS_COLD) {
       fs->hot_ahead = true;
+      fs->hot_loop = heat == FP_FS_HOT_LOOP;
       fp->fs_dirty = true;
-      fp->jit_stats.hot_ahead++;
+      fp->jit_stats.hot_ahead += heat == FP_FS_HOT;
    }
 }
 
@@ -229,10 +253,16 @@ void fp_fs_batch_done(struct fp_context *fp)
    }
    if (!fs || !n)
       return;
+   if (!fs->drawn) {
+      fs->drawn = true;
+      fs->first_frame = fp->frames;
+   }
    fs->quads_interpreted += n;
-   if (fs->quads_interpreted >= FP_JIT_HOT_QUADS && !fs->jit && fp->jit &&
-       !fs->jit_failed)
+   const enum fp_fs_heat heat = fp_fs_hot(fp, fs, 0);
+   if (heat != FP_FS_COLD && !fs->jit && fp->jit && !fs->jit_failed) {
+      fs->hot_loop = heat == FP_FS_HOT_LOOP;
       fp->fs_dirty = true;
+   }
 }
 
 void fp_fs_validate(struct fp_context *fp)

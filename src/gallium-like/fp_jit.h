@@ -93,8 +93,12 @@ LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[],
                                struct lp_type type4, unsigned nq);
 
 /* Quads a fragment shader, vertices a vertex shader, is interpreted for
- * before it is compiled (see docs/jit.md). */
+ * before it is compiled (see docs/jit.md); and, once it is drawn in a
+ * later presented frame than its first (a program's rendering loop), the
+ * fewer it is interpreted for then. */
 #define FP_JIT_HOT_QUADS 16384
 #define FP_JIT_HOT_VERTICES 16384
+#define FP_JIT_LOOP_QUADS 1024
+#define FP_JIT_LOOP_VERTICES 1024
 
 #endif
