@@ -60,6 +60,16 @@ struct fp_tgsi_sampler {
    /* made at the unit's first binding: 3.7 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
+   /* fp_unit_of's last answer per view index: the same while no view or
+    * sampler is bound (fp_context.tex_epoch) and the request names the same
+    * sampler; a view holds its resource, whose storage is fixed for its
+    * life.  A compiled shader's every texture call asks, four quads a call. */
+   struct fp_unit_memo {
+      uint64_t epoch;
+      unsigned sampler;
+      const struct fp_sampler_view *view;
+      const struct tex_unit *unit;
+   } memo[PIPE_MAX_SAMPLERS];
 };
 
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s)
@@ -340,13 +350,26 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
    struct fp_context *fp = ts->fp;
    if (sview_index >= PIPE_MAX_SAMPLERS || sampler_index >= PIPE_MAX_SAMPLERS)
       return NULL;
+   struct fp_unit_memo *m = &ts->memo[sview_index];
+   if (m->unit && m->epoch == fp->tex_epoch && m->sampler == sampler_index) {
+      *view = m->view;
+      return m->unit;
+   }
    const struct fp_sampler_view *fv =
       (const struct fp_sampler_view *)fp->sampler_views[ts->stage][sview_index];
    const struct pipe_sampler_state *ss = fp->samplers[ts->stage][sampler_index];
    if (!fv || !ss || !fv->base.texture || !fp_resource(fv->base.texture)->data)
       return NULL;
    *view = fv;
-   return fp_tex_bind(ts, sview_index, fv, ss);
+   const struct tex_unit *u = fp_tex_bind(ts, sview_index, fv, ss);
+   /* noskip binds every time (fp_tex_bind) */
+   if (u && !(fp_env_debug() & FP_DEBUG_NOSKIP)) {
+      m->epoch = fp->tex_epoch;
+      m->sampler = sampler_index;
+      m->view = fv;
+      m->unit = u;
+   }
+   return u;
 }
 
 /* `n` quads through the unit (one, or up to four in one call), and their counts. */
