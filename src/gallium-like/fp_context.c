@@ -193,7 +193,7 @@ static void fp_print_stats(const struct fp_context *fp)
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
            "; vertex shaders compiled %" PRIu64 "; hot before a batch %" PRIu64
-           ", hot in a later frame %" PRIu64 "\n",
+           ", hot after a present %" PRIu64 "\n",
            fp->jit ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
            quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead,

@@ -59,8 +59,6 @@ struct fp_fragment_shader {
    uint8_t coord_other[RAST_MAX_VARYINGS];
    /* Tiered execution: interpreted until hot, then compiled (fp_fs.c). */
    uint64_t quads_interpreted;
-   bool drawn;                    /* first_frame: the frame of its first batch */
-   unsigned long first_frame;
    struct fp_jit_variant *jit;
    bool jit_failed;
    bool hot_ahead;                /* a batch about to be drawn makes it hot */
@@ -77,8 +75,6 @@ struct fp_vertex_shader {
    bool samples;
    bool llvm_failed;
    uint64_t vertices;
-   bool drawn;                      /* first_frame: the frame of its first draw */
-   unsigned long first_frame;
 };
 
 /* What one thread of the model shades its quads with (fp_fs.c): the
@@ -156,7 +152,7 @@ struct fp_context {
       uint64_t compiled, failed;
       uint64_t vs_compiled, cache_hits;
       uint64_t hot_ahead;         /* fragment shaders hot before a batch */
-      uint64_t hot_loop;          /* compiled as drawn again in a later frame */
+      uint64_t hot_loop;          /* compiled sooner, the process presenting */
       double compile_ms;
    } jit_stats;
 

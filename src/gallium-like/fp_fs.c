@@ -19,6 +19,7 @@
 #endif
 
 #include "util/u_memory.h"
+#include "util/u_atomic.h"
 #include "tgsi/tgsi_exec.h"
 #include "tgsi/tgsi_parse.h"
 
@@ -160,15 +161,22 @@ static unsigned fp_fs_shade_jit(void *ctx, const struct rast_quad *q, struct ras
    return fp_fs_shade_n_jit(ctx, &q, &out, 1);
 }
 
-/* Hot with `more` quads interpreted besides: past the threshold, or drawn
- * again in a later presented frame than its first batch's and past the
- * loop threshold.  A shader a program draws frame after frame is in its
- * rendering loop and will be drawn for as long again; each frame it stays
- * interpreted costs more than compiling it (a fraction of a millisecond
- * from the disk cache, a few without).  A conformance test, which draws
- * one image, and a program that presents nothing never meet the second
- * rule.  Frames are presented between batches, so the decision is the
- * same on every thread count. */
+/* Whether the process has presented a frame.  A program that presents is
+ * a real-time one (a game, a benchmark, a demo, a replay): it draws its
+ * shaders frame after frame, so a shader it has drawn a little is likely
+ * to be drawn for long, and each frame it stays interpreted costs more
+ * than compiling it (a fraction of a millisecond from the disk cache, a
+ * few without).  A conformance test, which presents its one image at the
+ * end if at all, and a program that presents nothing (surfaceless, an
+ * FBO) keep the threshold's tiering.  Frames are presented between
+ * batches, so the decision is the same on every thread count. */
+bool fp_jit_hot_loop(const struct fp_context *fp)
+{
+   return p_atomic_read(&fp_screen(fp->pipe.screen)->frames_presented) > 0;
+}
+
+/* Hot with `more` quads interpreted besides: past the threshold, or past
+ * the loop threshold once the process presents frames. */
 enum fp_fs_heat { FP_FS_COLD, FP_FS_HOT, FP_FS_HOT_LOOP };
 static enum fp_fs_heat fp_fs_hot(const struct fp_context *fp,
                                  const struct fp_fragment_shader *fs, double more)
@@ -176,7 +184,7 @@ static enum fp_fs_heat fp_fs_hot(const struct fp_context *fp,
    const double quads = (double)fs->quads_interpreted + more;
    if (quads >= FP_JIT_HOT_QUADS)
       return FP_FS_HOT;
-   if (fs->drawn && fp->frames > fs->first_frame && quads >= FP_JIT_LOOP_QUADS)
+   if (quads >= FP_JIT_LOOP_QUADS && fp_jit_hot_loop(fp))
       return FP_FS_HOT_LOOP;
    return FP_FS_COLD;
 }
@@ -253,10 +261,6 @@ void fp_fs_batch_done(struct fp_context *fp)
    }
    if (!fs || !n)
       return;
-   if (!fs->drawn) {
-      fs->drawn = true;
-      fs->first_frame = fp->frames;
-   }
    fs->quads_interpreted += n;
    const enum fp_fs_heat heat = fp_fs_hot(fp, fs, 0);
    if (heat != FP_FS_COLD && !fs->jit && fp->jit && !fs->jit_failed) {

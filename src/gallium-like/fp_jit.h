@@ -93,12 +93,14 @@ LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[],
                                struct lp_type type4, unsigned nq);
 
 /* Quads a fragment shader, vertices a vertex shader, is interpreted for
- * before it is compiled (see docs/jit.md); and, once it is drawn in a
- * later presented frame than its first (a program's rendering loop), the
- * fewer it is interpreted for then. */
+ * before it is compiled (see docs/jit.md); and, once the process has
+ * presented a frame (a real-time program, drawing the same shaders frame
+ * after frame), the fewer it is interpreted for then: fp_jit_hot_loop. */
 #define FP_JIT_HOT_QUADS 16384
 #define FP_JIT_HOT_VERTICES 16384
 #define FP_JIT_LOOP_QUADS 1024
 #define FP_JIT_LOOP_VERTICES 1024
+struct fp_context;
+bool fp_jit_hot_loop(const struct fp_context *fp);
 
 #endif

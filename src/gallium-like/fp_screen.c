@@ -12,6 +12,7 @@
 #include "compiler/nir/nir.h"
 #pragma GCC diagnostic pop
 #include "util/u_memory.h"
+#include "util/u_atomic.h"
 #include "util/u_math.h"
 #include "util/format/u_format.h"
 #include "util/u_screen.h"
@@ -403,6 +404,7 @@ static void fp_flush_frontbuffer(struct pipe_screen *screen, struct pipe_context
    struct fp_screen *s = fp_screen(screen);
    struct fp_resource *r = fp_resource(resource);
    (void)level; (void)layer;
+   p_atomic_inc(&s->frames_presented);
    if (pipe)
       fp_context_frame_presented(fp_context(pipe));
    if (r->dt)

@@ -17,6 +17,10 @@ struct fp_screen {
    util_once_flag disk_cache_once;
    const struct rast_profile *profile;
    char name[128];
+   /* frames presented by any context (flush_frontbuffer): a process that
+    * presents is a real-time program, whose shaders are hot sooner
+    * (fp_jit_hot_loop) */
+   uint64_t frames_presented;
 };
 
 static inline struct fp_screen *fp_screen(struct pipe_screen *s)

@@ -140,17 +140,13 @@ static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_sha
 void fp_vs_count(struct fp_context *fp, uint64_t vertices)
 {
    struct fp_vertex_shader *vs = fp->vs;
-   if (!vs->drawn) {
-      vs->drawn = true;
-      vs->first_frame = fp->frames;
-   }
    vs->vertices += vertices;
    if (vs->draw_vs_llvm || vs->samples || vs->llvm_failed || !fp->jit ||
        !vs->state.tokens)
       return;
-   /* hot as a fragment shader is (fp_fs_hot): past the threshold, or drawn
-    * in a later frame than its first draw and past the loop threshold */
-   const bool loop = fp->frames > vs->first_frame && vs->vertices >= FP_JIT_LOOP_VERTICES;
+   /* hot as a fragment shader is (fp_fs_hot): past the threshold, or past
+    * the loop threshold once the process presents frames */
+   const bool loop = vs->vertices >= FP_JIT_LOOP_VERTICES && fp_jit_hot_loop(fp);
    if (vs->vertices < FP_JIT_HOT_VERTICES && !loop && !(fp_env_debug() & FP_DEBUG_JITALL))
       return;
    vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);

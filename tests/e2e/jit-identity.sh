@@ -103,12 +103,12 @@ else
     fail "demo tiered at 64x64: ${1:-?} shaders compiled, want none"
 fi
 
-# A shader drawn again in a later presented frame is hot past 1,024 quads
-# (fp_fs_hot, the rendering loop's rule): a phong replay on a virtual X
-# server, whose shader no batch makes hot before it, compiles in its second
-# frame, with fewer than 16,384 quads interpreted; headless, where nothing
-# is presented, the rule never applies.
-# loop MODE: "compiled interpreted hot-before-a-batch hot-in-a-later-frame"
+# Once the process has presented a frame, a shader is hot past 1,024 quads
+# (fp_jit_hot_loop): a phong replay on a virtual X server, whose shader no
+# batch makes hot before it, compiles after the first present, with fewer
+# than 16,384 quads interpreted; headless, where nothing is presented, the
+# rule never applies and the shader is interpreted longer.
+# loop MODE: "compiled interpreted hot-before-a-batch hot-after-a-present"
 loop() {
     phong=$root/traces/recorded/glmark2-shading-phong.trace
     if [ "$1" = x11 ]; then
@@ -117,21 +117,20 @@ loop() {
         FIXPIPE_STATS=1 "$root/fixpipe" run --no-xvfb --driver fixpipe -- \
             env WAFFLE_PLATFORM=surfaceless_egl eglretrace --headless -b "$phong"
     fi > "$out/loop.$1.log" 2>&1
-    sed -n 's/.*fragment shaders: tiered, compiled \([0-9]*\) .*interpreted \([0-9]*\);.*hot before a batch \([0-9]*\), hot in a later frame \([0-9]*\).*/\1 \2 \3 \4/p' \
+    sed -n 's/.*fragment shaders: tiered, compiled \([0-9]*\) .*interpreted \([0-9]*\);.*hot before a batch \([0-9]*\), hot after a present \([0-9]*\).*/\1 \2 \3 \4/p' \
         "$out/loop.$1.log" | awk '{ c += $1; i += $2; h += $3; l += $4 } END { print c + 0, i + 0, h + 0, l + 0 }'
 }
 set -- $(loop x11)
 x11_interp=${2:-0}
 if [ "${4:-0}" -gt 0 ] && [ "$2" -lt $(($1 * 16384)) ]; then
-    pass "phong on X11: $4 shaders hot in a later frame, $1 compiled, $2 quads interpreted"
+    pass "phong on X11: $4 shaders hot after a present, $1 compiled, $2 quads interpreted"
 else
-    fail "phong on X11: compiled ${1:-?}, interpreted ${2:-?}, hot in a later frame ${4:-?} (want some, fewer than 16,384 quads a shader)"
+    fail "phong on X11: compiled ${1:-?}, interpreted ${2:-?}, hot after a present ${4:-?} (want some, fewer than 16,384 quads a shader)"
 fi
 set -- $(loop headless)
 if [ "${4:-x}" = 0 ] && [ "${2:-0}" -gt "$x11_interp" ]; then
-    pass "phong headless: none hot in a later frame, $2 quads interpreted (on X11 $x11_interp)"
+    pass "phong headless: none hot after a present, $2 quads interpreted (on X11 $x11_interp)"
 else
-    fail "phong headless: hot in a later frame ${4:-?}, interpreted ${2:-?} (want none, more than on X11: $x11_interp)"
+    fail "phong headless: hot after a present ${4:-?}, interpreted ${2:-?} (want none, more than on X11: $x11_interp)"
 fi
-
 checks_end
