@@ -38,9 +38,16 @@ struct fp_tex_key {
 struct fp_tex_slot {
    bool valid;
    /* the same view and sampler objects, bound in the same epoch, over the
-    * same storage: the unit is right without comparing the key */
+    * same storage: the unit is right without comparing the key.  Within
+    * one epoch no view or sampler is bound, and a view holds its resource,
+    * whose storage is fixed for its life: a request in the slot's epoch
+    * for the same sampler index is answered by the unit without looking
+    * anything up (fp_unit_of), as a compiled shader's every texture call,
+    * four quads a call, asks. */
    uint64_t epoch;
-   const void *view, *sampler, *data;
+   unsigned sampler_index;
+   const struct fp_sampler_view *view;
+   const void *sampler, *data;
    struct fp_tex_key key;
    struct tex_unit unit;
 };
@@ -60,16 +67,7 @@ struct fp_tgsi_sampler {
    /* made at the unit's first binding: 3.7 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
-   /* fp_unit_of's last answer per view index: the same while no view or
-    * sampler is bound (fp_context.tex_epoch) and the request names the same
-    * sampler; a view holds its resource, whose storage is fixed for its
-    * life.  A compiled shader's every texture call asks, four quads a call. */
-   struct fp_unit_memo {
-      uint64_t epoch;
-      unsigned sampler;
-      const struct fp_sampler_view *view;
-      const struct tex_unit *unit;
-   } memo[PIPE_MAX_SAMPLERS];
+   bool rebind;                   /* FIXPIPE_DEBUG=noskip: every request binds */
 };
 
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s)
@@ -273,6 +271,7 @@ static void fp_tex_key(struct fp_tex_key *k, const struct fp_sampler_view *fv,
 
 /* The slot's unit for (view, sampler), bound again when either changed. */
 static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned index,
+                                          unsigned sampler_index,
                                           const struct fp_sampler_view *fv,
                                           const struct pipe_sampler_state *ss)
 {
@@ -289,8 +288,9 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
       }
    }
    const void *data = fp_resource(fv->base.texture)->data;
+   slot->sampler_index = sampler_index;
    if (slot->valid && slot->epoch == ts->fp->tex_epoch && slot->view == fv &&
-       slot->sampler == ss && slot->data == data && !(fp_env_debug() & FP_DEBUG_NOSKIP))
+       slot->sampler == ss && slot->data == data && !ts->rebind)
       return &slot->unit;
    slot->epoch = ts->fp->tex_epoch;
    slot->view = fv;
@@ -350,10 +350,11 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
    struct fp_context *fp = ts->fp;
    if (sview_index >= PIPE_MAX_SAMPLERS || sampler_index >= PIPE_MAX_SAMPLERS)
       return NULL;
-   struct fp_unit_memo *m = &ts->memo[sview_index];
-   if (m->unit && m->epoch == fp->tex_epoch && m->sampler == sampler_index) {
-      *view = m->view;
-      return m->unit;
+   const struct fp_tex_slot *slot = ts->slot[sview_index];
+   if (slot && slot->valid && slot->epoch == fp->tex_epoch &&
+       slot->sampler_index == sampler_index && !ts->rebind) {
+      *view = slot->view;
+      return &slot->unit;
    }
    const struct fp_sampler_view *fv =
       (const struct fp_sampler_view *)fp->sampler_views[ts->stage][sview_index];
@@ -361,15 +362,7 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
    if (!fv || !ss || !fv->base.texture || !fp_resource(fv->base.texture)->data)
       return NULL;
    *view = fv;
-   const struct tex_unit *u = fp_tex_bind(ts, sview_index, fv, ss);
-   /* noskip binds every time (fp_tex_bind) */
-   if (u && !(fp_env_debug() & FP_DEBUG_NOSKIP)) {
-      m->epoch = fp->tex_epoch;
-      m->sampler = sampler_index;
-      m->view = fv;
-      m->unit = u;
-   }
-   return u;
+   return fp_tex_bind(ts, sview_index, sampler_index, fv, ss);
 }
 
 /* `n` quads through the unit (one, or up to four in one call), and their counts. */
@@ -603,6 +596,7 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
    s->rast = rc;
    s->stage = stage;
    s->ns = fp_env_texfmt();
+   s->rebind = fp_env_debug() & FP_DEBUG_NOSKIP;
    s->base.get_samples = fp_tgsi_get_samples;
    s->base.get_dims = fp_tgsi_get_dims;
    s->base.get_texel = fp_tgsi_get_texel;

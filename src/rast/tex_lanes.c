@@ -850,8 +850,8 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
        t_0[2] != t_1[2])
       return false;
    const struct lanes_axis ax[2] = { axis_of(u, 0, 0), axis_of(u, 0, 1) };
-   const bool s_col = s_by_column(cs[0]) && s_by_column(cs[1]);
-   if (s_col) {
+   const bool col[2] = { s_by_column(cs[0]), s_by_column(cs[1]) };
+   if (col[0] && col[1]) {
       const struct dfxl sv = { __builtin_shufflevector(cs[0].v, cs[1].v, 0, 1, 4, 5, 8, 9,
                                                        12, 13) };
       struct lanes_addr S;
@@ -888,7 +888,7 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
     * follows the columns in that vector (the lanes' registers are the same
     * either way: a pass is lane by lane) */
    for (unsigned v = 0; v < 2; v++)
-      sh[v] = 1 + (int)s_by_column(cs[v]);
+      sh[v] = 1 + (int)col[v];
    return true;
 }
 
