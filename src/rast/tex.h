@@ -227,6 +227,9 @@ struct tex_unit {
     * gathered (tex_lanes.c's rows_words): the tests' proof that the path
     * ran.  Written while sampling, as the memo. */
    uint64_t rows_loaded;
+   /* Of those, the calls whose leftmost texel column was not at either end
+    * quad (found by the reduction): the tests' proof of that way. */
+   uint64_t rows_reduced;
 };
 
 /* Bind: copies the descriptors, converts constants into the number system

@@ -959,13 +959,27 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
  * False where the columns spread wider. */
 static inline __attribute__((always_inline)) bool
 rows_words(const struct tex_level *lv, const struct lanes_addr A[2], const struct lanes_addr *B,
-           taps_i w0[2], taps_i w1[2])
+           taps_i w0[2], taps_i w1[2], uint64_t *reduced)
 {
    const __m512i i0 = (__m512i)CONCAT(A[0].i0, A[1].i0), i1 = (__m512i)CONCAT(A[0].i1, A[1].i1);
-   const int32_t base = _mm512_reduce_min_epi32(_mm512_min_epi32(i0, i1));
-   const int32_t top = _mm512_reduce_max_epi32(_mm512_max_epi32(i0, i1));
-   if (top - base > 15)
-      return false;
+   const __m512i lo = _mm512_min_epi32(i0, i1), hi = _mm512_max_epi32(i0, i1);
+   /* The leftmost texel column: where s runs one way along the row, as in
+    * a window, it is at one of the two ends, the first quad's left column
+    * or the last quad's right one.  The loads wait on it, so it is taken
+    * from those two lanes (a few cycles) and checked on the whole vector,
+    * not found by a reduction over sixteen lanes (a chain of eight
+    * operations the loads and everything after them would wait on: about
+    * an eighth of the call).  Where it fails (s not monotonic along the
+    * row), the reduction. */
+   int32_t base = A[0].i0[0] < A[1].i0[5] ? A[0].i0[0] : A[1].i0[5];
+   const __m512i b = _mm512_set1_epi32(base);
+   if (_mm512_cmplt_epi32_mask(lo, b) |
+       _mm512_cmpgt_epi32_mask(_mm512_sub_epi32(hi, b), _mm512_set1_epi32(15))) {
+      base = _mm512_reduce_min_epi32(lo);
+      if (_mm512_reduce_max_epi32(hi) - base > 15)
+         return false;
+      ++*reduced;
+   }
    /* the words of the row from `base` on, those inside the level */
    const int32_t n = lv->w - base;
    const __mmask16 m = n >= 16 ? (__mmask16)0xffff : (__mmask16)((1u << n) - 1);
@@ -978,11 +992,11 @@ rows_words(const struct tex_level *lv, const struct lanes_addr A[2], const struc
     * the second row of a pair), texel row j0 in lanes 0-7, j1 in 8-15 */
    const __m512i second = _mm512_setr_epi32(0, 0, 16, 16, 0, 0, 16, 16, 0, 0, 16, 16, 0, 0, 16,
                                             16);
-   const __m512i b = _mm512_set1_epi32(base);
+   const __m512i bv = _mm512_set1_epi32(base);
 #pragma GCC unroll 2
    for (unsigned v = 0; v < 2; v++) {
-      const __m512i c0 = _mm512_add_epi32(_mm512_sub_epi32((__m512i)TWICE(A[v].i0), b), second);
-      const __m512i c1 = _mm512_add_epi32(_mm512_sub_epi32((__m512i)TWICE(A[v].i1), b), second);
+      const __m512i c0 = _mm512_add_epi32(_mm512_sub_epi32((__m512i)TWICE(A[v].i0), bv), second);
+      const __m512i c1 = _mm512_add_epi32(_mm512_sub_epi32((__m512i)TWICE(A[v].i1), bv), second);
       w0[v] = (taps_i)_mm512_mask_blend_epi32(0xff00, _mm512_permutex2var_epi32(r[0], c0, r[1]),
                                               _mm512_permutex2var_epi32(r[2], c0, r[3]));
       w1[v] = (taps_i)_mm512_mask_blend_epi32(0xff00, _mm512_permutex2var_epi32(r[0], c1, r[1]),
@@ -1032,7 +1046,7 @@ pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TE
 #if defined(__AVX512F__)
    taps_i w0[2], w1[2];
    if (linear && rows && !border && u->view.target != TEX_TARGET_2D_ARRAY &&
-       rows_words(&u->view.level[0], A, &B[0], w0, w1)) {
+       rows_words(&u->view.level[0], A, &B[0], w0, w1, &((struct tex_unit *)u)->rows_reduced)) {
       struct tex_unit *mu = (struct tex_unit *)u;
       mu->rows_loaded++;
 #pragma GCC unroll 2

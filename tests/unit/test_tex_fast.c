@@ -438,7 +438,7 @@ static void rows_memo_runs(unsigned units, unsigned calls)
                                                    : &rast_lanes_sse2);
    const struct numsys *ns = numsys_by_name("dfx24");
    unsigned bad = 0;
-   uint64_t taken = 0, four = 0, loaded = 0, loaded_moved = 0;
+   uint64_t taken = 0, four = 0, loaded = 0, loaded_moved = 0, loaded_reduced = 0;
    for (unsigned i = 0; i < units; i++) {
       struct tex_unit u;
       struct ns_stats s_each = { 0, 0 }, s_four = { 0, 0 };
@@ -460,7 +460,9 @@ static void rows_memo_runs(unsigned units, unsigned calls)
       if (same < 2)
          rows[2][same] = rows[0][same];
       float s0 = rndu() * scale;
-      const float ds = ldexpf(rndu(), -(int)rndn(14)) * scale;
+      /* s decreasing along the row in a quarter of the units (a mirrored
+       * window: the leftmost texel column at the last quad) */
+      const float ds = (rndn(4) ? 1.0f : -1.0f) * ldexpf(rndu(), -(int)rndn(14)) * scale;
       /* s the same down each column in half the units, and in the others
        * moved on the second row by a few of its last bits or more */
       const float ds_row = rndn(2) ? 0.0f : ldexpf(ds, -(int)(4 + rndn(20)));
@@ -471,6 +473,15 @@ static void rows_memo_runs(unsigned units, unsigned calls)
          memset(q, 0, sizeof(q));
          axis_four(q, &u, s0, ds, ds_row, rows[r]);
          s0 += 8 * ds;
+         /* now and then the quads in another order on their rows (neither
+          * end quad holds the leftmost column: rows_words then finds it by
+          * the reduction) */
+         if (!rndn(8)) {
+            const unsigned a = rndn(4), b = rndn(4);
+            const struct tex_quad tq = q[a];
+            q[a] = q[b];
+            q[b] = tq;
+         }
          const struct tex_rows_memo before = u.rows_memo;
          float each[2][2][4][TEX_QUAD], together[4][4][TEX_QUAD];
          uint64_t axes_each = 0, axes_four = 0;
@@ -487,7 +498,8 @@ static void rows_memo_runs(unsigned units, unsigned calls)
          four += u.quad4 != NULL;
          loaded += u.rows_loaded;
          loaded_moved += ds_row != 0.0f ? u.rows_loaded : 0;
-         u.rows_loaded = 0;
+         loaded_reduced += u.rows_reduced;
+         u.rows_loaded = u.rows_reduced = 0;
          const bool ok = !memcmp(each, together, sizeof(together)) &&
                          s_each.sat == s_four.sat && s_each.flush == s_four.flush &&
                          axes_each == axes_four;
@@ -504,15 +516,20 @@ static void rows_memo_runs(unsigned units, unsigned calls)
    CHECK(bad == 0, "rows memo: %u calls differ", bad);
    printf("  rows memo: %llu calls of four quads through a four-quad function, the rows' "
           "addresses taken from the memo in %llu, the taps read from their texel rows in "
-          "%llu (%llu of them with s moved on the second row)\n", (unsigned long long)four,
-          (unsigned long long)taken, (unsigned long long)loaded,
-          (unsigned long long)loaded_moved);
+          "%llu (%llu of them with s moved on the second row, %llu with the leftmost column "
+          "found by the reduction)\n", (unsigned long long)four, (unsigned long long)taken,
+          (unsigned long long)loaded, (unsigned long long)loaded_moved,
+          (unsigned long long)loaded_reduced);
    if (rast_lanes_have_avx512()) {
       CHECK(taken > 20000, "only %llu calls took the rows memo", (unsigned long long)taken);
       CHECK(loaded > 10000, "only %llu calls read their taps from the texel rows",
             (unsigned long long)loaded);
       CHECK(loaded_moved > 3000, "only %llu calls with s moved on the second row read their "
             "taps from the texel rows", (unsigned long long)loaded_moved);
+      CHECK(loaded_reduced > 300 && loaded_reduced < loaded / 4,
+            "%llu of %llu calls that read their taps from the texel rows found the leftmost "
+            "column by the reduction", (unsigned long long)loaded_reduced,
+            (unsigned long long)loaded);
    }
 }
 
