@@ -65,6 +65,9 @@ enum { TEX_SWZ_0 = 4, TEX_SWZ_1 = 5 };
 
 /* One mip level.  Layer or slice z, row y and texel x are at
  * data + z * img_stride + y * row_stride + x * texel size. */
+/* The slots of the texture unit's rows memo (a power of two). */
+#define TEX_ROWS_MEMO 16
+
 struct tex_level {
    const uint8_t *data;
    uint32_t row_stride, img_stride;
@@ -214,15 +217,18 @@ struct tex_unit {
     * [2] hi, lanes 0-3 of s, 4-7 of t; and the two sizes */
    double laxis_st[3][8];
    int32_t lsize_st[8];
-   /* The rows' addresses of the last four quads whose t followed the rows
-    * (tex_lanes.c's pairs4): the next four quads of the same rows take
-    * them instead of the address unit.  The unit's one part written while
-    * sampling (a unit is a thread's own), cleared by binding. */
+   /* The rows' addresses of four quads whose t followed the rows
+    * (tex_lanes.c's pairs4), by the rows' t: later four quads on the same
+    * rows take them instead of the address unit.  Several rows at once, a
+    * slot by a hash of the t registers: a vertical blur's taps each have
+    * their own rows, the same for every four quads along them.  The unit's
+    * one part written while sampling (a unit is a thread's own), cleared
+    * by binding. */
    struct tex_rows_memo {
       bool valid;
       double t[2];
       int32_t i0[8], i1[8], w[8];
-   } rows_memo;
+   } rows_memo[TEX_ROWS_MEMO];
    /* Four-quad calls whose taps were read from their texel rows instead of
     * gathered (tex_lanes.c's rows_words): the tests' proof that the path
     * ran.  Written while sampling, as the memo. */

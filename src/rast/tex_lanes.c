@@ -863,7 +863,10 @@ pairs4_addr_rows(const struct tex_unit *u, const struct quad_kind k, const bool 
       for (unsigned v = 0; v < 2; v++)
          lanes_addr_of(u, linear, (unsigned)k.ws, &ax[0], cs[v], &A[v], st_s);
    }
-   struct tex_rows_memo *m = (struct tex_rows_memo *)&u->rows_memo;
+   /* the slot: bits of the registers' digits (a register's low 33 bits are
+    * zero), folded */
+   const uint64_t h = (uint64_t)t_0[0] >> 33 ^ (uint64_t)t_0[0] >> 38 ^ (uint64_t)t_0[2] >> 35;
+   struct tex_rows_memo *m = (struct tex_rows_memo *)&u->rows_memo[h & (TEX_ROWS_MEMO - 1)];
    int64_t m0, m1;
    memcpy(&m0, &m->t[0], 8);
    memcpy(&m1, &m->t[1], 8);
@@ -957,28 +960,56 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
  * a level without layers and without a border), so the filter's bits are
  * the same; the processor reads four rows where it would gather 64 words.
  * False where the columns spread wider. */
+/* A guess at the four quads' leftmost tap column from the binary32
+ * coordinates as they came, before the coordinate input and the address
+ * unit: the lesser s of the first quad's left column and the last quad's
+ * right one, scaled to texels, less 1.5 (the filter's half texel, and a
+ * texel of margin for the registers' truncation), truncated; 0 at least.
+ * Only a guess: rows_words checks it against the addresses (a repeated
+ * texture, for one, takes its fraction first). */
+static inline __attribute__((always_inline)) int32_t
+window_guess(const struct tex_unit *u, const struct tex_quad q[4])
+{
+   const float s = q[0].s[0] < q[3].s[1] ? q[0].s[0] : q[3].s[1];
+   /* truncation by the instruction: a NaN or a value past int32 gives
+    * INT32_MIN, where a C conversion would be undefined */
+   const int32_t g = _mm_cvttss_si32(_mm_set_ss(s * (float)u->laxis[0][0][0] - 1.5f));
+   return g < 0 ? 0 : g;
+}
+
+/* Whether every tap column of the four quads lies in the 16 from `base`. */
+static inline __attribute__((always_inline)) bool
+window_holds(__m512i lo, __m512i hi, int32_t base)
+{
+   const __m512i b = _mm512_set1_epi32(base);
+   return !(_mm512_cmplt_epi32_mask(lo, b) |
+            _mm512_cmpgt_epi32_mask(_mm512_sub_epi32(hi, b), _mm512_set1_epi32(15)));
+}
+
 static inline __attribute__((always_inline)) bool
 rows_words(const struct tex_level *lv, const struct lanes_addr A[2], const struct lanes_addr *B,
-           taps_i w0[2], taps_i w1[2], uint64_t *reduced)
+           int32_t guess, taps_i w0[2], taps_i w1[2], uint64_t *reduced)
 {
    const __m512i i0 = (__m512i)CONCAT(A[0].i0, A[1].i0), i1 = (__m512i)CONCAT(A[0].i1, A[1].i1);
    const __m512i lo = _mm512_min_epi32(i0, i1), hi = _mm512_max_epi32(i0, i1);
-   /* The leftmost texel column: where s runs one way along the row, as in
-    * a window, it is at one of the two ends, the first quad's left column
-    * or the last quad's right one.  The loads wait on it, so it is taken
-    * from those two lanes (a few cycles) and checked on the whole vector,
-    * not found by a reduction over sixteen lanes (a chain of eight
-    * operations the loads and everything after them would wait on: about
-    * an eighth of the call).  Where it fails (s not monotonic along the
-    * row), the reduction. */
-   int32_t base = A[0].i0[0] < A[1].i0[5] ? A[0].i0[0] : A[1].i0[5];
-   const __m512i b = _mm512_set1_epi32(base);
-   if (_mm512_cmplt_epi32_mask(lo, b) |
-       _mm512_cmpgt_epi32_mask(_mm512_sub_epi32(hi, b), _mm512_set1_epi32(15))) {
-      base = _mm512_reduce_min_epi32(lo);
-      if (_mm512_reduce_max_epi32(hi) - base > 15)
-         return false;
-      ++*reduced;
+   /* The first column of the texel rows to load.  The loads, and all that
+    * follows them, would wait on it, so it is not found by a reduction
+    * over the sixteen lanes (a chain of eight operations, about an eighth
+    * of the call) but taken from `guess`, which the caller made from the
+    * coordinates themselves, in parallel with the address unit; else from
+    * the two end quads' columns (where s runs one way along the row, the
+    * leftmost is at one end); else by the reduction.  Each is checked on
+    * the whole vector: any first column the taps lie within 16 of reads
+    * the same words. */
+   int32_t base = guess;
+   if (!window_holds(lo, hi, base)) {
+      base = A[0].i0[0] < A[1].i0[5] ? A[0].i0[0] : A[1].i0[5];
+      if (!window_holds(lo, hi, base)) {
+         base = _mm512_reduce_min_epi32(lo);
+         if (_mm512_reduce_max_epi32(hi) - base > 15)
+            return false;
+         ++*reduced;
+      }
    }
    /* the words of the row from `base` on, those inside the level */
    const int32_t n = lv->w - base;
@@ -1031,6 +1062,10 @@ pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TE
       coords(u, &q[2 * v], &cs[v], &ct[v], &x);
       zoff[v] = pair_layers(u, &q[2 * v]);
    }
+#if defined(__AVX512F__)
+   /* before the address unit, so as to be ready with it */
+   const int32_t guess = window_guess(u, q);
+#endif
    const bool rows = pairs4_addr_rows(u, k, linear, cs, ct, A, B, &st[0], &st[1], sh);
    if (rows) {
       /* the counts are numbers, not masks: compared with zero first */
@@ -1046,7 +1081,8 @@ pairs4(const struct tex_unit *u, const struct tex_quad q[4], float rgba[4][4][TE
 #if defined(__AVX512F__)
    taps_i w0[2], w1[2];
    if (linear && rows && !border && u->view.target != TEX_TARGET_2D_ARRAY &&
-       rows_words(&u->view.level[0], A, &B[0], w0, w1, &((struct tex_unit *)u)->rows_reduced)) {
+       rows_words(&u->view.level[0], A, &B[0], guess, w0, w1,
+                  &((struct tex_unit *)u)->rows_reduced)) {
       struct tex_unit *mu = (struct tex_unit *)u;
       mu->rows_loaded++;
 #pragma GCC unroll 2

@@ -438,7 +438,7 @@ static void rows_memo_runs(unsigned units, unsigned calls)
                                                    : &rast_lanes_sse2);
    const struct numsys *ns = numsys_by_name("dfx24");
    unsigned bad = 0;
-   uint64_t taken = 0, four = 0, loaded = 0, loaded_moved = 0, loaded_reduced = 0;
+   uint64_t taken = 0, taken_taps = 0, four = 0, loaded = 0, loaded_moved = 0, loaded_reduced = 0;
    for (unsigned i = 0; i < units; i++) {
       struct tex_unit u;
       struct ns_stats s_each = { 0, 0 }, s_four = { 0, 0 };
@@ -448,8 +448,12 @@ static void rows_memo_runs(unsigned units, unsigned calls)
          tex_unit_set_datapath(&u, false, false);
       }
       const float scale = u.samp.normalized ? 1.0f : (float)u.view.level[0].w;
-      float rows[3][2];
-      for (unsigned r = 0; r < 3; r++) {
+      /* a vertical blur's taps in a third of the units: each four quads
+       * sampled on up to 24 pairs of rows in turn (more than the memo has
+       * slots: some share one), the same rows for every four along them */
+      const unsigned taps = rndn(3) ? 0 : 2 + rndn(23);
+      float rows[24][2];
+      for (unsigned r = 0; r < 24; r++) {
          const float t0 = rndn(8) ? rndu() * scale : rand_float();
          const float dt = ldexpf(rndu(), -(int)rndn(14)) * scale;
          rows[r][0] = t0;
@@ -468,11 +472,12 @@ static void rows_memo_runs(unsigned units, unsigned calls)
       const float ds_row = rndn(2) ? 0.0f : ldexpf(ds, -(int)(4 + rndn(20)));
       for (unsigned c = 0; c < calls; c++) {
          /* mostly the same rows, moving along them; now and then another */
-         const unsigned r = rndn(4) ? 0 : 1 + rndn(2);
+         const unsigned r = taps ? c % taps : rndn(4) ? 0 : 1 + rndn(2);
          struct tex_quad q[4];
          memset(q, 0, sizeof(q));
          axis_four(q, &u, s0, ds, ds_row, rows[r]);
-         s0 += 8 * ds;
+         if (!taps || r == taps - 1)
+            s0 += 8 * ds;
          /* now and then the quads in another order on their rows (neither
           * end quad holds the leftmost column: rows_words then finds it by
           * the reduction) */
@@ -482,14 +487,20 @@ static void rows_memo_runs(unsigned units, unsigned calls)
             q[a] = q[b];
             q[b] = tq;
          }
-         const struct tex_rows_memo before = u.rows_memo;
+         struct tex_rows_memo before[TEX_ROWS_MEMO];
+         memcpy(before, u.rows_memo, sizeof(before));
          float each[2][2][4][TEX_QUAD], together[4][4][TEX_QUAD];
          uint64_t axes_each = 0, axes_four = 0;
          u.stats = &s_four;
          u.axes_shared = &axes_four;
          tex_unit_sample_quads(&u, q, 4, TEX_LOD_IMPLICIT, together);
          /* the memo held the rows before and still does: taken */
-         taken += before.valid && !memcmp(&before, &u.rows_memo, sizeof(before));
+         bool held = false;
+         for (unsigned k = 0; k < TEX_ROWS_MEMO; k++)
+            held |= before[k].valid;
+         const bool took = held && !memcmp(before, u.rows_memo, sizeof(before));
+         taken += took;
+         taken_taps += taps && took;
          u.stats = &s_each;
          u.axes_shared = &axes_each;
          tex_unit_sample2(&u, &q[0], TEX_LOD_IMPLICIT, each[0]);
@@ -515,13 +526,16 @@ static void rows_memo_runs(unsigned units, unsigned calls)
    }
    CHECK(bad == 0, "rows memo: %u calls differ", bad);
    printf("  rows memo: %llu calls of four quads through a four-quad function, the rows' "
-          "addresses taken from the memo in %llu, the taps read from their texel rows in "
+          "addresses taken from the memo in %llu (%llu of a blur's taps), the taps read from their texel rows in "
           "%llu (%llu of them with s moved on the second row, %llu with the leftmost column "
           "found by the reduction)\n", (unsigned long long)four, (unsigned long long)taken,
+          (unsigned long long)taken_taps,
           (unsigned long long)loaded, (unsigned long long)loaded_moved,
           (unsigned long long)loaded_reduced);
    if (rast_lanes_have_avx512()) {
       CHECK(taken > 20000, "only %llu calls took the rows memo", (unsigned long long)taken);
+      CHECK(taken_taps > 10000, "only %llu calls of a blur's taps took the rows memo",
+            (unsigned long long)taken_taps);
       CHECK(loaded > 10000, "only %llu calls read their taps from the texel rows",
             (unsigned long long)loaded);
       CHECK(loaded_moved > 3000, "only %llu calls with s moved on the second row read their "
