@@ -26,6 +26,10 @@
 #define FR_MAX_FLT   (1 + FR_MAX_COMP)
 #define FR_MAX_VERTS 4
 #define FR_MAX_SECS  3
+/* The quads the span processor holds for the back end: two of the
+ * shader's groups where their perspective division is done together
+ * (interp.c's pair_impl), one otherwise. */
+#define FR_AHEAD_MAX (2 * RAST_GROUP_MAX)
 
 /* One shader input component: out in[var][chan], from vertex slot `slot`. */
 struct fr_comp {
@@ -175,7 +179,7 @@ struct fr_tex {
     * end, wherever its quads lie on the primitive's rows
     * (rast_interp_divide_group): four to a call where a row has fewer. */
    unsigned nrec;                       /* quads waiting to be divided */
-   int64_t num[RAST_GROUP_MAX][4];      /* an[0], an[1], bn[0], bn[1] of each */
+   int64_t num[FR_AHEAD_MAX][4];        /* an[0], an[1], bn[0], bn[1] of each */
 };
 
 /* The per-pixel independent interpolators of Z and colour (seeds 001,
@@ -243,20 +247,35 @@ struct rast_front {
     * and a full group (rc->fs.group) goes to the back end together (the
     * shader on eight or sixteen lanes); what the primitive sets once
     * (constants, facing) is in every quad. */
-   struct rast_quad quad[RAST_GROUP_MAX];
+   struct rast_quad quad[FR_AHEAD_MAX];
    unsigned npending;
 };
 
 /* The primitive's facing, in every quad of a group. */
 static inline void fr_set_facing(struct rast_front *fr, bool front)
 {
-   for (unsigned i = 0; i < RAST_GROUP_MAX; i++)
+   for (unsigned i = 0; i < FR_AHEAD_MAX; i++)
       fr->quad[i].front_facing = front;
 }
 
 /* The waiting quads' perspective division (interp.c), and its range
  * events moved to the counters when `row_done`. */
 void rast_interp_divide_group(struct rast_context *rc, struct rast_front *fr, bool row_done);
+
+/* The waiting quads to the back end, the shader's group at a time (a lone
+ * quad by itself). */
+static inline void fr_quads_out(struct rast_context *rc, struct rast_front *fr)
+{
+   const unsigned g = rc->fs.group > 1 ? rc->fs.group : 1;
+   for (unsigned k = 0; k < fr->npending; k += g) {
+      const unsigned n = fr->npending - k < g ? fr->npending - k : g;
+      if (n == 1)
+         rc->quad(rc, &fr->quad[k]);
+      else
+         rc->quads(rc, &fr->quad[k], n);
+   }
+   fr->npending = 0;
+}
 
 /* The quads left waiting at the end of a primitive go as they are.  They
  * are of this thread's rows, so they count here whoever's row came last. */
@@ -267,11 +286,7 @@ static inline void fr_quads_flush(struct rast_context *rc, struct rast_front *fr
       rast_count_stretch(rc, true);
       if (fr->tex.nrec)
          rast_interp_divide_group(rc, fr, true);
-      if (fr->npending == 1)
-         rc->quad(rc, &fr->quad[0]);
-      else
-         rc->quads(rc, fr->quad, fr->npending);
-      fr->npending = 0;
+      fr_quads_out(rc, fr);
       rast_count_stretch(rc, counting);
    }
 }

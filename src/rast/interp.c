@@ -540,7 +540,7 @@ static inline void tex_end(struct rast_context *rc, struct rast_front *fr);
 void rast_interp_divide_group(struct rast_context *rc, struct rast_front *fr, bool row_done)
 {
    struct fr_tex *t = &fr->tex;
-   float *in[RAST_GROUP_MAX];
+   float *in[FR_AHEAD_MAX];
    for (unsigned k = 0; k < t->nrec; k++)
       in[k] = &fr->quad[k].in[0][0][0];
    rast_lanes()->persp_group_dfx19(fr, in, (const int64_t (*)[4])t->num, t->nrec);
@@ -782,8 +782,14 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       has_z && (rc->fs.reads_fragcoord || (rc->opts & RAST_OPT_NOSKIP) || rc->vec);
    const double zs = fr->z_scale;
    const float cs = fr->color_scale;
-   /* divided as a group when it goes to the back end (fr_tex.num) */
+   /* divided as a group when it goes to the back end (fr_tex.num), two of
+    * the shader's groups together: the division is a long chain of
+    * dependent operations, and a group's alone would leave the processor
+    * waiting on it between two calls of the shader; two side by side
+    * overlap.  The back end still takes them a group at a time, in order. */
    const bool grouped = has_persp && fr->tex.lanes && fr->tex.skip && rc->quads;
+   const unsigned hold = grouped && 2 * rc->fs.group <= FR_AHEAD_MAX ? 2 * rc->fs.group
+                                                                     : rc->fs.group;
    if (has_persp)
       fr->tex.begin(fr, xq, y);
    /* the pass's origin back: the quad's place in the target */
@@ -875,14 +881,13 @@ pair_impl(struct rast_context *rc, struct rast_front *fr, int64_t y,
       pixels += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + (mask >> 3);
       if (!rc->quads) {
          rc->quad(rc, q);
-      } else if (++fr->npending < rc->fs.group) {
+      } else if (++fr->npending < hold) {
          q = &fr->quad[fr->npending];
          q->y = qy;
       } else {
          if (grouped)
             rast_interp_divide_group(rc, fr, false);
-         rc->quads(rc, fr->quad, fr->npending);
-         fr->npending = 0;
+         fr_quads_out(rc, fr);
          q = &fr->quad[0];
          q->y = qy;
       }

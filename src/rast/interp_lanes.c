@@ -409,8 +409,11 @@ void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
                                        const int64_t (*num)[4], unsigned n)
 {
 #if DFXL_N == 8
-   /* four in one call; two; a lone quad fills half a vector: the 256-bit
-    * set's */
+   /* four in one call (two groups of four: one call after the other, the
+    * processor overlapping their chains); two; a lone quad fills half a
+    * vector: the 256-bit set's */
+   for (; n > 4; n -= 4, in += 4, num += 4)
+      persp_recorded(fr, in, num, 4);
    unsigned k = 0;
    if (n == 4) {
       persp_recorded(fr, in, num, 4);

@@ -62,7 +62,7 @@ struct rast_lanes {
     * RAST_OPT_NOF32 is not set; false, with nothing written, where the
     * caller must divide them another way (a range event, or not set). */
    bool (*persp3_dfx19)(struct rast_front *fr, float *const in[3]);
-   /* The same, optimistic, for n quads (1 to RAST_GROUP_MAX) of one
+   /* The same, optimistic, for n quads (1 to FR_AHEAD_MAX) of one
     * primitive wherever they lie on its rows, from the numerators the span
     * processor recorded for each (num[k]: a at the left pixels of both
     * scan lines, then b): a group of quads the shader takes together is

@@ -249,7 +249,7 @@ void rast_setup_constants(struct rast_front *fr, const float (*pv)[4])
    for (unsigned i = 0; i < fr->nconst; i++) {
       const struct fr_comp *c = &fr->cnst[i];
       float val = pv[c->slot][c->chan];
-      for (unsigned g = 0; g < RAST_GROUP_MAX; g++)
+      for (unsigned g = 0; g < FR_AHEAD_MAX; g++)
          for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
             fr->quad[g].in[c->var][c->chan][p] = val;
    }
