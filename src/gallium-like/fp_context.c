@@ -169,11 +169,12 @@ static void fp_print_stats(const struct fp_context *fp)
            ", quads without gl_FragCoord %" PRIu64 ", quads without a Z walk %" PRIu64
            ", quads rejected whole before shading %" PRIu64
            ", quads not shaded (no visible effect) %" PRIu64
-           ", plane terms with a zero difference (per quad) %" PRIu64 "\n",
+           ", plane terms with a zero difference (per quad) %" PRIu64
+           ", quads divided per column and scan line %" PRIu64 "\n",
            fp_env_debug() & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
            st->skip_persp_w, st->skip_persp_comp, st->skip_tex_lod, st->skip_tex_axes,
            st->skip_fragcoord, st->skip_z, st->skip_early_quads, st->skip_shade_quads,
-           st->skip_persp_terms);
+           st->skip_persp_terms, st->skip_persp_axes);
    fprintf(stderr, "  datapath work: quads divided %" PRIu64 ", component-quads %" PRIu64
            ", texture quads with a LOD from differences %" PRIu64 ", texture quads %" PRIu64
            ", quads %" PRIu64 "\n", st->persp_quads, st->persp_comp_quads, st->tex_lod_quads,

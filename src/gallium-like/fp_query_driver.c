@@ -74,6 +74,7 @@ static const struct fp_driver_query queries[] = {
    FIELD("fp-skip-constant-w", FP_GROUP_SKIPS, skip_persp_w),
    FIELD("fp-skip-constant-components", FP_GROUP_SKIPS, skip_persp_comp),
    FIELD("fp-skip-zero-terms", FP_GROUP_SKIPS, skip_persp_terms),
+   FIELD("fp-skip-axes-planes", FP_GROUP_SKIPS, skip_persp_axes),
    FIELD("fp-skip-texture-lod", FP_GROUP_SKIPS, skip_tex_lod),
    FIELD("fp-skip-texture-axes", FP_GROUP_SKIPS, skip_tex_axes),
    FIELD("fp-skip-fragcoord", FP_GROUP_SKIPS, skip_fragcoord),

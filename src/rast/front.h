@@ -30,6 +30,10 @@
  * shader's groups where their perspective division is done together
  * (interp.c's pair_impl), one otherwise. */
 #define FR_AHEAD_MAX (2 * RAST_GROUP_MAX)
+/* interp_axes.c's tables: the planes, and the columns or scan lines, of a
+ * primitive they take at most. */
+#define FR_AXES_PLANES 4
+#define FR_AXES_MAX    2112
 
 /* One shader input component: out in[var][chan], from vertex slot `slot`. */
 struct fr_comp {
@@ -180,6 +184,16 @@ struct fr_tex {
     * (rast_interp_divide_group): four to a call where a row has fewer. */
    unsigned nrec;                       /* quads waiting to be divided */
    int64_t num[FR_AHEAD_MAX][4];        /* an[0], an[1], bn[0], bn[1] of each */
+   /* A primitive whose every plane follows one screen axis (interp_axes.c):
+    * `axes` 0 no, -1 yes but its tables not made yet, 1 made; the planes'
+    * values per pixel column from col_x0 and per scan line from row_y0
+    * (each plane in one of the two: by_x[i]), for plane i of the ln. */
+   int axes;
+   int64_t axes_hx, axes_hy;            /* the pixel's sampling offsets they were made for */
+   int64_t col_x0, row_y0;
+   unsigned ncols, nrows;
+   bool by_x[FR_AXES_PLANES];
+   float col[FR_AXES_PLANES][FR_AXES_MAX], row[FR_AXES_PLANES][FR_AXES_MAX];
 };
 
 /* The per-pixel independent interpolators of Z and colour (seeds 001,
@@ -257,6 +271,12 @@ static inline void fr_set_facing(struct rast_front *fr, bool front)
    for (unsigned i = 0; i < FR_AHEAD_MAX; i++)
       fr->quad[i].front_facing = front;
 }
+
+/* interp_axes.c: whether the primitive's planes each follow one screen
+ * axis (set by the perspective set-up), and the waiting quads' planes from
+ * its tables, true, where they are. */
+void rast_interp_axes_setup(struct rast_front *fr);
+bool rast_interp_axes_fill(struct rast_context *rc, struct rast_front *fr);
 
 /* The waiting quads' perspective division (interp.c), and its range
  * events moved to the counters when `row_done`. */

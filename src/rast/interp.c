@@ -286,6 +286,7 @@ void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *f
    }
    if (t->lanes)
       lanes_skips_setup(fr);
+   rast_interp_axes_setup(fr);
    rc->stats.tex_sat += st.sat;
    rc->stats.tex_flush += st.flush;
 }
@@ -540,10 +541,12 @@ static inline void tex_end(struct rast_context *rc, struct rast_front *fr);
 void rast_interp_divide_group(struct rast_context *rc, struct rast_front *fr, bool row_done)
 {
    struct fr_tex *t = &fr->tex;
-   float *in[FR_AHEAD_MAX];
-   for (unsigned k = 0; k < t->nrec; k++)
-      in[k] = &fr->quad[k].in[0][0][0];
-   rast_lanes()->persp_group_dfx19(fr, in, (const int64_t (*)[4])t->num, t->nrec);
+   if (!rast_interp_axes_fill(rc, fr)) {
+      float *in[FR_AHEAD_MAX];
+      for (unsigned k = 0; k < t->nrec; k++)
+         in[k] = &fr->quad[k].in[0][0][0];
+      rast_lanes()->persp_group_dfx19(fr, in, (const int64_t (*)[4])t->num, t->nrec);
+   }
    t->nrec = 0;
    if (row_done)
       tex_end(rc, fr);

@@ -392,6 +392,29 @@ bool LANES_FN(persp3_dfx19_lanes)(struct rast_front *fr, float *const in[3])
    const int64_t q2[4] = { q1[0] + a, q1[1] + a, q1[2] + b, q1[3] + b };
    return three_f32(fr, in, q0, q1, q2);
 }
+
+/* Four recorded quads on the binary32 lanes with nothing counted (the
+ * skips' counts that persp16 adds are taken back): interp_axes.c's
+ * tables, whose pixels count when they are drawn. */
+bool LANES_FN(persp4_probe_dfx19_lanes)(struct rast_front *fr, float *const in[4],
+                                        const int64_t (*num)[4])
+{
+   struct fr_tex *t = &fr->tex;
+   if (!t->skip || !t->f32)
+      return false;
+   const struct dfx_stats dst = t->dst;
+   const uint64_t n_const_w = t->n_const_w, n_const_comp = t->n_const_comp,
+                  n_zero_terms_quads = t->n_zero_terms_quads;
+   dfxl_i an[2], bn[2];
+   quad_numerators(t, num[0], num[1], &an[0], &bn[0]);
+   quad_numerators(t, num[2], num[3], &an[1], &bn[1]);
+   const bool ok = persp16_optimistic(fr, in, an, bn, 4);
+   t->dst = dst;
+   t->n_const_w = n_const_w;
+   t->n_const_comp = n_const_comp;
+   t->n_zero_terms_quads = n_zero_terms_quads;
+   return ok;
+}
 #endif
 
 /* nq recorded quads in one call: 2 or 4 with the 512-bit set, 1 or 2

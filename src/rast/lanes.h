@@ -62,6 +62,12 @@ struct rast_lanes {
     * RAST_OPT_NOF32 is not set; false, with nothing written, where the
     * caller must divide them another way (a range event, or not set). */
    bool (*persp3_dfx19)(struct rast_front *fr, float *const in[3]);
+   /* Four quads from recorded numerators (as persp_group_dfx19's) on
+    * binary32 lanes, for interp_axes.c's tables: false where a lane had a
+    * range event or RAST_OPT_NOF32 is set; nothing counted either way (the
+    * pixels count when they are drawn).  NULL but with the 512-bit set. */
+   bool (*persp4_probe_dfx19)(struct rast_front *fr, float *const in[4],
+                              const int64_t (*num)[4]);
    /* The same, optimistic, for n quads (1 to FR_AHEAD_MAX) of one
     * primitive wherever they lie on its rows, from the numerators the span
     * processor recorded for each (num[k]: a at the left pixels of both

@@ -8,6 +8,8 @@ void LANES_FN(persp_dfx19_lanes)(struct rast_front *fr, struct rast_quad *q);
 void LANES_FN(persp2_dfx19_lanes)(struct rast_front *fr, float *in0, float *in1);
 void LANES_FN(persp4_dfx19_lanes)(struct rast_front *fr, float *const in[4]);
 bool LANES_FN(persp3_dfx19_lanes)(struct rast_front *fr, float *const in[3]);
+bool LANES_FN(persp4_probe_dfx19_lanes)(struct rast_front *fr, float *const in[4],
+                                        const int64_t (*num)[4]);
 void LANES_FN(persp_group_dfx19_lanes)(struct rast_front *fr, float *const in[],
                                        const int64_t (*num)[4], unsigned n);
 bool LANES_FN(planes_dfx19_lanes)(const float *const vtx[3], unsigned p0, unsigned n,

@@ -23,6 +23,7 @@ const struct rast_lanes LANES_GLUE(rast_lanes, LANES_SUFFIX) = {
 #if defined(DFXL_N) && DFXL_N == 8
    .persp4_dfx19 = LANES_FN(persp4_dfx19_lanes),
    .persp3_dfx19 = LANES_FN(persp3_dfx19_lanes),
+   .persp4_probe_dfx19 = LANES_FN(persp4_probe_dfx19_lanes),
    .tex_group = 4,
 #else
    .tex_group = 2,

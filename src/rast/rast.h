@@ -369,6 +369,9 @@ struct rast_stats {
     * component-quads whose A/w is constant (no plane evaluated). */
    uint64_t skip_persp_w, skip_persp_comp;
    uint64_t skip_persp_terms;          /* plane terms with a zero difference left out, per quad */
+   /* quads whose planes came from their primitive's tables per column and
+    * scan line (interp_axes.c), not divided pixel by pixel */
+   uint64_t skip_persp_axes;
    /* texture quads sampled without computing their LOD, which the sampler
     * cannot use (tex_unit_lod_unused) */
    uint64_t skip_tex_lod;

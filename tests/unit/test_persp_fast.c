@@ -41,7 +41,7 @@ static const struct { unsigned opts; int isa; unsigned group; } modes[] = {
 #define NPASS (1 + (int)(sizeof(modes) / sizeof(modes[0])))
 static float *rec[NPASS];
 static size_t nrec[NPASS];
-static uint64_t skipped_w, skipped_comp, skipped_terms;
+static uint64_t skipped_w, skipped_comp, skipped_terms, skipped_axes;
 static int pass;
 static bool avx2, avx512;
 static uint64_t quads, helpers, values;
@@ -164,6 +164,42 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
                             : shape < 0.7 && c == 3 && k == 2     ? v[1][s][c]
                                                                   : rnd_attr();
       }
+      /* 2-D content's rectangles: a right triangle with legs along the
+       * axes, one w, each component following one axis (the same at the
+       * right angle and at the end of the other leg), the vertices in any
+       * order: where the set-up's V0 is at the right angle, the planes
+       * follow the axes (interp_axes.c) */
+      if (t_rand() < 0.15) {
+         const double w = t_rand() < 0.5 ? 1.0 : 1.0 / (0.5 * pow(wmax, t_rand()));
+         const double lx = (t_rand() < 0.5 ? -1 : 1) * (10 + 290 * t_rand());
+         const double ly = (t_rand() < 0.5 ? -1 : 1) * (10 + 290 * t_rand());
+         const double px[3] = { cx, cx + lx, cx }, py[3] = { cy, cy, cy + ly };
+         const unsigned rot = (unsigned)(t_rand() * 3);
+         for (int k = 0; k < 3; k++) {
+            const unsigned c = (unsigned)(k + rot) % 3;
+            v[k][0][0] = (float)px[c];
+            v[k][0][1] = (float)py[c];
+            v[k][0][3] = (float)w;
+         }
+         for (unsigned s = 1; s <= vl.num_varyings; s++)
+            for (int c = 0; c < 4; c++) {
+               /* the corners' values: right angle, x leg's end, y leg's end */
+               const double kind = t_rand();
+               float at[3];
+               for (int k = 0; k < 3; k++)
+                  at[k] = t_rand() < 0.5 ? rnd_attr() : (float)(8 * t_rand() - 4);
+               if (kind < 0.4)
+                  at[2] = at[0];          /* follows x */
+               else if (kind < 0.8)
+                  at[1] = at[0];          /* follows y */
+               else                       /* constant: A·w once a primitive, */
+                  at[1] = at[2] = at[0] = /* at times past the range */
+                     t_rand() < 0.5 ? (float)ldexp(t_rand() + 0.5, 20 + (int)(t_rand() * 16))
+                                    : rnd_attr();
+               for (int k = 0; k < 3; k++)
+                  v[k][s][c] = at[(unsigned)(k + rot) % 3];
+            }
+      }
       bool line = t_rand() < 0.1;
       uint64_t e[NPASS];
       for (pass = 0; pass < NPASS; pass++) {
@@ -205,6 +241,7 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
    skipped_w += rast_get_stats(t.rc)->skip_persp_w;
    skipped_comp += rast_get_stats(t.rc)->skip_persp_comp;
    skipped_terms += rast_get_stats(t.rc)->skip_persp_terms;
+   skipped_axes += rast_get_stats(t.rc)->skip_persp_axes;
    t_fini(&t);
    printf("%-5s %-6s %u primitives: %llu differ; range events %llu sat, %llu flush\n",
           profile, texfmt, nprim, (unsigned long long)bad,
@@ -242,6 +279,10 @@ int main(void)
           (unsigned long long)skipped_terms);
    CHECK(skipped_w > 1000 && skipped_comp > 1000 && skipped_terms > 1000,
          "the skips were exercised");
+   printf("%llu quads divided per column and scan line (interp_axes.c)\n",
+          (unsigned long long)skipped_axes);
+   if (avx512)
+      CHECK(skipped_axes > 5000, "primitives' planes were divided per column and scan line");
    printf("%llu calls of a group of quads\n", (unsigned long long)group_calls);
    CHECK(group_calls > 10000, "groups of quads were shaded");
    for (int p = 0; p < NPASS; p++)
