@@ -64,7 +64,7 @@ struct fp_tgsi_sampler {
    uint64_t quads;                /* every quad sampled */
    uint64_t skip_axes;            /* quads addressed per axis (tex_unit.axes_shared) */
    uint64_t texels;               /* texel reads of the filters (tex_unit.taps) */
-   /* made at the unit's first binding: 3.7 KB each, 32 a stage, and most
+   /* made at the unit's first binding: about 6 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
    bool rebind;                   /* FIXPIPE_DEBUG=noskip: every request binds */
