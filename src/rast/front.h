@@ -272,6 +272,20 @@ static inline void fr_set_facing(struct rast_front *fr, bool front)
       fr->quad[i].front_facing = front;
 }
 
+/* What nq quads divided count besides their lanes' events, however they
+ * were divided (interp_lanes.c, interp_axes.c): the skips, and the events
+ * of the values computed once per primitive, for every pixel. */
+static inline void fr_tex_counted(struct fr_tex *t, unsigned nq)
+{
+   if (t->w_const) {
+      t->dst.sat += t->const_ev.sat * RAST_QUAD_SIZE * nq;
+      t->dst.flush += t->const_ev.flush * RAST_QUAD_SIZE * nq;
+      t->n_const_w += nq;
+   }
+   t->n_const_comp += t->n_const * nq;
+   t->n_zero_terms_quads += t->n_zero_terms * nq;
+}
+
 /* interp_axes.c: whether the primitive's planes each follow one screen
  * axis (set by the perspective set-up), and the waiting quads' planes from
  * its tables, true, where they are. */

@@ -168,14 +168,7 @@ bool rast_interp_axes_fill(struct rast_context *rc, struct rast_front *fr)
          for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
             in[t->cout[i] + p] = t->cval[i];
    }
-   /* what the division counts for these quads besides its lanes' events
-    * (interp_lanes.c's counted): every pixel's events of the values made
-    * once per primitive, and the skips */
-   t->dst.sat += t->const_ev.sat * RAST_QUAD_SIZE * nq;
-   t->dst.flush += t->const_ev.flush * RAST_QUAD_SIZE * nq;
-   t->n_const_w += nq;
-   t->n_const_comp += t->n_const * nq;
-   t->n_zero_terms_quads += t->n_zero_terms * nq;
+   fr_tex_counted(t, nq);
    rc->stats.skip_persp_axes += nq;
    return true;
 }

@@ -53,24 +53,6 @@ store(struct dfxl v, float *const *in, unsigned k, unsigned off)
 #endif
 }
 
-static inline void count(struct dfx_stats *to, struct dfx_stats ev, unsigned times)
-{
-   to->sat += ev.sat * times;
-   to->flush += ev.flush * times;
-}
-
-/* What nq quads divided count besides their lanes' events: the skips, and
- * the events of the values computed once per primitive, for every pixel. */
-static inline void counted(struct fr_tex *t, unsigned nq)
-{
-   if (t->w_const) {
-      count(&t->dst, t->const_ev, RAST_QUAD_SIZE * nq);
-      t->n_const_w += nq;
-   }
-   t->n_const_comp += t->n_const * nq;
-   t->n_zero_terms_quads += t->n_zero_terms * nq;
-}
-
 /* `nq` quads (1, or 2 side by side on a row: their operations interleave,
  * each quad's chain of dependent operations being long and the two
  * independent; or one vector with both; or, 512-bit set, 4: two vectors
@@ -140,7 +122,7 @@ persp(struct rast_front *fr, float *const *in, const dfxl_i *an, const dfxl_i *b
    if (optimistic && dfxl_any(dfxl_trouble(&st)))
       return false;
    dfxl_stats_add(&t->dst, st);
-   counted(t, nq);
+   fr_tex_counted(t, nq);
    return true;
 }
 
@@ -203,7 +185,7 @@ static inline __attribute__((always_inline)) void store16(__m512 v, float *const
 
 static inline __attribute__((always_inline)) bool
 persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_i bn[2],
-        const unsigned n, unsigned nq)
+        const unsigned n)
 {
    struct fr_tex *t = &fr->tex;
    struct dfxf_stats sf = dfxf_stats_init();
@@ -248,15 +230,14 @@ persp16(struct rast_front *fr, float *const *in, const dfxl_i an[2], const dfxl_
       }
       store16(cout[i].v, in, t->cout[i]);
    }
-   counted(t, nq);
    return true;
 }
 
 #define PERSP16_N(nn)                                                                         \
    static bool persp16_##nn(struct rast_front *fr, float *const *in, const dfxl_i an[2],      \
-                            const dfxl_i bn[2], unsigned nq)                                  \
+                            const dfxl_i bn[2])                                               \
    {                                                                                          \
-      return persp16(fr, in, an, bn, nn, nq);                                                 \
+      return persp16(fr, in, an, bn, nn);                                                     \
    }
 PERSP16_N(1)
 PERSP16_N(2)
@@ -265,20 +246,21 @@ PERSP16_N(4)
 PERSP16_N(5)
 PERSP16_N(6)
 
-/* nq = 4 quads, or 3 and a fourth that repeats the third (its numerators
+/* Four quads, or 3 and a fourth that repeats the third (its numerators
  * the same, so the same bounds: it marks nothing the third does not; its
- * planes go to in[3], a scratch quad, and nothing of it is counted). */
+ * planes go to in[3], a scratch quad).  Nothing counted: the caller counts
+ * the quads it divided (fr_tex_counted) where this returns true. */
 static bool persp16_optimistic(struct rast_front *fr, float *const *in, const dfxl_i an[2],
-                               const dfxl_i bn[2], unsigned nq)
+                               const dfxl_i bn[2])
 {
    switch (fr->tex.ln) {
-   case 1: return persp16_1(fr, in, an, bn, nq);
-   case 2: return persp16_2(fr, in, an, bn, nq);
-   case 3: return persp16_3(fr, in, an, bn, nq);
-   case 4: return persp16_4(fr, in, an, bn, nq);
-   case 5: return persp16_5(fr, in, an, bn, nq);
-   case 6: return persp16_6(fr, in, an, bn, nq);
-   default: return persp16(fr, in, an, bn, fr->tex.ln, nq);
+   case 1: return persp16_1(fr, in, an, bn);
+   case 2: return persp16_2(fr, in, an, bn);
+   case 3: return persp16_3(fr, in, an, bn);
+   case 4: return persp16_4(fr, in, an, bn);
+   case 5: return persp16_5(fr, in, an, bn);
+   case 6: return persp16_6(fr, in, an, bn);
+   default: return persp16(fr, in, an, bn, fr->tex.ln);
    }
 }
 #endif
@@ -328,7 +310,9 @@ static void divide(struct rast_front *fr, float *const *in, const dfxl_i an[2],
     * bounds), and a reciprocal of zero: where they fail, the careful way. */
 #if DFXL_N == 8
    if (nq == 4 && t->skip && t->f32) {
-      if (!persp16_optimistic(fr, in, an, bn, 4))
+      if (persp16_optimistic(fr, in, an, bn))
+         fr_tex_counted(t, 4);
+      else
          persp(fr, in, an, bn, false, t->ln, nq);
       return;
    }
@@ -379,7 +363,10 @@ static bool three_f32(struct rast_front *fr, float *const in[3], const int64_t q
    dfxl_i an[2], bn[2];
    quad_numerators(t, q0, q1, &an[0], &bn[0]);
    quad_numerators(t, q2, q2, &an[1], &bn[1]);
-   return persp16_optimistic(fr, in4, an, bn, 3);
+   if (!persp16_optimistic(fr, in4, an, bn))
+      return false;
+   fr_tex_counted(t, 3);
+   return true;
 }
 
 /* Three quads of a row from the registers' (the row's last three). */
@@ -393,27 +380,18 @@ bool LANES_FN(persp3_dfx19_lanes)(struct rast_front *fr, float *const in[3])
    return three_f32(fr, in, q0, q1, q2);
 }
 
-/* Four recorded quads on the binary32 lanes with nothing counted (the
- * skips' counts that persp16 adds are taken back): interp_axes.c's
- * tables, whose pixels count when they are drawn. */
+/* Four recorded quads on the binary32 lanes with nothing counted:
+ * interp_axes.c's tables, whose pixels count when they are drawn. */
 bool LANES_FN(persp4_probe_dfx19_lanes)(struct rast_front *fr, float *const in[4],
                                         const int64_t (*num)[4])
 {
    struct fr_tex *t = &fr->tex;
    if (!t->skip || !t->f32)
       return false;
-   const struct dfx_stats dst = t->dst;
-   const uint64_t n_const_w = t->n_const_w, n_const_comp = t->n_const_comp,
-                  n_zero_terms_quads = t->n_zero_terms_quads;
    dfxl_i an[2], bn[2];
    quad_numerators(t, num[0], num[1], &an[0], &bn[0]);
    quad_numerators(t, num[2], num[3], &an[1], &bn[1]);
-   const bool ok = persp16_optimistic(fr, in, an, bn, 4);
-   t->dst = dst;
-   t->n_const_w = n_const_w;
-   t->n_const_comp = n_const_comp;
-   t->n_zero_terms_quads = n_zero_terms_quads;
-   return ok;
+   return persp16_optimistic(fr, in, an, bn);
 }
 #endif
 

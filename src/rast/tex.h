@@ -63,11 +63,11 @@ enum tex_format {
 /* Swizzle sources: channels 0..3, then the constants 0 and 1. */
 enum { TEX_SWZ_0 = 4, TEX_SWZ_1 = 5 };
 
-/* One mip level.  Layer or slice z, row y and texel x are at
- * data + z * img_stride + y * row_stride + x * texel size. */
 /* The slots of the texture unit's rows memo (a power of two). */
 #define TEX_ROWS_MEMO 16
 
+/* One mip level.  Layer or slice z, row y and texel x are at
+ * data + z * img_stride + y * row_stride + x * texel size. */
 struct tex_level {
    const uint8_t *data;
    uint32_t row_stride, img_stride;

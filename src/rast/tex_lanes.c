@@ -951,15 +951,6 @@ pair2(const struct tex_unit *u, const struct tex_quad q[2], float rgba[2][4][TEX
 }
 
 #if defined(__AVX512F__)
-/* The taps of four quads on the same two rows (pairs4_addr_rows) read from
- * their texel rows instead of gathered: where every column of the four
- * quads' taps lies within 16 texels of the leftmost, each of the (up to)
- * four texel rows is one load of 16 words, and each vector of taps is
- * picked from two of them.  The words are the ones the gathers read
- * (soa_level2: w0 taps (i0, j0) and (i0, j1), w1 (i1, j0) and (i1, j1), in
- * a level without layers and without a border), so the filter's bits are
- * the same; the processor reads four rows where it would gather 64 words.
- * False where the columns spread wider. */
 /* A guess at the four quads' leftmost tap column from the binary32
  * coordinates as they came, before the coordinate input and the address
  * unit: the lesser s of the first quad's left column and the last quad's
@@ -986,6 +977,15 @@ window_holds(__m512i lo, __m512i hi, int32_t base)
             _mm512_cmpgt_epi32_mask(_mm512_sub_epi32(hi, b), _mm512_set1_epi32(15)));
 }
 
+/* The taps of four quads on the same two rows (pairs4_addr_rows) read from
+ * their texel rows instead of gathered: where every column of the four
+ * quads' taps lies within 16 texels of the leftmost, each of the (up to)
+ * four texel rows is one load of 16 words, and each vector of taps is
+ * picked from two of them.  The words are the ones the gathers read
+ * (soa_level2: w0 taps (i0, j0) and (i0, j1), w1 (i1, j0) and (i1, j1), in
+ * a level without layers and without a border), so the filter's bits are
+ * the same; the processor reads four rows where it would gather 64 words.
+ * False where the columns spread wider. */
 static inline __attribute__((always_inline)) bool
 rows_words(const struct tex_level *lv, const struct lanes_addr A[2], const struct lanes_addr *B,
            int32_t guess, taps_i w0[2], taps_i w1[2], uint64_t *reduced)
