@@ -200,8 +200,18 @@ static void fp_print_stats(const struct fp_context *fp)
            quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead,
            fp->jit_stats.hot_loop);
    fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64
-           "; large clears filled by one thread %" PRIu64 ", divided %" PRIu64 "\n",
+           "; large clears filled by one thread %" PRIu64 ", divided %" PRIu64,
            rast_get_threads(fp->rast), serial, parallel, jobs_serial, jobs_parallel);
+   /* on the same line: seconds differ from run to run, and the threads
+    * line is the one the thread-count identity test leaves out */
+   struct rast_thread_times tt;
+   rast_get_thread_times(fp->rast, &tt);
+   if (rast_get_threads(fp->rast) > 1)
+      fprintf(stderr, "; the calling thread's seconds: its shares %.3f, waiting for the workers %.3f, "
+              "batches alone %.3f, clears divided %.3f, between batches %.3f; the workers' "
+              "shares %.3f", tt.shares, tt.waiting, tt.alone, tt.jobs, tt.between,
+              tt.worker_shares);
+   fprintf(stderr, "\n");
 }
 
 /* FIXPIPE_STATS=1 prints a context's statistics when it is destroyed.  A

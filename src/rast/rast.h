@@ -547,6 +547,20 @@ void rast_get_flush_counts(const struct rast_context *rc, uint64_t *serial, uint
 /* Jobs run by rast_run_on_threads on the caller alone and on all threads
  * (with one thread, no pool: both 0). */
 void rast_get_job_counts(const struct rast_context *rc, uint64_t *serial, uint64_t *parallel);
+/* Where the calling thread's time went since the pool was made, in
+ * seconds, by the monotonic clock (all 0 with one thread).  What is not in
+ * the model's batches (between) is the driver's, Mesa's and the program's
+ * own work, which no worker can share: with the small batches drawn alone
+ * it bounds what more threads can gain (docs/threads.md). */
+struct rast_thread_times {
+   double shares;          /* its share of the batches drawn on all threads */
+   double waiting;         /* then waiting for the workers to finish theirs */
+   double alone;           /* small batches, drawn on the calling thread alone */
+   double jobs;            /* its part of the jobs run on all threads (clears) */
+   double between;         /* from the end of one of the above to the next */
+   double worker_shares;   /* the workers' shares of the batches, summed */
+};
+void rast_get_thread_times(const struct rast_context *rc, struct rast_thread_times *t);
 
 /* Up to date after rast_flush: every thread's counters summed. */
 const struct rast_stats *rast_get_stats(const struct rast_context *rc);

@@ -98,6 +98,10 @@ struct rast_pool {
    } share[RAST_MAX_THREADS];
    uint64_t drawn_serial, drawn_parallel;
    uint64_t jobs_serial, jobs_parallel;           /* rast_run_on_threads */
+   /* rast_get_thread_times; last_end: when the calling thread last
+    * returned from a batch or a job on all threads (0: not yet) */
+   struct rast_thread_times times;
+   double last_end;
 
    /* The flushing thread's floating-point environment, which the workers
     * take for the batch: Mesa's draw module sets denormals to zero around a
@@ -193,6 +197,16 @@ static inline double seconds_now(void)
    struct timespec t;
    clock_gettime(CLOCK_MONOTONIC, &t);
    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The calling thread enters the model's work at now: what it did since it
+ * last left it is between batches. */
+static double work_begins(struct rast_pool *pool)
+{
+   const double now = seconds_now();
+   if (pool->last_end > 0)
+      pool->times.between += now - pool->last_end;
+   return now;
 }
 
 static unsigned size_class(size_t nprim)
@@ -503,6 +517,7 @@ unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg
       return 1;
    }
    pool->jobs_parallel++;
+   const double t0 = work_begins(pool);
    pool->job = job;
    pool->job_arg = arg;
    wake_workers(pool);
@@ -510,6 +525,8 @@ unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg
    wait_workers(pool);
    pool->job = NULL;
    pool->job_arg = NULL;
+   pool->last_end = seconds_now();
+   pool->times.jobs += pool->last_end - t0;
    return pool->n;
 }
 
@@ -519,8 +536,11 @@ void rast_flush(struct rast_context *rc)
    if (!pool || !pool->nprim)
       return;
 
+   const double t0 = work_begins(pool);
    if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
       draw_share(rc, pool);
+      pool->last_end = seconds_now();
+      pool->times.alone += pool->last_end - t0;
       pool->drawn_serial += pool->nprim;
       pool->nprim = 0;
       pool->pixels = 0;
@@ -538,11 +558,17 @@ void rast_flush(struct rast_context *rc)
    fegetenv(&pool->fenv);
    wake_workers(pool);
 
-   const double t0 = seconds_now();
+   const double t1 = seconds_now();
    draw_share(rc, pool);
-   pool->share[0].seconds = seconds_now() - t0;
+   const double t2 = seconds_now();
+   pool->share[0].seconds = t2 - t1;
 
    wait_workers(pool);
+   pool->last_end = seconds_now();
+   pool->times.shares += t1 - t0 + pool->share[0].seconds;
+   pool->times.waiting += pool->last_end - t2;
+   for (unsigned t = 1; t < pool->n; t++)
+      pool->times.worker_shares += pool->share[t].seconds;
    rc->band_count = 1;
    rc->band_lo = INT64_MIN;
    rc->band_hi = INT64_MAX;
@@ -664,4 +690,12 @@ void rast_get_job_counts(const struct rast_context *rc, uint64_t *serial, uint64
 {
    *serial = rc->pool ? rc->pool->jobs_serial : 0;
    *parallel = rc->pool ? rc->pool->jobs_parallel : 0;
+}
+
+void rast_get_thread_times(const struct rast_context *rc, struct rast_thread_times *t)
+{
+   if (rc->pool)
+      *t = rc->pool->times;
+   else
+      memset(t, 0, sizeof(*t));
 }

@@ -261,6 +261,34 @@ static void test_jobs(void)
    rast_get_job_counts(rc, &serial, &parallel);
    CHECK(serial == 1 && parallel == 2, "job counts %llu on one thread, %llu on all",
          (unsigned long long)serial, (unsigned long long)parallel);
+
+   /* where the calling thread's time went: two batches on all threads and
+    * two jobs so far, none alone; then a small triangle, drawn alone */
+   struct rast_thread_times tt;
+   rast_get_thread_times(rc, &tt);
+   CHECK(tt.shares > 0 && tt.worker_shares > 0 && tt.jobs > 0 && tt.between > 0 &&
+         tt.waiting >= 0 && tt.alone == 0,
+         "times after two batches and jobs: shares %g, workers %g, jobs %g, between %g, "
+         "waiting %g, alone %g", tt.shares, tt.worker_shares, tt.jobs, tt.between, tt.waiting,
+         tt.alone);
+   for (unsigned k = 0; k < 3; k++) {
+      v[k][0][0] = 8.0f + 4.0f * (float)(k == 1);
+      v[k][0][1] = 8.0f + 4.0f * (float)(k == 2);
+   }
+   const struct rast_thread_times before = tt;
+   rast_triangle(rc, T_V(v[0]), T_V(v[1]), T_V(v[2]));
+   rast_flush(rc);
+   rast_get_thread_times(rc, &tt);
+   CHECK(tt.alone > 0 && tt.shares == before.shares && tt.jobs == before.jobs &&
+         tt.between > before.between,
+         "a small batch: alone %g, shares %g (before %g), between %g (before %g)", tt.alone,
+         tt.shares, before.shares, tt.between, before.between);
+   rast_destroy(rc);
+
+   /* one thread: no pool, nothing timed */
+   rc = rast_create(rast_profile_by_name("seed"));
+   rast_get_thread_times(rc, &tt);
+   CHECK(tt.shares == 0 && tt.between == 0 && tt.alone == 0, "one thread has times");
    rast_destroy(rc);
 }
 
