@@ -34,7 +34,6 @@
 /* The counters as printed: the samplers' batches flushed into the model's. */
 static const struct rast_stats *fp_stats(const struct fp_context *fp)
 {
-   rast_wait(fp->rast);      /* the workers' counters, the samplers' too */
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
       if (fp->tgsi_sampler[sh])
          fp_tgsi_sampler_flush_stats(fp->tgsi_sampler[sh], fp->rast);
@@ -286,8 +285,6 @@ static void fp_destroy(struct pipe_context *pipe)
          fp_tgsi_sampler_destroy(th->sampler);
    }
    FREE(fp->fs_thread);
-   for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS; i++)
-      free(fp->fs_consts[i]);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
       fp_tgsi_sampler_destroy(fp->tgsi_sampler[sh]);
    if (fp->pipe.stream_uploader)
@@ -300,7 +297,6 @@ static void fp_destroy(struct pipe_context *pipe)
 static void fp_flush(struct pipe_context *pipe, struct pipe_fence_handle **fence,
                      unsigned flags)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    (void)flags;
    draw_flush(fp->draw);
@@ -310,13 +306,11 @@ static void fp_flush(struct pipe_context *pipe, struct pipe_fence_handle **fence
 
 static void fp_texture_barrier(struct pipe_context *pipe, unsigned flags)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)flags;
 }
 
 static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)flags;
 }
 
@@ -324,7 +318,6 @@ static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
  * model keeps nothing cached outside the resource, so there is nothing to do. */
 static void fp_flush_resource(struct pipe_context *pipe, struct pipe_resource *resource)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)resource;
 }
 
@@ -425,9 +418,6 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       if (!th->sampler || !th->mach)
          goto fail;
    }
-   /* a batch's workers still drawing while the driver goes on to the next
-    * (docs/threads.md); FIXPIPE_DEBUG=nooverlap: each batch waited for */
-   rast_set_overlap(fp->rast, !(fp_env_debug() & FP_DEBUG_NOOVERLAP));
 
    /* Compiled shaders: draw's LLVM vertex path and fixpipe's fragment shaders.
     * Each makes its LLVM context with its first compiled shader (draw's own,

@@ -82,9 +82,6 @@ struct fp_vertex_shader {
  * shades, so every thread has its own.  Thread 0 is the driver's. */
 struct fp_fs_thread {
    struct fp_context *fp;
-   /* the shader of the batch it draws, set by fp_fs_validate: the context's
-    * may be rebound while the model's workers still draw (rast_submit) */
-   const struct fp_fragment_shader *fs;
    struct rast_context *rast;             /* the thread's model context */
    struct tgsi_exec_machine *mach;
    struct fp_tgsi_sampler *sampler;       /* the fragment stage's */
@@ -142,12 +139,6 @@ struct fp_context {
    /* The samplers of draw's stages; the fragment stage's is thread 0's. */
    struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];
    bool fs_dirty;                  /* shader, constants or samplers changed */
-   /* The fragment constants in user memory, copied when validated: Mesa
-    * writes a program's uniforms in place, while the model's workers may
-    * still shade the batch before (rast_submit). */
-   void *fs_consts[PIPE_MAX_CONSTANT_BUFFERS];
-   unsigned fs_consts_size[PIPE_MAX_CONSTANT_BUFFERS];
-   bool fs_interpreted;            /* the batch's shader: counted after it */
    /* Fragment shading, one of each per thread of the model (FIXPIPE_THREADS). */
    unsigned num_threads;
    struct fp_fs_thread *fs_thread;
@@ -201,14 +192,6 @@ struct fp_context {
 static inline struct fp_context *fp_context(struct pipe_context *p)
 {
    return (struct fp_context *)p;
-}
-
-/* Before anything that reads or writes what a batch still drawn on the
- * model's workers may use (rast_submit): the framebuffer, a resource's
- * storage, a view, sampler state or shader about to go, the counters. */
-static inline void fp_wait(struct fp_context *fp)
-{
-   rast_wait(fp->rast);
 }
 
 struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
@@ -272,8 +255,6 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                enum pipe_shader_type stage,
                                                struct rast_context *rc);
 void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s);
-/* The fragment stage's bindings copied for the next batch (fp_fs_validate). */
-void fp_tgsi_sampler_sync(struct fp_tgsi_sampler *s);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
 /* `max` quads (2 or 4) whose operands compiled code laid out as
  * tgsi_exec's get_samples would have (fp_jit_sample.c), `quads` of them

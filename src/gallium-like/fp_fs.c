@@ -42,7 +42,7 @@ static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
 static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    struct fp_fs_thread *th = ctx;
-   const struct fp_fragment_shader *fs = th->fs;
+   struct fp_fragment_shader *fs = th->fp->fs;
    struct tgsi_exec_machine *mach = th->mach;
 
    th->quads_interp++;   /* counted to the shader after the batch: fp_fs_batch_done */
@@ -137,7 +137,7 @@ static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
                                   struct rast_shaded_quad *const out[], unsigned n)
 {
    struct fp_fs_thread *th = ctx;
-   const struct fp_jit_variant *v = th->fs->jit;
+   const struct fp_jit_variant *v = th->fp->fs->jit;
    const struct rast_quad *qs[FP_JIT_MAX_QUADS];
    struct rast_shaded_quad *outs[FP_JIT_MAX_QUADS];
    int32_t lanes[FP_JIT_MAX_QUADS][RAST_QUAD_SIZE];
@@ -254,11 +254,6 @@ void fp_fs_batch_done(struct fp_context *fp)
 {
    struct fp_fragment_shader *fs = fp->fs;
    uint64_t n = 0;
-   /* an interpreted batch's quads are counted to its shader before the next
-    * batch decides whether to compile it, whatever the threads */
-   if (!fp->fs_interpreted)
-      return;
-   fp_wait(fp);
    for (unsigned t = 0; t < fp->num_threads; t++) {
       struct fp_fs_thread *th = &fp->fs_thread[t];
       n += th->quads_interp - th->quads_interp_seen;
@@ -276,13 +271,6 @@ void fp_fs_batch_done(struct fp_context *fp)
 
 void fp_fs_validate(struct fp_context *fp)
 {
-   /* every thread's shading context is rebound: not while a worker shades */
-   fp_wait(fp);
-   for (unsigned t = 0; t < fp->num_threads; t++) {
-      fp->fs_thread[t].fs = fp->fs;
-      fp_tgsi_sampler_sync(fp->fs_thread[t].sampler);
-   }
-   fp->fs_interpreted = false;
    struct rast_shader rs;
    memset(&rs, 0, sizeof(rs));
    rs.ctx = &fp->fs_thread[0];
@@ -303,20 +291,10 @@ void fp_fs_validate(struct fp_context *fp)
       const struct pipe_constant_buffer *c = &fp->constants[PIPE_SHADER_FRAGMENT][i];
       bufs[i] = NULL;
       sizes[i] = 0;
-      if (c->user_buffer && c->buffer_size) {
-         if (fp->fs_consts_size[i] < c->buffer_size) {
-            void *p = realloc(fp->fs_consts[i], c->buffer_size);
-            if (!p)
-               continue;        /* out of memory: the buffer reads as unbound */
-            fp->fs_consts[i] = p;
-            fp->fs_consts_size[i] = c->buffer_size;
-         }
-         memcpy(fp->fs_consts[i], (const uint8_t *)c->user_buffer + c->buffer_offset,
-                c->buffer_size);
-         bufs[i] = fp->fs_consts[i];
-      } else if (c->buffer) {
+      if (c->user_buffer)
+         bufs[i] = (const uint8_t *)c->user_buffer + c->buffer_offset;
+      else if (c->buffer)
          bufs[i] = fp_resource(c->buffer)->data + c->buffer_offset;
-      }
       if (bufs[i])
          sizes[i] = c->buffer_size;
    }
@@ -356,7 +334,6 @@ void fp_fs_validate(struct fp_context *fp)
    }
 
    rs.shade = fp_fs_shade;
-   fp->fs_interpreted = true;
    rast_set_shader(fp->rast, &rs);
    fp->fs_dirty = false;
 }

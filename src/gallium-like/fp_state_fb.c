@@ -51,9 +51,6 @@ static void fp_set_polygon_offset_unit(struct fp_context *fp, enum pipe_format z
 static void fp_set_framebuffer_state(struct pipe_context *pipe,
                                      const struct pipe_framebuffer_state *fb)
 {
-   /* No wait: a batch still drawn keeps its copy of the targets, whose
-    * surfaces wait when they go (fp_surface_destroy); the next batch, which
-    * may draw into what it samples, waits for it first (rast_submit). */
    struct fp_context *fp = fp_context(pipe);
    const struct rast_profile *prof = rast_get_profile(fp->rast);
    struct rast_framebuffer rfb;

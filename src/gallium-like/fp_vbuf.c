@@ -27,11 +27,6 @@ struct fp_vbuf_render {
    unsigned vertex_size;          /* bytes */
    void *vertices;
    size_t vertices_size;
-   /* Two allocations in turn: the batch the model's workers may still draw
-    * (rast_submit) keeps its vertices while draw writes the next batch's. */
-   void *buf[2];
-   size_t buf_size[2];
-   unsigned drawn;                 /* the buffer of the last batch submitted */
 };
 
 static struct fp_vbuf_render *fp_vbuf(struct vbuf_render *r)
@@ -175,14 +170,11 @@ static boolean fp_vbuf_allocate_vertices(struct vbuf_render *r, ushort vertex_si
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
    size_t size = (size_t)vertex_size * nr_vertices;
-   const unsigned b = v->drawn ^ 1;
-   if (v->buf_size[b] < size) {
-      align_free(v->buf[b]);
-      v->buf[b] = align_malloc(size, 16);
-      v->buf_size[b] = v->buf[b] ? size : 0;
+   if (v->vertices_size < size) {
+      align_free(v->vertices);
+      v->vertices = align_malloc(size, 16);
+      v->vertices_size = v->vertices ? size : 0;
    }
-   v->vertices = v->buf[b];
-   v->vertices_size = v->buf_size[b];
    v->vertex_size = vertex_size;
    return v->vertices != NULL;
 }
@@ -315,12 +307,11 @@ static bool fp_vbuf_discard(struct fp_vbuf_render *v)
           !(v->fp->sample_mask & ((1u << v->fp->fb_samples) - 1));
 }
 
-/* The batch goes to the model; its vertices stay in their buffer while the
- * workers may draw it, draw writing the next batch's into the other. */
+/* The batch's vertices are reused by the next one: the model draws what it
+ * queued (on every thread) before draw moves on. */
 static void fp_vbuf_drawn(struct fp_vbuf_render *v)
 {
-   rast_submit(v->fp->rast);
-   v->drawn = v->vertices == v->buf[1];
+   rast_flush(v->fp->rast);
    fp_fs_batch_done(v->fp);
 }
 
@@ -378,8 +369,7 @@ static void fp_vbuf_pipeline_statistics(struct vbuf_render *r,
 static void fp_vbuf_destroy(struct vbuf_render *r)
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
-   align_free(v->buf[0]);
-   align_free(v->buf[1]);
+   align_free(v->vertices);
    FREE(v);
 }
 

@@ -79,13 +79,8 @@ struct rast_pool {
    pthread_t thread[RAST_MAX_THREADS];
    bool thread_live[RAST_MAX_THREADS];
 
-   /* the queue being filled; and the batch being drawn, which the workers
-    * read (with overlap, the next batch is queued into the other array
-    * while they still draw this one) */
-   struct rast_prim *prim, *spare;
-   size_t nprim, cap, spare_cap;
-   const struct rast_prim *drawing;
-   size_t ndrawing;
+   struct rast_prim *prim;
+   size_t nprim, cap;
    double pixels;                                 /* the queue's bounding boxes */
    /* split_rows: the work per band of the target's rows */
    double *band_w;
@@ -107,16 +102,6 @@ struct rast_pool {
     * returned from a batch or a job on all threads (0: not yet) */
    struct rast_thread_times times;
    double last_end;
-   /* rast_submit: a batch the workers may still be drawing, its calling
-    * thread's share done at share_end; per size of batch, how long the
-    * calling thread then works alone before it waits again (seconds, a
-    * running average), which the cut gives the workers to overlap */
-   bool overlap;               /* rast_set_overlap */
-   bool in_flight;
-   double share_end;
-   float gap[RAST_BATCH_SIZES];
-   /* the calling thread's seconds per unit of work, a running average */
-   double main_rate;
 
    /* The flushing thread's floating-point environment, which the workers
     * take for the batch: Mesa's draw module sets denormals to zero around a
@@ -250,8 +235,8 @@ static double band_work(struct rast_pool *pool, int64_t height, size_t nb)
    /* a primitive's width on each of its rows as differences: a band's sum
     * over its rows added where the primitive begins, taken off where it
     * ends, summed below; the set-up's in the band of the top row */
-   for (size_t i = 0; i < pool->ndrawing; i++) {
-      const struct rast_prim *p = &pool->drawing[i];
+   for (size_t i = 0; i < pool->nprim; i++) {
+      const struct rast_prim *p = &pool->prim[i];
       if (!p->rows_known || p->lo >= height || p->hi < 0)
          continue;
       const int64_t lo = p->lo, hi = p->hi < height ? p->hi : height - 1;
@@ -287,24 +272,13 @@ static void split_rows(struct rast_pool *pool, const struct rast_context *rc)
    const int64_t height = rc->fb.height > 0 ? rc->fb.height : 1;
    const size_t nb = (size_t)((height + RAST_BAND_ROWS - 1) / RAST_BAND_ROWS);
    const double total = band_work(pool, height, nb);
-   const float *slow = pool->slowness[pool->size_class = size_class(pool->ndrawing)];
+   const float *slow = pool->slowness[pool->size_class = size_class(pool->nprim)];
    size_t cut[RAST_MAX_THREADS + 1];            /* thread t: bands [cut[t], cut[t + 1]) */
    double speed = 0;
    for (unsigned t = 0; t < n; t++)
       speed += 1.0 / slow[t];
    cut[0] = 0;
    cut[n] = nb;
-   /* Submitted batches: every thread is to finish at the same time but the
-    * calling one, which is to finish the learned gap earlier and go on to
-    * the driver's work for the next batch while the workers still draw.  In
-    * units of work (lead), the threads then finish at (total + lead) / speed,
-    * the calling thread lead earlier; it keeps at least a tenth of its share. */
-   double lead = 0;
-   if (pool->in_flight && pool->main_rate > 0 && speed > 1.0) {
-      lead = pool->gap[pool->size_class] / pool->main_rate;
-      const double most = 0.9 * total / (speed - 1.0);
-      lead = lead < most ? lead : most;
-   }
    if (total > 0) {
       /* the cut before thread t where the work before it is that of the
        * threads before it (a band to whichever side holds more of it) */
@@ -312,7 +286,7 @@ static void split_rows(struct rast_pool *pool, const struct rast_context *rc)
       size_t b = 0;
       for (unsigned t = 1; t < n; t++) {
          ahead += 1.0 / slow[t - 1];
-         const double want = (total + lead) * ahead / speed - lead;
+         const double want = total * ahead / speed;
          while (b < nb && acc + pool->band_w[b] * 0.5 < want)
             acc += pool->band_w[b++];
          cut[t] = b;
@@ -342,7 +316,6 @@ static void learn_speeds(struct rast_pool *pool)
    if (pool->share[0].work <= 0 || pool->share[0].seconds < min_seconds)
       return;
    const double main_rate = pool->share[0].seconds / pool->share[0].work;
-   pool->main_rate += pool->main_rate > 0 ? 0.25 * (main_rate - pool->main_rate) : main_rate;
    for (unsigned t = 1; t < pool->n; t++) {
       if (pool->share[t].work <= 0 || pool->share[t].seconds < min_seconds)
          continue;
@@ -364,8 +337,8 @@ static void draw_prim(struct rast_context *rc, const struct rast_prim *p)
 /* Thread rc's share of the queue. */
 static void draw_share(struct rast_context *rc, const struct rast_pool *pool)
 {
-   for (size_t i = 0; i < pool->ndrawing; i++) {
-      const struct rast_prim *p = &pool->drawing[i];
+   for (size_t i = 0; i < pool->nprim; i++) {
+      const struct rast_prim *p = &pool->prim[i];
       bool mine_setup;
       if (rc->band_count == 1) {
          mine_setup = true;
@@ -557,76 +530,29 @@ unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg
    return pool->n;
 }
 
-/* The batch in flight finished: the calling thread waits for the workers,
- * then takes their counters and what the batch says of their speeds. */
-void rast_wait(struct rast_context *rc)
+void rast_flush(struct rast_context *rc)
 {
    struct rast_pool *pool = rc->pool;
-   if (!pool || !pool->in_flight)
+   if (!pool || !pool->nprim)
       return;
-   const double t0 = work_begins(pool);
-   float *gap = &pool->gap[pool->size_class];
-   *gap += 0.25f * ((float)(t0 - pool->share_end) - *gap);
-   wait_workers(pool);
-   pool->in_flight = false;
-   pool->last_end = seconds_now();
-   pool->times.waiting += pool->last_end - t0;
-   for (unsigned t = 1; t < pool->n; t++)
-      pool->times.worker_shares += pool->share[t].seconds;
-   learn_speeds(pool);
-   for (unsigned t = 1; t < pool->n; t++)
-      stats_add(&rc->stats, &pool->ctx[t]->stats);
-}
 
-/* Sends the workers the context's state where it changed since they last
- * drew. */
-static void sync_workers(struct rast_pool *pool, struct rast_context *rc)
-{
+   const double t0 = work_begins(pool);
+   if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
+      draw_share(rc, pool);
+      pool->last_end = seconds_now();
+      pool->times.alone += pool->last_end - t0;
+      pool->drawn_serial += pool->nprim;
+      pool->nprim = 0;
+      pool->pixels = 0;
+      return;
+   }
+
    for (unsigned t = 1; t < pool->n; t++) {
       if (pool->synced[t] != rc->state_serial) {
          sync_state(pool->ctx[t], rc, t);
          pool->synced[t] = rc->state_serial;
       }
    }
-}
-
-/* The queue becomes the batch; the next one fills the other array. */
-static void take_batch(struct rast_pool *pool)
-{
-   struct rast_prim *p = pool->prim;
-   const size_t cap = pool->cap;
-   pool->drawing = p;
-   pool->ndrawing = pool->nprim;
-   pool->prim = pool->spare;
-   pool->cap = pool->spare_cap;
-   pool->spare = p;
-   pool->spare_cap = cap;
-   pool->nprim = 0;
-   pool->pixels = 0;
-}
-
-void rast_submit(struct rast_context *rc)
-{
-   struct rast_pool *pool = rc->pool;
-   if (!pool || !pool->nprim)
-      return;
-   rast_wait(rc);
-
-   const double t0 = work_begins(pool);
-   if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
-      take_batch(pool);
-      draw_share(rc, pool);
-      pool->last_end = seconds_now();
-      pool->times.alone += pool->last_end - t0;
-      pool->drawn_serial += pool->ndrawing;
-      return;
-   }
-
-   sync_workers(pool, rc);
-   take_batch(pool);
-   /* in_flight already, for the cut: the calling thread leaves the
-    * workers the gap it will spend alone (split_rows) */
-   pool->in_flight = pool->overlap;
    split_rows(pool, rc);
    rc->band_count = pool->n;
    fegetenv(&pool->fenv);
@@ -634,37 +560,24 @@ void rast_submit(struct rast_context *rc)
 
    const double t1 = seconds_now();
    draw_share(rc, pool);
-   pool->share_end = seconds_now();
-   pool->share[0].seconds = pool->share_end - t1;
+   const double t2 = seconds_now();
+   pool->share[0].seconds = t2 - t1;
+
+   wait_workers(pool);
+   pool->last_end = seconds_now();
+   pool->times.shares += t1 - t0 + pool->share[0].seconds;
+   pool->times.waiting += pool->last_end - t2;
+   for (unsigned t = 1; t < pool->n; t++)
+      pool->times.worker_shares += pool->share[t].seconds;
    rc->band_count = 1;
    rc->band_lo = INT64_MIN;
    rc->band_hi = INT64_MAX;
-   pool->times.shares += pool->share_end - t0;
-   pool->last_end = pool->share_end;
-   pool->drawn_parallel += pool->ndrawing;
-   pool->in_flight = true;
-}
-
-void rast_flush(struct rast_context *rc)
-{
-   rast_submit(rc);
-   rast_wait(rc);
-}
-
-void rast_set_overlap(struct rast_context *rc, bool on)
-{
-   if (!rc->pool)
-      return;
-   rast_flush(rc);
-   rc->pool->overlap = on;
-}
-
-void rast_flush_state(struct rast_context *rc)
-{
-   if (rc->pool && rc->pool->overlap)
-      rast_submit(rc);
-   else
-      rast_flush(rc);
+   learn_speeds(pool);
+   for (unsigned t = 1; t < pool->n; t++)
+      stats_add(&rc->stats, &pool->ctx[t]->stats);
+   pool->drawn_parallel += pool->nprim;
+   pool->nprim = 0;
+   pool->pixels = 0;
 }
 
 bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
@@ -710,7 +623,6 @@ static void pool_destroy(struct rast_context *rc)
    pthread_cond_destroy(&pool->go);
    pthread_cond_destroy(&pool->done);
    free(pool->prim);
-   free(pool->spare);
    free(pool->band_w);
    free(pool);
    rc->pool = NULL;
