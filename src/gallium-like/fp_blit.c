@@ -225,7 +225,6 @@ static bool fp_blit_is_copy(const struct pipe_blit_info *info)
 
 static void fp_blit(struct pipe_context *pipe, const struct pipe_blit_info *info)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    struct fp_blit_image src, dst;
 

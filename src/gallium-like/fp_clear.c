@@ -138,7 +138,6 @@ static void fp_clear(struct pipe_context *pipe, unsigned buffers,
                      const struct pipe_scissor_state *scissor,
                      const union pipe_color_union *color, double depth, unsigned stencil)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    const struct pipe_framebuffer_state *fb = &fp->framebuffer;
 
@@ -180,7 +179,6 @@ static void fp_clear_render_target(struct pipe_context *pipe, struct pipe_surfac
                                    const union pipe_color_union *color, unsigned x, unsigned y,
                                    unsigned w, unsigned h, bool render_condition_enabled)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    if (render_condition_enabled && !fp_check_render_cond(fp))
       return;
@@ -193,7 +191,6 @@ static void fp_clear_depth_stencil(struct pipe_context *pipe, struct pipe_surfac
                                    unsigned x, unsigned y, unsigned w, unsigned h,
                                    bool render_condition_enabled)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    if (render_condition_enabled && !fp_check_render_cond(fp))
       return;
@@ -206,7 +203,6 @@ static void fp_resource_copy_region(struct pipe_context *pipe, struct pipe_resou
                                     unsigned dstz, struct pipe_resource *src,
                                     unsigned src_level, const struct pipe_box *src_box)
 {
-   fp_wait(fp_context(pipe));
    draw_flush(fp_context(pipe)->draw);
    const unsigned n = fp_resource_samples(src);
    if (n == 1 || fp_resource_samples(dst) != n || src_box->depth != 1) {
@@ -228,7 +224,6 @@ static void fp_resource_copy_region(struct pipe_context *pipe, struct pipe_resou
 static void fp_clear_texture(struct pipe_context *pipe, struct pipe_resource *res, unsigned level,
                              const struct pipe_box *box, const void *data)
 {
-   fp_wait(fp_context(pipe));
    struct pipe_box b = *box;
    const unsigned samples = fp_resource_samples(res);
    b.z *= (int)samples;

@@ -101,7 +101,6 @@ static void run_group(struct tgsi_exec_machine **mach, unsigned n, const int gro
 
 static void fp_launch_grid(struct pipe_context *pipe, const struct pipe_grid_info *info)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    struct fp_compute_shader *cs = fp->cs;
    uint32_t grid[3];
@@ -177,7 +176,6 @@ static void fp_set_shader_buffers(struct pipe_context *pipe, enum pipe_shader_ty
                                   unsigned start, unsigned count,
                                   const struct pipe_shader_buffer *buffers, unsigned writable)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    (void)writable;
    if (shader != PIPE_SHADER_COMPUTE)
@@ -190,7 +188,6 @@ static void fp_set_shader_images(struct pipe_context *pipe, enum pipe_shader_typ
                                  unsigned start, unsigned count, unsigned unbind_trailing,
                                  const struct pipe_image_view *images)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    if (shader != PIPE_SHADER_COMPUTE)
       return;

@@ -34,11 +34,10 @@
 /* The counters as printed: the samplers' batches flushed into the model's. */
 static const struct rast_stats *fp_stats(const struct fp_context *fp)
 {
-   rast_wait(fp->rast);      /* the workers' counters, the samplers' too */
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
       if (fp->tgsi_sampler[sh])
          fp_tgsi_sampler_flush_stats(fp->tgsi_sampler[sh], fp->rast);
-   for (unsigned t = 1; t < fp->fs_slots; t++)
+   for (unsigned t = 1; t < fp->num_threads; t++)
       fp_tgsi_sampler_flush_stats(fp->fs_thread[t].sampler, fp->rast);
    return rast_get_stats(fp->rast);
 }
@@ -141,7 +140,7 @@ static void fp_print_stats(const struct fp_context *fp)
                                                                   "weight" };
    const struct rast_stats *st = fp_stats(fp);
    uint64_t quads_jit = 0, quads_interp = 0, serial, parallel, jobs_serial, jobs_parallel;
-   for (unsigned t = 0; t < fp->fs_slots; t++) {
+   for (unsigned t = 0; t < fp->num_threads; t++) {
       quads_jit += fp->fs_thread[t].quads_jit;
       quads_interp += fp->fs_thread[t].quads_interp;
    }
@@ -278,7 +277,7 @@ static void fp_destroy(struct pipe_context *pipe)
       draw_destroy(fp->draw);
    if (fp->llvm_context)
       LLVMContextDispose(fp->llvm_context);
-   for (unsigned t = 0; t < fp->fs_slots; t++) {
+   for (unsigned t = 0; t < fp->num_threads; t++) {
       struct fp_fs_thread *th = &fp->fs_thread[t];
       if (th->mach)
          tgsi_exec_machine_destroy(th->mach);
@@ -286,7 +285,6 @@ static void fp_destroy(struct pipe_context *pipe)
          fp_tgsi_sampler_destroy(th->sampler);
    }
    FREE(fp->fs_thread);
-   fp_fs_snapshots_release(fp, true);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++)
       fp_tgsi_sampler_destroy(fp->tgsi_sampler[sh]);
    if (fp->pipe.stream_uploader)
@@ -299,7 +297,6 @@ static void fp_destroy(struct pipe_context *pipe)
 static void fp_flush(struct pipe_context *pipe, struct pipe_fence_handle **fence,
                      unsigned flags)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    (void)flags;
    draw_flush(fp->draw);
@@ -309,13 +306,11 @@ static void fp_flush(struct pipe_context *pipe, struct pipe_fence_handle **fence
 
 static void fp_texture_barrier(struct pipe_context *pipe, unsigned flags)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)flags;
 }
 
 static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)flags;
 }
 
@@ -323,7 +318,6 @@ static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
  * model keeps nothing cached outside the resource, so there is nothing to do. */
 static void fp_flush_resource(struct pipe_context *pipe, struct pipe_resource *resource)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)resource;
 }
 
@@ -410,27 +404,20 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       fprintf(stderr, "fixpipe: cannot start %u threads; drawing on one\n", threads);
       threads = 1;
    }
-   /* with several, one more: the calling thread's for its rows of the
-    * batches it draws behind (rast_behind_context) */
-   const unsigned slots = threads + (threads > 1);
-   fp->fs_thread = CALLOC(slots, sizeof(*fp->fs_thread));
+   fp->fs_thread = CALLOC(threads, sizeof(*fp->fs_thread));
    if (!fp->fs_thread)
       goto fail;
-   for (unsigned t = 0; t < slots; t++) {
+   for (unsigned t = 0; t < threads; t++) {
       struct fp_fs_thread *th = &fp->fs_thread[t];
-      fp->fs_slots = t + 1;
-      fp->num_threads = t < threads ? t + 1 : threads;
+      fp->num_threads = t + 1;
       th->fp = fp;
-      th->rast = t < threads ? rast_thread_context(fp->rast, t) : rast_behind_context(fp->rast);
+      th->rast = rast_thread_context(fp->rast, t);
       th->sampler = t == 0 ? fp->tgsi_sampler[PIPE_SHADER_FRAGMENT]
                            : fp_tgsi_sampler_create(fp, PIPE_SHADER_FRAGMENT, th->rast);
       th->mach = tgsi_exec_machine_create(PIPE_SHADER_FRAGMENT);
       if (!th->sampler || !th->mach)
          goto fail;
    }
-   /* a batch's workers still drawing while the driver goes on to the next
-    * (docs/threads.md); FIXPIPE_DEBUG=nooverlap: each batch waited for */
-   rast_set_overlap(fp->rast, !(fp_env_debug() & FP_DEBUG_NOOVERLAP));
 
    /* Compiled shaders: draw's LLVM vertex path and fixpipe's fragment shaders.
     * Each makes its LLVM context with its first compiled shader (draw's own,

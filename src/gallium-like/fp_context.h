@@ -82,9 +82,6 @@ struct fp_vertex_shader {
  * shades, so every thread has its own.  Thread 0 is the driver's. */
 struct fp_fs_thread {
    struct fp_context *fp;
-   /* the shader of the batch it draws, set by fp_fs_validate: the context's
-    * may be rebound while the model's workers still draw (rast_submit) */
-   const struct fp_fragment_shader *fs;
    struct rast_context *rast;             /* the thread's model context */
    struct tgsi_exec_machine *mach;
    struct fp_tgsi_sampler *sampler;       /* the fragment stage's */
@@ -142,15 +139,8 @@ struct fp_context {
    /* The samplers of draw's stages; the fragment stage's is thread 0's. */
    struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];
    bool fs_dirty;                  /* shader, constants or samplers changed */
-   /* The fragment stage's snapshots (fp_fs.c), newest first: a batch the
-    * model's workers draw behind the driver shades with the one it names. */
-   struct fp_fs_snapshot *fs_snaps;
-   bool fs_interpreted;            /* the batch's shader: counted after it */
    /* Fragment shading, one of each per thread of the model (FIXPIPE_THREADS). */
    unsigned num_threads;
-   /* fs_thread[num_threads], with several: the calling thread's for the
-    * batches it draws behind; fs_slots counts it */
-   unsigned fs_slots;
    struct fp_fs_thread *fs_thread;
 
    /* Compiled shaders (fp_jit*.c) allowed: not FIXPIPE_DEBUG=nojit. */
@@ -204,14 +194,6 @@ static inline struct fp_context *fp_context(struct pipe_context *p)
    return (struct fp_context *)p;
 }
 
-/* Before anything that reads or writes what a batch still drawn on the
- * model's workers may use (rast_submit): the framebuffer, a resource's
- * storage, a view, sampler state or shader about to go, the counters. */
-static inline void fp_wait(struct fp_context *fp)
-{
-   rast_wait(fp->rast);
-}
-
 struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
                                        unsigned flags);
 
@@ -257,8 +239,6 @@ struct vbuf_render *fp_create_vbuf_render(struct fp_context *fp);
 
 /* fp_fs.c: bind the current fragment shader to tgsi_exec and the model. */
 void fp_fs_validate(struct fp_context *fp);
-/* The snapshots no batch still drawn can name (all: every one). */
-void fp_fs_snapshots_release(struct fp_context *fp, bool all);
 /* fp_fs.c: after the model drew a batch: the interpreted quads counted to
  * the shader (it compiles once hot, at the same quad whatever the threads). */
 void fp_fs_batch_done(struct fp_context *fp);
@@ -275,11 +255,6 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                enum pipe_shader_type stage,
                                                struct rast_context *rc);
 void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s);
-/* The fragment stage's bindings a batch samples with (fp_fs_validate's
- * snapshot): the arrays stay the snapshot's, valid while it is. */
-void fp_tgsi_sampler_apply(struct fp_tgsi_sampler *s, struct pipe_sampler_view *const *views,
-                           const struct pipe_sampler_state *const *samplers, uint64_t epoch,
-                           bool vectors_on);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
 /* `max` quads (2 or 4) whose operands compiled code laid out as
  * tgsi_exec's get_samples would have (fp_jit_sample.c), `quads` of them

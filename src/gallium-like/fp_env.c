@@ -45,8 +45,6 @@ static const struct debug_named_value fp_debug_flags[] = {
      "large clears filled by the calling thread alone, not divided between the threads" },
    { "nof32", FP_DEBUG_NOF32,
      "the perspective division on binary64 lanes only, not four quads on binary32 lanes (same bits)" },
-   { "nooverlap", FP_DEBUG_NOOVERLAP,
-     "each batch finished on every thread before the driver goes on (same bits)" },
    DEBUG_NAMED_VALUE_END
 };
 

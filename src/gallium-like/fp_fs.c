@@ -42,7 +42,7 @@ static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
 static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    struct fp_fs_thread *th = ctx;
-   const struct fp_fragment_shader *fs = th->fs;
+   struct fp_fragment_shader *fs = th->fp->fs;
    struct tgsi_exec_machine *mach = th->mach;
 
    th->quads_interp++;   /* counted to the shader after the batch: fp_fs_batch_done */
@@ -137,7 +137,7 @@ static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
                                   struct rast_shaded_quad *const out[], unsigned n)
 {
    struct fp_fs_thread *th = ctx;
-   const struct fp_jit_variant *v = th->fs->jit;
+   const struct fp_jit_variant *v = th->fp->fs->jit;
    const struct rast_quad *qs[FP_JIT_MAX_QUADS];
    struct rast_shaded_quad *outs[FP_JIT_MAX_QUADS];
    int32_t lanes[FP_JIT_MAX_QUADS][RAST_QUAD_SIZE];
@@ -254,12 +254,7 @@ void fp_fs_batch_done(struct fp_context *fp)
 {
    struct fp_fragment_shader *fs = fp->fs;
    uint64_t n = 0;
-   /* an interpreted batch's quads are counted to its shader before the next
-    * batch decides whether to compile it, whatever the threads */
-   if (!fp->fs_interpreted)
-      return;
-   fp_wait(fp);
-   for (unsigned t = 0; t < fp->fs_slots; t++) {
+   for (unsigned t = 0; t < fp->num_threads; t++) {
       struct fp_fs_thread *th = &fp->fs_thread[t];
       n += th->quads_interp - th->quads_interp_seen;
       th->quads_interp_seen = th->quads_interp;
@@ -274,154 +269,13 @@ void fp_fs_batch_done(struct fp_context *fp)
    }
 }
 
-/* What a thread shades a batch with, taken when the fragment stage is
- * validated: with scenes (rast_set_overlap) a worker may shade an earlier
- * batch after the context has moved on, so it brings its own context to the
- * batch's snapshot when it reaches it (fp_fs_sync).  The constants in user
- * memory are copied: Mesa writes a program's uniforms there in place. */
-struct fp_fs_snapshot {
-   struct fp_fs_snapshot *next;          /* the context's, newest first */
-   const struct fp_fragment_shader *fs;
-   bool compiled;
-   const void *bufs[PIPE_MAX_CONSTANT_BUFFERS];
-   unsigned sizes[PIPE_MAX_CONSTANT_BUFFERS];
-   struct pipe_sampler_view *views[PIPE_MAX_SHADER_SAMPLER_VIEWS];
-   const struct pipe_sampler_state *samplers[PIPE_MAX_SAMPLERS];
-   uint64_t epoch;
-   bool vectors_on;
-   void *consts[PIPE_MAX_CONSTANT_BUFFERS];   /* the copies (malloc) */
-};
-
-static void fp_fs_snapshot_free(struct fp_fs_snapshot *s)
-{
-   for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS; i++)
-      free(s->consts[i]);
-   free(s);
-}
-
-/* Every snapshot but the newest, where no batch still being drawn can
- * name them; all of them when the context goes. */
-void fp_fs_snapshots_release(struct fp_context *fp, bool all)
-{
-   struct fp_fs_snapshot **p = all ? &fp->fs_snaps : fp->fs_snaps ? &fp->fs_snaps->next : NULL;
-   if (!p)
-      return;
-   for (struct fp_fs_snapshot *s = *p, *next; s; s = next) {
-      next = s->next;
-      fp_fs_snapshot_free(s);
-   }
-   *p = NULL;
-}
-
-/* Thread th's shading context as the snapshot says. */
-static void fp_fs_apply(struct fp_fs_thread *th, const struct fp_fs_snapshot *s)
-{
-   th->fs = s->fs;
-   fp_tgsi_sampler_apply(th->sampler, s->views, s->samplers, s->epoch, s->vectors_on);
-   if (!s->fs)
-      return;
-   if (s->compiled) {
-      for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS && i < LP_MAX_TGSI_CONST_BUFFERS; i++) {
-         th->jit_ctx.constants[i].f = s->bufs[i];
-         th->jit_ctx.constants[i].num_elements = s->sizes[i] / 4;
-      }
-      fp_jit_context_init_sampler(&th->jit_ctx, fp_tgsi_sampler_base(th->sampler));
-      return;
-   }
-   const void *bufs[PIPE_MAX_CONSTANT_BUFFERS];
-   unsigned sizes[PIPE_MAX_CONSTANT_BUFFERS];
-   memcpy(bufs, s->bufs, sizeof(bufs));
-   memcpy(sizes, s->sizes, sizeof(sizes));
-   tgsi_exec_set_constant_buffers(th->mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
-   tgsi_exec_machine_bind_shader(th->mach, s->fs->exec_tokens, fp_tgsi_sampler_base(th->sampler),
-                                 NULL, NULL);
-   fp_fs_drop_input_decls(th->mach);
-}
-
-static void fp_fs_sync(void *ctx, const void *data)
-{
-   fp_fs_apply(ctx, data);
-}
-
-/* The fragment stage's state now into s (zeroed), the constants in user
- * memory copied where `copy`; false: no memory for a copy. */
-static bool fp_fs_snapshot_fill(struct fp_context *fp, struct fp_fs_snapshot *s, bool compiled,
-                                bool copy)
-{
-   s->fs = fp->fs;
-   s->compiled = compiled;
-   for (unsigned i = 0; fp->fs && i < PIPE_MAX_CONSTANT_BUFFERS; i++) {
-      const struct pipe_constant_buffer *c = &fp->constants[PIPE_SHADER_FRAGMENT][i];
-      if (c->user_buffer && c->buffer_size) {
-         const uint8_t *user = (const uint8_t *)c->user_buffer + c->buffer_offset;
-         if (copy) {
-            s->consts[i] = malloc(c->buffer_size);
-            if (!s->consts[i])
-               return false;
-            memcpy(s->consts[i], user, c->buffer_size);
-         }
-         s->bufs[i] = copy ? s->consts[i] : user;
-      } else if (c->buffer) {
-         s->bufs[i] = fp_resource(c->buffer)->data + c->buffer_offset;
-      }
-      if (s->bufs[i])
-         s->sizes[i] = c->buffer_size;
-   }
-   memcpy(s->views, fp->sampler_views[PIPE_SHADER_FRAGMENT], sizeof(s->views));
-   memcpy(s->samplers, fp->samplers[PIPE_SHADER_FRAGMENT], sizeof(s->samplers));
-   s->epoch = fp->tex_epoch;
-   s->vectors_on = fp->vectors_on;
-   return true;
-}
-
-/* A snapshot the workers can reach later, or NULL without memory. */
-static struct fp_fs_snapshot *fp_fs_snapshot(struct fp_context *fp, bool compiled)
-{
-   if (!rast_busy(fp->rast))
-      fp_fs_snapshots_release(fp, false);
-   struct fp_fs_snapshot *s = calloc(1, sizeof(*s));
-   if (!s)
-      return NULL;
-   if (!fp_fs_snapshot_fill(fp, s, compiled, true)) {
-      fp_fs_snapshot_free(s);
-      return NULL;
-   }
-   s->next = fp->fs_snaps;
-   fp->fs_snaps = s;
-   return s;
-}
-
 void fp_fs_validate(struct fp_context *fp)
 {
-   const bool compiled = fp->fs && fp_fs_compiled(fp);
    struct rast_shader rs;
    memset(&rs, 0, sizeof(rs));
    rs.ctx = &fp->fs_thread[0];
    for (unsigned t = 1; t < fp->num_threads; t++)
       rs.thread_ctx[t] = &fp->fs_thread[t];
-   if (fp->fs_slots > fp->num_threads)
-      rs.thread_ctx[0] = &fp->fs_thread[fp->num_threads];
-   struct fp_fs_snapshot *snap = fp_fs_snapshot(fp, compiled);
-   if (snap) {
-      fp_fs_apply(&fp->fs_thread[0], snap);
-      rs.sync = fp_fs_sync;
-      rs.sync_data = snap;
-   } else {
-      /* No memory for a snapshot: no batch is drawn behind from now on, and
-       * every thread is bound here, to the context's own state. */
-      static bool reported;
-      if (!reported)
-         fprintf(stderr, "fixpipe: out of memory for a shader snapshot: the model's threads "
-                 "no longer draw behind the driver\n");
-      reported = true;
-      rast_set_overlap(fp->rast, false);
-      struct fp_fs_snapshot local;
-      memset(&local, 0, sizeof(local));
-      fp_fs_snapshot_fill(fp, &local, compiled, false);
-      for (unsigned t = 0; t < fp->fs_slots; t++)
-         fp_fs_apply(&fp->fs_thread[t], &local);
-   }
-   fp->fs_interpreted = false;
 
    if (!fp->fs) {
       rs.shade = fp_fs_shade_none;
@@ -430,22 +284,56 @@ void fp_fs_validate(struct fp_context *fp)
       fp->fs_dirty = false;
       return;
    }
+
+   const void *bufs[PIPE_MAX_CONSTANT_BUFFERS];
+   unsigned sizes[PIPE_MAX_CONSTANT_BUFFERS];
+   for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS; i++) {
+      const struct pipe_constant_buffer *c = &fp->constants[PIPE_SHADER_FRAGMENT][i];
+      bufs[i] = NULL;
+      sizes[i] = 0;
+      if (c->user_buffer)
+         bufs[i] = (const uint8_t *)c->user_buffer + c->buffer_offset;
+      else if (c->buffer)
+         bufs[i] = fp_resource(c->buffer)->data + c->buffer_offset;
+      if (bufs[i])
+         sizes[i] = c->buffer_size;
+   }
    rs.num_outputs = fp->fs->num_color_outputs;
    rs.writes_depth = fp->fs->writes_depth;
    rs.color0_to_all = fp->fs->color0_to_all;
    rs.may_discard = fp->fs->may_discard;
    rs.reads_fragcoord = fp->fs->reads_fragcoord;
    rs.fetch_mask = fp->fs->fetch_mask;
-   if (compiled) {
+
+   if (fp_fs_compiled(fp)) {
+      for (unsigned t = 0; t < fp->num_threads; t++) {
+         struct fp_fs_thread *th = &fp->fs_thread[t];
+         for (unsigned i = 0; i < PIPE_MAX_CONSTANT_BUFFERS && i < LP_MAX_TGSI_CONST_BUFFERS; i++) {
+            th->jit_ctx.constants[i].f = bufs[i];
+            th->jit_ctx.constants[i].num_elements = sizes[i] / 4;
+         }
+         fp_jit_context_init_sampler(&th->jit_ctx, fp_tgsi_sampler_base(th->sampler));
+      }
       rs.shade = fp_fs_shade_jit;
       if (fp->fs->jit->quads >= 2) {
          rs.shade_n = fp_fs_shade_n_jit;
          rs.group = fp->fs->jit->quads;
       }
-   } else {
-      rs.shade = fp_fs_shade;
-      fp->fs_interpreted = true;
+      rast_set_shader(fp->rast, &rs);
+      fp->fs_dirty = false;
+      return;
    }
+
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      struct fp_fs_thread *th = &fp->fs_thread[t];
+      tgsi_exec_set_constant_buffers(th->mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
+      tgsi_exec_machine_bind_shader(th->mach, fp->fs->exec_tokens,
+                                    fp_tgsi_sampler_base(th->sampler),
+                                    NULL, NULL);
+      fp_fs_drop_input_decls(th->mach);
+   }
+
+   rs.shade = fp_fs_shade;
    rast_set_shader(fp->rast, &rs);
    fp->fs_dirty = false;
 }

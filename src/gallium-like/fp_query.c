@@ -59,7 +59,6 @@ static struct pipe_query *fp_create_query(struct pipe_context *pipe, unsigned ty
 
 static void fp_destroy_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe;
    if (pq)
       FREE(((struct fp_query *)pq)->counter);
@@ -84,7 +83,6 @@ static void fp_so_counts(struct fp_context *fp, struct fp_query *q, bool end)
 
 static bool fp_begin_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    struct fp_query *q = (struct fp_query *)pq;
    q->active = true;
@@ -108,7 +106,6 @@ static bool fp_begin_query(struct pipe_context *pipe, struct pipe_query *pq)
 
 static bool fp_end_query(struct pipe_context *pipe, struct pipe_query *pq)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    struct fp_query *q = (struct fp_query *)pq;
    q->active = false;
@@ -130,7 +127,6 @@ static bool fp_end_query(struct pipe_context *pipe, struct pipe_query *pq)
 static bool fp_get_query_result(struct pipe_context *pipe, struct pipe_query *pq, bool wait,
                                 union pipe_query_result *result)
 {
-   fp_wait(fp_context(pipe));
    struct fp_query *q = (struct fp_query *)pq;
    (void)pipe; (void)wait;
    if (q->counter) {
@@ -178,14 +174,12 @@ static bool fp_get_query_result(struct pipe_context *pipe, struct pipe_query *pq
 
 static void fp_set_active_query_state(struct pipe_context *pipe, bool enable)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe; (void)enable;
 }
 
 static void fp_render_condition(struct pipe_context *pipe, struct pipe_query *query,
                                 bool condition, enum pipe_render_cond_flag mode)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    fp->render_cond_query = query;
    fp->render_cond_cond = condition;

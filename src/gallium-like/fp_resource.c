@@ -11,7 +11,6 @@
 #include "util/format/u_format.h"
 #include "frontend/sw_winsys.h"
 
-#include "fp_context.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
 
@@ -168,7 +167,6 @@ static void *fp_transfer_map(struct pipe_context *pipe, struct pipe_resource *re
                              unsigned level, unsigned usage, const struct pipe_box *box,
                              struct pipe_transfer **transfer)
 {
-   fp_wait(fp_context(pipe));
    struct fp_resource *r = fp_resource(resource);
    enum pipe_format format = resource->format;
    struct pipe_transfer *pt = CALLOC_STRUCT(pipe_transfer);
@@ -227,7 +225,6 @@ static struct pipe_surface *fp_create_surface(struct pipe_context *pipe,
 
 static void fp_surface_destroy(struct pipe_context *pipe, struct pipe_surface *surf)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe;
    pipe_resource_reference(&surf->texture, NULL);
    FREE(surf);

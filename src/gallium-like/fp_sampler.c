@@ -68,29 +68,7 @@ struct fp_tgsi_sampler {
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
    bool rebind;                   /* FIXPIPE_DEBUG=noskip: every request binds */
-   /* What it samples: the context's bindings, read as they are for draw's
-    * stages; for the fragment stage, those of the snapshot the batch's
-    * shader was validated with (fp_tgsi_sampler_apply), since the context's
-    * may change while the model's workers still draw the batch */
-   struct pipe_sampler_view *const *views;
-   const struct pipe_sampler_state *const *samplers;
-   const uint64_t *epoch;
-   const bool *vectors_on;
-   uint64_t frag_epoch;
-   bool frag_vectors_on;
 };
-
-void fp_tgsi_sampler_apply(struct fp_tgsi_sampler *ts, struct pipe_sampler_view *const *views,
-                           const struct pipe_sampler_state *const *samplers, uint64_t epoch,
-                           bool vectors_on)
-{
-   ts->views = views;
-   ts->samplers = samplers;
-   ts->frag_epoch = epoch;
-   ts->frag_vectors_on = vectors_on;
-   ts->epoch = &ts->frag_epoch;
-   ts->vectors_on = &ts->frag_vectors_on;
-}
 
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s)
 {
@@ -311,10 +289,10 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    }
    const void *data = fp_resource(fv->base.texture)->data;
    slot->sampler_index = sampler_index;
-   if (slot->valid && slot->epoch == *ts->epoch && slot->view == fv &&
+   if (slot->valid && slot->epoch == ts->fp->tex_epoch && slot->view == fv &&
        slot->sampler == ss && slot->data == data && !ts->rebind)
       return &slot->unit;
-   slot->epoch = *ts->epoch;
+   slot->epoch = ts->fp->tex_epoch;
    slot->view = fv;
    slot->sampler = ss;
    slot->data = data;
@@ -369,17 +347,18 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
                                          unsigned sampler_index,
                                          const struct fp_sampler_view **view)
 {
+   struct fp_context *fp = ts->fp;
    if (sview_index >= PIPE_MAX_SAMPLERS || sampler_index >= PIPE_MAX_SAMPLERS)
       return NULL;
    const struct fp_tex_slot *slot = ts->slot[sview_index];
-   if (slot && slot->valid && slot->epoch == *ts->epoch &&
+   if (slot && slot->valid && slot->epoch == fp->tex_epoch &&
        slot->sampler_index == sampler_index && !ts->rebind) {
       *view = slot->view;
       return &slot->unit;
    }
    const struct fp_sampler_view *fv =
-      (const struct fp_sampler_view *)ts->views[sview_index];
-   const struct pipe_sampler_state *ss = ts->samplers[sampler_index];
+      (const struct fp_sampler_view *)fp->sampler_views[ts->stage][sview_index];
+   const struct pipe_sampler_state *ss = fp->samplers[ts->stage][sampler_index];
    if (!fv || !ss || !fv->base.texture || !fp_resource(fv->base.texture)->data)
       return NULL;
    *view = fv;
@@ -399,7 +378,7 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
    ts->texels += n * 4 * u->taps;
    ts->skip_lod += n * (u->lod_skipped && lod_from_diffs);
    tex_unit_sample_quads(u, q, n, ctl, rgba);
-   if (unlikely(*ts->vectors_on))
+   if (unlikely(ts->fp->vectors_on))
       rast_vectors_tex(ts->rast, u, q, n, ctl, (const float (*)[4][4])rgba);
    fp_tex_stats(ts);
 }
@@ -506,7 +485,7 @@ static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned s
 {
    struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
    const struct pipe_sampler_view *v =
-      sview_index < PIPE_MAX_SHADER_SAMPLER_VIEWS ? ts->views[sview_index]
+      sview_index < PIPE_MAX_SHADER_SAMPLER_VIEWS ? ts->fp->sampler_views[ts->stage][sview_index]
                                                   : NULL;
    memset(dims, 0, 4 * sizeof(int));
    if (!v || !v->texture)
@@ -571,7 +550,7 @@ static void fp_tgsi_get_texel(struct tgsi_sampler *tgsi_sampler, const unsigned 
    if (sview_index >= PIPE_MAX_SHADER_SAMPLER_VIEWS)
       return;
    const struct fp_sampler_view *fv =
-      (const struct fp_sampler_view *)ts->views[sview_index];
+      (const struct fp_sampler_view *)ts->fp->sampler_views[ts->stage][sview_index];
    if (!fv || !fv->base.texture || !fp_resource(fv->base.texture)->data)
       return;
    struct tex_view_desc vd;
@@ -616,11 +595,6 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
    s->fp = fp;
    s->rast = rc;
    s->stage = stage;
-   /* the fragment stage's until its first validation too */
-   s->views = fp->sampler_views[stage];
-   s->samplers = fp->samplers[stage];
-   s->epoch = &fp->tex_epoch;
-   s->vectors_on = &fp->vectors_on;
    s->ns = fp_env_texfmt();
    s->rebind = fp_env_debug() & FP_DEBUG_NOSKIP;
    s->base.get_samples = fp_tgsi_get_samples;

@@ -405,10 +405,8 @@ static void fp_flush_frontbuffer(struct pipe_screen *screen, struct pipe_context
    struct fp_resource *r = fp_resource(resource);
    (void)level; (void)layer;
    p_atomic_inc(&s->frames_presented);
-   if (pipe) {
-      fp_wait(fp_context(pipe));
+   if (pipe)
       fp_context_frame_presented(fp_context(pipe));
-   }
    if (r->dt)
       s->winsys->displaytarget_display(s->winsys, r->dt, context_private, sub_box);
 }

@@ -125,7 +125,6 @@ static void fp_bind_blend_state(struct pipe_context *pipe, void *cso)
 
 static void fp_delete_state(struct pipe_context *pipe, void *cso)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe;
    FREE(cso);
 }
@@ -275,7 +274,6 @@ static struct pipe_sampler_view *fp_create_sampler_view(struct pipe_context *pip
 
 static void fp_sampler_view_destroy(struct pipe_context *pipe, struct pipe_sampler_view *view)
 {
-   fp_wait(fp_context(pipe));
    (void)pipe;
    pipe_resource_reference(&view->texture, NULL);
    FREE(view);

@@ -51,9 +51,6 @@ static void fp_set_polygon_offset_unit(struct fp_context *fp, enum pipe_format z
 static void fp_set_framebuffer_state(struct pipe_context *pipe,
                                      const struct pipe_framebuffer_state *fb)
 {
-   /* Every batch drawn first: a later batch may sample what an earlier one
-    * rendered, whose rows the threads of a scene draw at their own pace. */
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    const struct rast_profile *prof = rast_get_profile(fp->rast);
    struct rast_framebuffer rfb;

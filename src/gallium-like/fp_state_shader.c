@@ -93,10 +93,9 @@ static void fp_bind_fs_state(struct pipe_context *pipe, void *cso)
 
 static void fp_delete_fs_state(struct pipe_context *pipe, void *cso)
 {
-   fp_wait(fp_context(pipe));
    struct fp_context *fp = fp_context(pipe);
    struct fp_fragment_shader *fs = cso;
-   for (unsigned t = 0; t < fp->fs_slots; t++) {
+   for (unsigned t = 0; t < fp->num_threads; t++) {
       struct tgsi_exec_machine *mach = fp->fs_thread[t].mach;
       if (mach && mach->Tokens == fs->exec_tokens)
          tgsi_exec_machine_bind_shader(mach, NULL, NULL, NULL, NULL);
@@ -188,10 +187,6 @@ static void fp_set_constant_buffer(struct pipe_context *pipe, enum pipe_shader_t
    if (shader >= PIPE_SHADER_TYPES || index >= PIPE_MAX_CONSTANT_BUFFERS)
       return;
    draw_flush(fp->draw);
-   /* a fragment shader's buffer object (not user memory, which is copied
-    * when validated) may go with its last reference */
-   if (shader == PIPE_SHADER_FRAGMENT && (fp->constants[shader][index].buffer || (cb && cb->buffer)))
-      fp_wait(fp);
    util_copy_constant_buffer(&fp->constants[shader][index], cb, take_ownership);
 
    const struct pipe_constant_buffer *c = &fp->constants[shader][index];

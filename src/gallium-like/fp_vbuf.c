@@ -26,69 +26,8 @@ struct fp_vbuf_render {
    enum pipe_prim_type prim;
    unsigned vertex_size;          /* bytes */
    void *vertices;
-   /* The batches' vertex memory: the model's workers may draw a batch
-    * after draw has moved on (a scene, rast_submit), so each batch takes
-    * its own from these chunks, which are all reused once no batch is
-    * being drawn (rast_busy). */
-   struct fp_vbuf_chunk *chunks, *spare;
-   unsigned nchunks;
+   size_t vertices_size;
 };
-
-struct fp_vbuf_chunk {
-   struct fp_vbuf_chunk *next;
-   size_t cap, used;               /* bytes after the header */
-};
-#define FP_VBUF_CHUNK_HEADER 64
-#define FP_VBUF_CHUNK_BYTES (1024 * 1024)
-/* Past this many chunks in use, the scene is drained and they are reused. */
-#define FP_VBUF_MAX_CHUNKS 64
-
-static void fp_vbuf_chunks_free(struct fp_vbuf_chunk *c)
-{
-   for (struct fp_vbuf_chunk *next; c; c = next) {
-      next = c->next;
-      align_free(c);
-   }
-}
-
-/* size bytes for a batch's vertices, 64-byte aligned; NULL without memory. */
-static void *fp_vbuf_take(struct fp_vbuf_render *v, size_t size)
-{
-   if (v->chunks && (!rast_busy(v->fp->rast) || v->nchunks >= FP_VBUF_MAX_CHUNKS)) {
-      rast_wait(v->fp->rast);
-      struct fp_vbuf_chunk *last = v->chunks;
-      while (last->next)
-         last = last->next;
-      last->next = v->spare;
-      v->spare = v->chunks;
-      v->chunks = NULL;
-      v->nchunks = 0;
-   }
-   size = (size + 63) & ~(size_t)63;
-   struct fp_vbuf_chunk *c = v->chunks;
-   if (!c || c->used + size > c->cap) {
-      struct fp_vbuf_chunk **p = &v->spare;
-      while (*p && (*p)->cap < size)
-         p = &(*p)->next;
-      c = *p;
-      if (c) {
-         *p = c->next;
-      } else {
-         const size_t cap = size > FP_VBUF_CHUNK_BYTES ? size : FP_VBUF_CHUNK_BYTES;
-         c = align_malloc(FP_VBUF_CHUNK_HEADER + cap, 64);
-         if (!c)
-            return NULL;
-         c->cap = cap;
-      }
-      c->used = 0;
-      c->next = v->chunks;
-      v->chunks = c;
-      v->nchunks++;
-   }
-   void *p = (uint8_t *)c + FP_VBUF_CHUNK_HEADER + c->used;
-   c->used += size;
-   return p;
-}
 
 static struct fp_vbuf_render *fp_vbuf(struct vbuf_render *r)
 {
@@ -230,7 +169,12 @@ static boolean fp_vbuf_allocate_vertices(struct vbuf_render *r, ushort vertex_si
                                          ushort nr_vertices)
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
-   v->vertices = fp_vbuf_take(v, (size_t)vertex_size * nr_vertices);
+   size_t size = (size_t)vertex_size * nr_vertices;
+   if (v->vertices_size < size) {
+      align_free(v->vertices);
+      v->vertices = align_malloc(size, 16);
+      v->vertices_size = v->vertices ? size : 0;
+   }
    v->vertex_size = vertex_size;
    return v->vertices != NULL;
 }
@@ -363,11 +307,11 @@ static bool fp_vbuf_discard(struct fp_vbuf_render *v)
           !(v->fp->sample_mask & ((1u << v->fp->fb_samples) - 1));
 }
 
-/* The batch goes to the model; its vertices stay in their buffer while the
- * workers may draw it, draw writing the next batch's into the other. */
+/* The batch's vertices are reused by the next one: the model draws what it
+ * queued (on every thread) before draw moves on. */
 static void fp_vbuf_drawn(struct fp_vbuf_render *v)
 {
-   rast_submit(v->fp->rast);
+   rast_flush(v->fp->rast);
    fp_fs_batch_done(v->fp);
 }
 
@@ -425,8 +369,7 @@ static void fp_vbuf_pipeline_statistics(struct vbuf_render *r,
 static void fp_vbuf_destroy(struct vbuf_render *r)
 {
    struct fp_vbuf_render *v = fp_vbuf(r);
-   fp_vbuf_chunks_free(v->chunks);
-   fp_vbuf_chunks_free(v->spare);
+   align_free(v->vertices);
    FREE(v);
 }
 

@@ -61,49 +61,49 @@ const struct rast_profile *rast_get_profile(const struct rast_context *rc)
 
 void rast_set_framebuffer(struct rast_context *rc, const struct rast_framebuffer *fb)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->fb = *fb;
    state_changed(rc);
 }
 
 void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_state *rs)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->rs = *rs;
    state_changed(rc);
 }
 
 void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->scissor = *sc;
    state_changed(rc);
 }
 
 void rast_set_sample_mask(struct rast_context *rc, unsigned mask)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->sample_mask = mask;
    state_changed(rc);
 }
 
 void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->viewport = *vp;
    state_changed(rc);
 }
 
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->dsa = *dsa;
    state_changed(rc);
 }
 
 void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->stencil_ref[0] = front;
    rc->stencil_ref[1] = back;
    state_changed(rc);
@@ -111,7 +111,7 @@ void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back)
 
 void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blend)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->blend = *blend;
    state_changed(rc);
 }
@@ -125,28 +125,28 @@ void rast_set_blend_color(struct rast_context *rc, const float color[4])
 
 void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->vl = *vl;
    state_changed(rc);
 }
 
 void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->fs = *fs;
    state_changed(rc);
 }
 
 void rast_set_options(struct rast_context *rc, unsigned opts)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->opts = opts;
    state_changed(rc);
 }
 
 void rast_set_interp(struct rast_context *rc, unsigned mode)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->interp = mode;
    state_changed(rc);
 }
@@ -163,19 +163,17 @@ const char *rast_interp_name(enum rast_interp_mode mode)
 
 void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns)
 {
-   rast_flush_state(rc);
+   rast_flush(rc);
    rc->texfmt = ns ? ns : numsys_default();
    state_changed(rc);
 }
 
-const struct rast_stats *rast_get_stats(struct rast_context *rc)
+const struct rast_stats *rast_get_stats(const struct rast_context *rc)
 {
-   rast_wait(rc);
    return &rc->stats;
 }
 
 void rast_reset_stats(struct rast_context *rc)
 {
-   rast_wait(rc);
    memset(&rc->stats, 0, sizeof(rc->stats));
 }

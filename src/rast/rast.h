@@ -343,13 +343,6 @@ struct rast_shader {
     * fills the quad's `last` with them before shading, and a multisampled
     * target is shaded once a sample (msaa.c). */
    unsigned fetch_mask;
-   /* With scenes (rast_set_overlap), a worker reaches a batch after the
-    * caller has moved on: where the batch's shader state is new to it, it
-    * calls sync(thread_ctx[t], sync_data) first, to bring its own context
-    * to the state sync_data describes, which must stay valid until
-    * rast_wait.  The caller's own context is the caller's to keep up. */
-   void (*sync)(void *ctx, const void *data);
-   const void *sync_data;
 };
 
 /* ------------------------------------------------------------------ */
@@ -537,31 +530,10 @@ unsigned rast_get_threads(const struct rast_context *rc);
 /* Thread t's context (t = 0: rc itself), for the shader's texture glue to
  * count its events into (tex_stats_to_rast) while it runs on that thread. */
 struct rast_context *rast_thread_context(struct rast_context *rc, unsigned t);
-/* The context the calling thread draws its rows of a scene's batches with,
- * one batch behind (rast_set_overlap): the shader's thread_ctx[0] is its
- * shading context, when given (else ctx). */
-struct rast_context *rast_behind_context(struct rast_context *rc);
 /* Draws every queued primitive and returns when they are all in the
  * framebuffer.  Vertex memory given to rast_triangle/line/point must stay
  * valid until then; state setters flush first. */
 void rast_flush(struct rast_context *rc);
-/* Overlap (the driver's, unless FIXPIPE_DEBUG=nooverlap): rast_submit
- * draws the calling thread's share of the queue and returns with the
- * workers possibly still drawing theirs, so that the caller's own work for
- * the next batch (the driver, Mesa, the program) runs meanwhile; the cut
- * leaves the workers what the caller's gap was on the last batches of the
- * size.  At most one batch is in flight: the next rast_submit, rast_flush,
- * rast_run_on_threads, rast_get_stats and rast_wait wait for it.  While it
- * is, the vertex memory, the framebuffer and everything the shader reads
- * must stay as they were at rast_submit; the context's own state may
- * change (the state setters only submit), as the workers hold copies.
- * Without overlap rast_submit is rast_flush. */
-void rast_set_overlap(struct rast_context *rc, bool on);
-void rast_submit(struct rast_context *rc);
-void rast_wait(struct rast_context *rc);
-/* Whether workers may still be drawing batches submitted (a scene is open):
- * memory those batches read must stay until rast_wait. */
-bool rast_busy(const struct rast_context *rc);
 /* Work outside the model that divides by rows (the driver's clears): the
  * queue drawn first, then job(arg, t, n) called once for each t in 0..n-1,
  * each on its own thread, returning when all have.  n is 1 (the caller
@@ -590,8 +562,8 @@ struct rast_thread_times {
 };
 void rast_get_thread_times(const struct rast_context *rc, struct rast_thread_times *t);
 
-/* Every thread's counters summed, after the batch in flight if any. */
-const struct rast_stats *rast_get_stats(struct rast_context *rc);
+/* Up to date after rast_flush: every thread's counters summed. */
+const struct rast_stats *rast_get_stats(const struct rast_context *rc);
 void rast_reset_stats(struct rast_context *rc);
 
 #endif

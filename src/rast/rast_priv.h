@@ -144,9 +144,6 @@ void rast_backend_sample(struct rast_context *rc, unsigned s);
 /* backend.c: whether the back end runs the shader at all (a colour it
  * writes, a depth output or a discard). */
 bool rast_backend_shades(const struct rast_context *rc);
-/* What a state setter does first: with overlap, only submit the queue (the
- * workers draw with copies of the state); else rast_flush. */
-void rast_flush_state(struct rast_context *rc);
 bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
                 const float (*v1)[4], const float (*v2)[4]);
 

@@ -69,83 +69,19 @@ struct rast_prim {
    bool culled;         /* a triangle the cull stage drops (likely: for the split) */
 };
 
-/* The state a worker draws a batch with: what the setters set on the main
- * context, copied where it changed since the last batch.  The copy is the
- * batch's own, so the main context may change while the workers still
- * draw (scenes, below). */
-struct rast_state_copy {
-   unsigned long serial;                /* from 1; the workers compare it */
-   struct rast_state_copy *next;        /* the pool's list, freed when drained */
-   struct rast_framebuffer fb;
-   struct rast_raster_state rs;
-   struct rast_scissor scissor, viewport;
-   struct rast_depth_stencil_state dsa;
-   uint8_t stencil_ref[2];
-   unsigned sample_mask;
-   struct rast_blend_state blend;
-   float blend_color[4];
-   struct rast_vertex_layout vl;
-   struct rast_shader fs;
-   unsigned opts, interp;
-   const struct numsys *texfmt;
-};
-
-/* What the workers do next, in order: a batch (its primitives, the state
- * it is drawn with, each thread's rows) or a job. */
-struct rast_event {
-   struct rast_prim *prim;
-   size_t nprim, cap;
-   const struct rast_state_copy *state;
-   int64_t band_lo[RAST_MAX_THREADS], band_hi[RAST_MAX_THREADS];
-   rast_job_fn job;
-   void *job_arg;
-   /* the submitting thread's floating-point environment: Mesa's draw
-    * module sets denormals to zero around a draw, and a subnormal input
-    * must read the same on every thread */
-   fenv_t fenv;
-};
-/* Events the workers may be behind the calling thread. */
-#define RAST_RING 64
-/* Targets whose work per band the scenes remember. */
-#define RAST_SCENE_HIST 32
-
-/* What the last scene on a target said (a target: its size and where its
- * first colour buffer or its depth buffer is, as a program renders each
- * pass of a frame to a target of its own): the work of each of its bands,
- * and the calling thread's share of the work that balanced it. */
-struct rast_scene_hist {
-   unsigned width, height;
-   const void *where;
-   /* and how it began: a program may draw two passes to one target in a
-    * frame (a background, then windows), each its own scene */
-   size_t first_nprim;
-   unsigned first_pixels;           /* 4 log2 of the first batch's boxes */
-   int64_t first_row;               /* its first primitive's top, in 64 rows */
-   size_t batches;                  /* the scene's batches */
-   double *work;
-   size_t nb;
-   double main_share;
-};
-
 struct rast_pool {
    unsigned n;
    /* the workers' threads: started with the first batch drawn on all
     * (pool_start); if one cannot be, every batch is drawn on the caller */
    bool started, serial_only;
    struct rast_context *ctx[RAST_MAX_THREADS];   /* [0]: the main context */
+   unsigned long synced[RAST_MAX_THREADS];       /* state_serial last copied */
    pthread_t thread[RAST_MAX_THREADS];
    bool thread_live[RAST_MAX_THREADS];
 
-   /* the queue being filled */
    struct rast_prim *prim;
    size_t nprim, cap;
    double pixels;                                 /* the queue's bounding boxes */
-   /* event e (from 1) is ring[(e - 1) % RAST_RING]; published: the last */
-   struct rast_event ring[RAST_RING];
-   unsigned long published;
-   /* the state copies alive, the newest first, and its serial */
-   struct rast_state_copy *copies;
-   unsigned long copied_serial, copies_made;
    /* split_rows: the work per band of the target's rows */
    double *band_w;
    size_t band_cap;
@@ -154,53 +90,33 @@ struct rast_pool {
     * the current batch's size. */
    float slowness[RAST_BATCH_SIZES][RAST_MAX_THREADS];
    unsigned size_class;
-   /* Each thread's share of the batch: its work and its time; and a
-    * worker's time drawing in the scene.  Written by that thread only, a
-    * cache line apart. */
+   /* Each thread's share of the batch: its work and its time, written by
+    * that thread only, a cache line apart. */
    struct {
-      double work, seconds, scene_seconds;
-      char apart[64 - 3 * sizeof(double)];
+      double work, seconds;
+      char apart[64 - 2 * sizeof(double)];
    } share[RAST_MAX_THREADS];
    uint64_t drawn_serial, drawn_parallel;
    uint64_t jobs_serial, jobs_parallel;           /* rast_run_on_threads */
    /* rast_get_thread_times; last_end: when the calling thread last
-    * returned from the model's work (0: not yet) */
+    * returned from a batch or a job on all threads (0: not yet) */
    struct rast_thread_times times;
    double last_end;
 
-   /* Scenes (rast_set_overlap): from the first batch after a drain to the
-    * next drain, every batch is cut at the same rows, so that a worker may
-    * draw batches behind the calling thread without changing the order on
-    * any row; the calling thread draws its rows as it submits. */
-   bool overlap;
-   bool scene;                        /* one is open */
-   /* The calling thread draws its rows of a scene's batches one batch
-    * behind, with this context and the state each batch was submitted
-    * with, so that a worker done with a batch finds the next one waiting:
-    * main_next is the first event whose rows it has not drawn. */
-   struct rast_context *behind;
-   unsigned long main_next, behind_applied;
-   int64_t scene_lo[RAST_MAX_THREADS], scene_hi[RAST_MAX_THREADS];
-   unsigned scene_width, scene_height;
-   const void *scene_where;
-   size_t scene_first_nprim;
-   unsigned scene_first_pixels;
-   int64_t scene_first_row;
-   size_t scene_batches;
-   /* its start; the calling thread's time drawing its rows, and waiting
-    * for a free event (the workers RAST_RING behind) */
-   double scene_t0, scene_main_seconds, scene_wait;
-   double *scene_work;                /* its work per band so far */
-   size_t scene_nb, scene_cap;
-   struct rast_scene_hist hist[RAST_SCENE_HIST];
-   unsigned hist_next;
+   /* The flushing thread's floating-point environment, which the workers
+    * take for the batch: Mesa's draw module sets denormals to zero around a
+    * draw, and a subnormal input must read the same on every thread. */
+   fenv_t fenv;
 
    pthread_mutex_t mtx;
    pthread_cond_t go, done;
-   atomic_ulong batch;         /* events published; a worker runs each once, in order */
-   atomic_uint pending;        /* events not yet run, summed over the workers */
-   atomic_bool main_sleeping;  /* the calling thread waits on `done` */
+   atomic_ulong batch;         /* batches started; a worker runs each once */
+   atomic_uint pending;        /* workers still drawing the current batch */
    atomic_bool quit;
+
+   /* rast_run_on_threads: the batch is this job instead of the queue */
+   rast_job_fn job;
+   void *job_arg;
 };
 
 struct rast_worker_arg {
@@ -303,10 +219,9 @@ static unsigned size_class(size_t nprim)
    return c;
 }
 
-/* The work of each band of rows of the batch prim[0..n) into
- * pool->band_w; its sum, 0 when the array cannot be had. */
-static double band_work(struct rast_pool *pool, const struct rast_prim *prim, size_t n,
-                        int64_t height, size_t nb)
+/* The work of each band of rows into pool->band_w; its sum, 0 when the
+ * array cannot be had. */
+static double band_work(struct rast_pool *pool, int64_t height, size_t nb)
 {
    if (pool->band_cap < nb + 1) {
       double *w = realloc(pool->band_w, (nb + 1) * sizeof(*w));
@@ -320,8 +235,8 @@ static double band_work(struct rast_pool *pool, const struct rast_prim *prim, si
    /* a primitive's width on each of its rows as differences: a band's sum
     * over its rows added where the primitive begins, taken off where it
     * ends, summed below; the set-up's in the band of the top row */
-   for (size_t i = 0; i < n; i++) {
-      const struct rast_prim *p = &prim[i];
+   for (size_t i = 0; i < pool->nprim; i++) {
+      const struct rast_prim *p = &pool->prim[i];
       if (!p->rows_known || p->lo >= height || p->hi < 0)
          continue;
       const int64_t lo = p->lo, hi = p->hi < height ? p->hi : height - 1;
@@ -351,84 +266,39 @@ static double band_work(struct rast_pool *pool, const struct rast_prim *prim, si
    return total;
 }
 
-/* Thread t's rows, [lo, hi), from the cuts before each thread (in bands). */
-static void rows_of_cuts(const size_t *cut, unsigned n, int64_t *lo, int64_t *hi)
-{
-   for (unsigned t = 0; t < n; t++) {
-      lo[t] = t == 0 ? INT64_MIN : (int64_t)cut[t] * RAST_BAND_ROWS;
-      hi[t] = t + 1 == n ? INT64_MAX : (int64_t)cut[t + 1] * RAST_BAND_ROWS;
-   }
-}
-
-/* The cuts where work w[0..nb) divides as share[t] (summing to 1): the
- * cut before thread t where the work before it is that of the threads
- * before it, a band to whichever side holds more of it. */
-static void cut_work(const double *w, size_t nb, double total, const double *share, unsigned n,
-                     size_t *cut)
-{
-   cut[0] = 0;
-   cut[n] = nb;
-   if (!(total > 0)) {
-      for (unsigned t = 1; t < n; t++)
-         cut[t] = nb * t / n;
-      return;
-   }
-   double acc = 0, ahead = 0;
-   size_t b = 0;
-   for (unsigned t = 1; t < n; t++) {
-      ahead += share[t - 1];
-      const double want = total * ahead;
-      while (b < nb && acc + w[b] * 0.5 < want)
-         acc += w[b++];
-      cut[t] = b;
-   }
-}
-
-/* A scene's rows for each thread, where work w[0..nb) divides as share[t]:
- * within a band at a quad row's edge, the band's work taken as even over
- * its rows.  A scene keeps its cut for all its batches, so a band's worth
- * of error would be its error throughout. */
-static void cut_rows_fine(const double *w, size_t nb, double total, const double *share,
-                          unsigned n, int64_t *lo, int64_t *hi)
-{
-   double acc = 0, ahead = 0;
-   size_t b = 0;
-   int64_t row = 0;
-   for (unsigned t = 1; t < n; t++) {
-      ahead += share[t - 1];
-      const double want = total * ahead;
-      while (b < nb && acc + w[b] < want)
-         acc += w[b++];
-      const double frac = b < nb && w[b] > 0 ? (want - acc) / w[b] : 0.0;
-      const int64_t quads = (int64_t)(frac * (RAST_BAND_ROWS / 2) + 0.5);
-      int64_t r = (int64_t)b * RAST_BAND_ROWS + 2 * quads;
-      row = r > row ? r : row;
-      hi[t - 1] = row;
-      lo[t] = row;
-   }
-   lo[0] = INT64_MIN;
-   hi[n - 1] = INT64_MAX;
-}
-
-/* The batch ev divided where its work divides in proportion to the
- * threads' learned speeds. */
-static void split_rows(struct rast_pool *pool, const struct rast_context *rc,
-                       struct rast_event *ev)
+static void split_rows(struct rast_pool *pool, const struct rast_context *rc)
 {
    const unsigned n = pool->n;
    const int64_t height = rc->fb.height > 0 ? rc->fb.height : 1;
    const size_t nb = (size_t)((height + RAST_BAND_ROWS - 1) / RAST_BAND_ROWS);
-   const double total = band_work(pool, ev->prim, ev->nprim, height, nb);
-   const float *slow = pool->slowness[pool->size_class = size_class(ev->nprim)];
-   double share[RAST_MAX_THREADS] = { 0 }, speed = 0;
+   const double total = band_work(pool, height, nb);
+   const float *slow = pool->slowness[pool->size_class = size_class(pool->nprim)];
    size_t cut[RAST_MAX_THREADS + 1];            /* thread t: bands [cut[t], cut[t + 1]) */
+   double speed = 0;
    for (unsigned t = 0; t < n; t++)
       speed += 1.0 / slow[t];
-   for (unsigned t = 0; t < n; t++)
-      share[t] = 1.0 / slow[t] / speed;
-   cut_work(pool->band_w, nb, total, share, n, cut);
-   rows_of_cuts(cut, n, ev->band_lo, ev->band_hi);
+   cut[0] = 0;
+   cut[n] = nb;
+   if (total > 0) {
+      /* the cut before thread t where the work before it is that of the
+       * threads before it (a band to whichever side holds more of it) */
+      double acc = 0, ahead = 0;
+      size_t b = 0;
+      for (unsigned t = 1; t < n; t++) {
+         ahead += 1.0 / slow[t - 1];
+         const double want = total * ahead / speed;
+         while (b < nb && acc + pool->band_w[b] * 0.5 < want)
+            acc += pool->band_w[b++];
+         cut[t] = b;
+      }
+   } else {
+      for (unsigned t = 1; t < n; t++)
+         cut[t] = nb * t / n;
+   }
    for (unsigned t = 0; t < n; t++) {
+      struct rast_context *c = pool->ctx[t];
+      c->band_lo = t == 0 ? INT64_MIN : (int64_t)cut[t] * RAST_BAND_ROWS;
+      c->band_hi = t + 1 == n ? INT64_MAX : (int64_t)cut[t + 1] * RAST_BAND_ROWS;
       double w = 0;
       for (size_t k = cut[t]; total > 0 && k < cut[t + 1]; k++)
          w += pool->band_w[k];
@@ -464,11 +334,11 @@ static void draw_prim(struct rast_context *rc, const struct rast_prim *p)
    }
 }
 
-/* Thread rc's share of the batch prim[0..n). */
-static void draw_share(struct rast_context *rc, const struct rast_prim *prim, size_t n)
+/* Thread rc's share of the queue. */
+static void draw_share(struct rast_context *rc, const struct rast_pool *pool)
 {
-   for (size_t i = 0; i < n; i++) {
-      const struct rast_prim *p = &prim[i];
+   for (size_t i = 0; i < pool->nprim; i++) {
+      const struct rast_prim *p = &pool->prim[i];
       bool mine_setup;
       if (rc->band_count == 1) {
          mine_setup = true;
@@ -486,77 +356,6 @@ static void draw_share(struct rast_context *rc, const struct rast_prim *prim, si
    rast_count_stretch(rc, true);
 }
 
-/* ---- the state the workers draw with ---- */
-
-/* The main context's state as the batches from now on draw it: the last
- * copy, or a new one where a setter changed it since.  NULL: no memory. */
-static const struct rast_state_copy *state_now(struct rast_pool *pool,
-                                               const struct rast_context *rc)
-{
-   if (pool->copies && pool->copied_serial == rc->state_serial)
-      return pool->copies;
-   struct rast_state_copy *c = malloc(sizeof(*c));
-   if (!c)
-      return NULL;
-   c->serial = ++pool->copies_made;
-   c->fb = rc->fb;
-   c->rs = rc->rs;
-   c->scissor = rc->scissor;
-   c->viewport = rc->viewport;
-   c->dsa = rc->dsa;
-   memcpy(c->stencil_ref, rc->stencil_ref, sizeof(c->stencil_ref));
-   c->sample_mask = rc->sample_mask;
-   c->blend = rc->blend;
-   memcpy(c->blend_color, rc->blend_color, sizeof(c->blend_color));
-   c->vl = rc->vl;
-   c->fs = rc->fs;
-   c->opts = rc->opts;
-   c->interp = rc->interp;
-   c->texfmt = rc->texfmt;
-   c->next = pool->copies;
-   pool->copies = c;
-   pool->copied_serial = rc->state_serial;
-   return c;
-}
-
-/* Every copy but the newest, once no event names them. */
-static void free_old_copies(struct rast_pool *pool)
-{
-   if (!pool->copies)
-      return;
-   for (struct rast_state_copy *c = pool->copies->next, *next; c; c = next) {
-      next = c->next;
-      free(c);
-   }
-   pool->copies->next = NULL;
-}
-
-/* The copy as worker t's state: the same everything but the shader's
- * context, which is the thread's own, brought up to the batch's shader
- * state by the shader's sync. */
-static void apply_state(struct rast_context *w, const struct rast_state_copy *c, unsigned t)
-{
-   w->fb = c->fb;
-   w->rs = c->rs;
-   w->scissor = c->scissor;
-   w->viewport = c->viewport;
-   w->dsa = c->dsa;
-   memcpy(w->stencil_ref, c->stencil_ref, sizeof(w->stencil_ref));
-   w->sample_mask = c->sample_mask;
-   w->blend = c->blend;
-   memcpy(w->blend_color, c->blend_color, sizeof(w->blend_color));
-   w->vl = c->vl;
-   w->fs = c->fs;
-   if (c->fs.thread_ctx[t])
-      w->fs.ctx = c->fs.thread_ctx[t];
-   w->opts = c->opts;
-   w->interp = c->interp;
-   w->texfmt = c->texfmt;
-   w->dirty = true;
-   if (w->fs.sync)
-      w->fs.sync(w->fs.ctx, w->fs.sync_data);
-}
-
 /* ---- the workers ---- */
 
 static void *worker_main(void *data)
@@ -565,7 +364,7 @@ static void *worker_main(void *data)
    struct rast_pool *pool = arg->pool;
    const unsigned t = arg->t;
    free(arg);
-   unsigned long seen = 0, applied = 0;
+   unsigned long seen = 0;
    unsigned polls = 0;          /* none before the first batch */
 
    for (;;) {
@@ -584,36 +383,47 @@ static void *worker_main(void *data)
       }
       if (atomic_load(&pool->quit))
          return NULL;
+      seen = b;
       polls = RAST_SPIN_POLLS;
 
-      while (seen < b) {
-         const struct rast_event *ev = &pool->ring[seen % RAST_RING];
-         seen++;
-         if (ev->job) {
-            ev->job(ev->job_arg, t, pool->n);
-         } else {
-            struct rast_context *w = pool->ctx[t];
-            const double t0 = seconds_now();
-            if (ev->state->serial != applied) {
-               apply_state(w, ev->state, t);
-               applied = ev->state->serial;
-            }
-            w->band_lo = ev->band_lo[t];
-            w->band_hi = ev->band_hi[t];
-            fesetenv(&ev->fenv);
-            draw_share(w, ev->prim, ev->nprim);
-            const double s = seconds_now() - t0;
-            pool->share[t].seconds = s;
-            pool->share[t].scene_seconds += s;
-         }
-         atomic_fetch_sub(&pool->pending, 1);
-         if (atomic_load(&pool->main_sleeping)) {
-            pthread_mutex_lock(&pool->mtx);
-            pthread_cond_broadcast(&pool->done);
-            pthread_mutex_unlock(&pool->mtx);
-         }
+      if (pool->job) {
+         pool->job(pool->job_arg, t, pool->n);
+      } else {
+         fesetenv(&pool->fenv);
+         const double t0 = seconds_now();
+         draw_share(pool->ctx[t], pool);
+         pool->share[t].seconds = seconds_now() - t0;
+      }
+
+      if (atomic_fetch_sub_explicit(&pool->pending, 1, memory_order_acq_rel) == 1) {
+         pthread_mutex_lock(&pool->mtx);
+         pthread_cond_signal(&pool->done);
+         pthread_mutex_unlock(&pool->mtx);
       }
    }
+}
+
+/* The main context's state, as a worker's own: the same everything but
+ * the shader's context, which is the worker's. */
+static void sync_state(struct rast_context *w, const struct rast_context *rc, unsigned t)
+{
+   w->fb = rc->fb;
+   w->rs = rc->rs;
+   w->scissor = rc->scissor;
+   w->viewport = rc->viewport;
+   w->dsa = rc->dsa;
+   memcpy(w->stencil_ref, rc->stencil_ref, sizeof(w->stencil_ref));
+   w->sample_mask = rc->sample_mask;
+   w->blend = rc->blend;
+   memcpy(w->blend_color, rc->blend_color, sizeof(w->blend_color));
+   w->vl = rc->vl;
+   w->fs = rc->fs;
+   if (rc->fs.thread_ctx[t])
+      w->fs.ctx = rc->fs.thread_ctx[t];
+   w->opts = rc->opts;
+   w->interp = rc->interp;
+   w->texfmt = rc->texfmt;
+   w->dirty = true;
 }
 
 /* rast_stats holds uint64_t counters only (fx_sat is two of them), and
@@ -671,225 +481,28 @@ static bool pool_start(struct rast_pool *pool)
    return true;
 }
 
-/* The calling thread waits until at most `left` events are still to be run
- * (summed over the workers). */
-static void wait_pending(struct rast_pool *pool, unsigned left)
+/* The workers on to the next batch (the queue, or pool->job). */
+static void wake_workers(struct rast_pool *pool)
 {
-   for (unsigned i = 0; i < RAST_SPIN_POLLS && atomic_load(&pool->pending) > left; i++)
-      cpu_relax();
-   if (atomic_load(&pool->pending) <= left)
-      return;
+   atomic_store_explicit(&pool->pending, pool->n - 1, memory_order_relaxed);
    pthread_mutex_lock(&pool->mtx);
-   atomic_store(&pool->main_sleeping, true);
-   while (atomic_load(&pool->pending) > left)
-      pthread_cond_wait(&pool->done, &pool->mtx);
-   atomic_store(&pool->main_sleeping, false);
-   pthread_mutex_unlock(&pool->mtx);
-}
-
-/* The next event's slot, free: every worker has run the event that held
- * it.  The caller fills it and publishes it. */
-static struct rast_event *next_event(struct rast_pool *pool)
-{
-   wait_pending(pool, RAST_RING - 1);
-   return &pool->ring[pool->published % RAST_RING];
-}
-
-/* The workers on to the event just filled. */
-static void publish(struct rast_pool *pool)
-{
-   pool->published++;
-   atomic_fetch_add(&pool->pending, pool->n - 1);
-   pthread_mutex_lock(&pool->mtx);
-   atomic_store_explicit(&pool->batch, pool->published, memory_order_release);
+   atomic_fetch_add_explicit(&pool->batch, 1, memory_order_release);
    pthread_cond_broadcast(&pool->go);
    pthread_mutex_unlock(&pool->mtx);
 }
 
-/* The queue into event ev (which gives the queue its array back). */
-static void take_queue(struct rast_pool *pool, struct rast_event *ev)
+/* Returns when every worker has finished the batch. */
+static void wait_workers(struct rast_pool *pool)
 {
-   struct rast_prim *p = ev->prim;
-   const size_t cap = ev->cap;
-   ev->prim = pool->prim;
-   ev->cap = pool->cap;
-   ev->nprim = pool->nprim;
-   ev->job = NULL;
-   pool->prim = p;
-   pool->cap = cap;
-   pool->nprim = 0;
-   pool->pixels = 0;
-}
-
-/* ---- scenes ---- */
-
-static const void *target_where(const struct rast_framebuffer *fb)
-{
-   return fb->nr_cbufs && fb->cbuf[0].base ? (const void *)fb->cbuf[0].base
-                                           : (const void *)fb->zs.base;
-}
-
-static struct rast_scene_hist *scene_hist(struct rast_pool *pool)
-{
-   for (unsigned i = 0; i < RAST_SCENE_HIST; i++) {
-      const struct rast_scene_hist *h = &pool->hist[i];
-      if (h->work && h->width == pool->scene_width && h->height == pool->scene_height &&
-          h->where == pool->scene_where && h->first_nprim == pool->scene_first_nprim &&
-          h->first_pixels == pool->scene_first_pixels && h->first_row == pool->scene_first_row)
-         return &pool->hist[i];
+   for (unsigned i = 0; i < RAST_SPIN_POLLS &&
+        atomic_load_explicit(&pool->pending, memory_order_acquire); i++)
+      cpu_relax();
+   if (atomic_load_explicit(&pool->pending, memory_order_acquire)) {
+      pthread_mutex_lock(&pool->mtx);
+      while (atomic_load_explicit(&pool->pending, memory_order_acquire))
+         pthread_cond_wait(&pool->done, &pool->mtx);
+      pthread_mutex_unlock(&pool->mtx);
    }
-   return NULL;
-}
-
-/* A scene's cut: the work per band of the last scene on its target, the
- * calling thread's share as learned there; else its first batch's work
- * (the queue), or the rows, evenly. */
-static void scene_open(struct rast_pool *pool, const struct rast_context *rc)
-{
-   const unsigned n = pool->n;
-   const int64_t height = rc->fb.height > 0 ? rc->fb.height : 1;
-   const size_t nb = (size_t)((height + RAST_BAND_ROWS - 1) / RAST_BAND_ROWS);
-   pool->scene_width = rc->fb.width;
-   pool->scene_height = (unsigned)height;
-   pool->scene_where = target_where(&rc->fb);
-   pool->scene_first_nprim = pool->nprim;
-   pool->scene_first_pixels = (unsigned)(4.0 * log2(pool->pixels + 1.0));
-   pool->scene_first_row = pool->nprim && pool->prim[0].rows_known ? pool->prim[0].lo / 64 : -1;
-   pool->scene_batches = 0;
-   const struct rast_scene_hist *h = scene_hist(pool);
-   double share[RAST_MAX_THREADS] = { 0 };
-   /* the calling thread's share as learned for the scene, else as the
-    * threads' speeds for its first batch give it */
-   const float *slow = pool->slowness[size_class(pool->nprim)];
-   double speed = 0;
-   for (unsigned t = 0; t < n; t++)
-      speed += 1.0 / slow[t];
-   share[0] = h ? h->main_share : 1.0 / speed;
-   for (unsigned t = 1; t < n; t++)
-      share[t] = h ? (1.0 - share[0]) / (n - 1) : 1.0 / slow[t] / speed;
-   double total = 0;
-   if (h && h->batches > 1 && h->nb == nb)
-      for (size_t b = 0; b < nb; b++)
-         total += h->work[b];
-   if (total > 0) {
-      cut_rows_fine(h->work, nb, total, share, n, pool->scene_lo, pool->scene_hi);
-   } else if ((total = band_work(pool, pool->prim, pool->nprim, height, nb)) > 0) {
-      /* a scene of one batch last time, or not seen yet: as its first
-       * batch divides */
-      cut_rows_fine(pool->band_w, nb, total, share, n, pool->scene_lo, pool->scene_hi);
-   } else {
-      /* rows in proportion to the shares */
-      size_t cut[RAST_MAX_THREADS + 1];
-      cut[0] = 0;
-      cut[n] = nb;
-      double ahead = 0;
-      for (unsigned t = 1; t < n; t++) {
-         ahead += share[t - 1];
-         cut[t] = (size_t)(ahead * (double)nb + 0.5);
-      }
-      rows_of_cuts(cut, n, pool->scene_lo, pool->scene_hi);
-   }
-   pool->scene = true;
-   pool->scene_nb = pool->scene_cap >= nb ? nb : 0;
-   if (pool->scene_cap < nb) {
-      double *w = realloc(pool->scene_work, nb * sizeof(*w));
-      if (w) {
-         pool->scene_work = w;
-         pool->scene_cap = nb;
-         pool->scene_nb = nb;
-      }
-   }
-   if (pool->scene_nb)
-      memset(pool->scene_work, 0, nb * sizeof(*pool->scene_work));
-   pool->scene_t0 = seconds_now();
-   pool->main_next = pool->published + 1;
-   pool->scene_main_seconds = 0;
-   pool->scene_wait = 0;
-   for (unsigned t = 1; t < n; t++)
-      pool->share[t].scene_seconds = 0;
-}
-
-/* The scene drawn (every event run): what it says of the next one on a
- * target of its size.  The calling thread's share is the one with which it
- * would have ended with the workers: its time per unit of work, plus its
- * own time outside its shares (the driver's, Mesa's, the program's), equal
- * to theirs.  t_end: when the calling thread began to wait for them. */
-static void scene_close(struct rast_pool *pool, double t_end)
-{
-   const unsigned n = pool->n;
-   pool->scene = false;
-   if (!pool->scene_nb)
-      return;
-   struct rast_scene_hist *h = scene_hist(pool);
-   if (!h) {
-      h = &pool->hist[pool->hist_next];
-      pool->hist_next = (pool->hist_next + 1) % RAST_SCENE_HIST;
-      free(h->work);
-      *h = (struct rast_scene_hist){ pool->scene_width, pool->scene_height, pool->scene_where,
-                                     pool->scene_first_nprim, pool->scene_first_pixels,
-                                     pool->scene_first_row, 0, NULL, 0, 1.0 / n };
-   }
-   h->batches = pool->scene_batches;
-   if (h->nb != pool->scene_nb) {
-      double *w = realloc(h->work, pool->scene_nb * sizeof(*w));
-      if (!w)
-         return;
-      h->work = w;
-      h->nb = pool->scene_nb;
-   }
-   memcpy(h->work, pool->scene_work, h->nb * sizeof(*h->work));
-
-   double main_work = 0, work = 0, workers_seconds = 0;
-   for (size_t b = 0; b < h->nb; b++) {
-      work += h->work[b];
-      /* the part of the band above the calling thread's last row */
-      const double rows = (double)(pool->scene_hi[0] - (int64_t)b * RAST_BAND_ROWS);
-      main_work += h->work[b] * (rows <= 0 ? 0.0 : rows >= RAST_BAND_ROWS ? 1.0
-                                                                           : rows / RAST_BAND_ROWS);
-   }
-   for (unsigned t = 1; t < n; t++)
-      workers_seconds += pool->share[t].scene_seconds;
-   const double min_seconds = 200e-6;
-   if (!(work > 0) || main_work <= 0 || main_work >= work ||
-       pool->scene_main_seconds < min_seconds || workers_seconds < min_seconds)
-      return;
-   const double main_rate = pool->scene_main_seconds / main_work;
-   const double worker_rate = workers_seconds / (work - main_work);   /* all workers together */
-   const double own = t_end - pool->scene_t0 - pool->scene_main_seconds - pool->scene_wait;
-   /* w0 * main_rate + own = (work - w0) * worker_rate / (n - 1) */
-   const double per = worker_rate / (n - 1);
-   double share = (work * per - (own > 0 ? own : 0)) / (main_rate + per) / work;
-   share = share < 0.02 ? 0.02 : share > 0.98 ? 0.98 : share;
-   h->main_share += 0.5 * (share - h->main_share);
-}
-
-/* ---- batches ---- */
-
-/* The calling thread's rows of the scene's events up to `upto`, each with
- * the state and floating-point environment it was submitted with. */
-static void draw_main_parts(struct rast_pool *pool, unsigned long upto)
-{
-   if (pool->main_next > upto)
-      return;
-   fenv_t env;
-   fegetenv(&env);
-   struct rast_context *w = pool->behind;
-   const double t0 = seconds_now();
-   for (; pool->main_next <= upto; pool->main_next++) {
-      const struct rast_event *ev = &pool->ring[(pool->main_next - 1) % RAST_RING];
-      if (ev->job)
-         continue;
-      if (ev->state->serial != pool->behind_applied) {
-         apply_state(w, ev->state, 0);
-         pool->behind_applied = ev->state->serial;
-      }
-      w->band_lo = ev->band_lo[0];
-      w->band_hi = ev->band_hi[0];
-      fesetenv(&ev->fenv);
-      draw_share(w, ev->prim, ev->nprim);
-   }
-   fesetenv(&env);
-   pool->scene_main_seconds += seconds_now() - t0;
 }
 
 unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg)
@@ -905,164 +518,66 @@ unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg
    }
    pool->jobs_parallel++;
    const double t0 = work_begins(pool);
-   struct rast_event *ev = next_event(pool);
-   ev->job = job;
-   ev->job_arg = arg;
-   publish(pool);
+   pool->job = job;
+   pool->job_arg = arg;
+   wake_workers(pool);
    job(arg, 0, pool->n);
-   wait_pending(pool, 0);
+   wait_workers(pool);
+   pool->job = NULL;
+   pool->job_arg = NULL;
    pool->last_end = seconds_now();
    pool->times.jobs += pool->last_end - t0;
    return pool->n;
 }
 
-/* Every event run; the workers' counters into the main context's, and
- * what a scene or a batch says of the threads' speeds. */
-void rast_wait(struct rast_context *rc)
-{
-   struct rast_pool *pool = rc->pool;
-   if (!pool || !pool->scene)
-      return;
-   double t0 = work_begins(pool);
-   draw_main_parts(pool, pool->published);
-   const double t1 = seconds_now();
-   pool->times.shares += t1 - t0;
-   wait_pending(pool, 0);
-   pool->last_end = seconds_now();
-   pool->times.waiting += pool->last_end - t1;
-   for (unsigned t = 1; t < pool->n; t++)
-      pool->times.worker_shares += pool->share[t].scene_seconds;
-   scene_close(pool, t1);
-   for (unsigned t = 1; t < pool->n; t++)
-      stats_add(&rc->stats, &pool->ctx[t]->stats);
-   stats_add(&rc->stats, &pool->behind->stats);
-   free_old_copies(pool);
-}
-
-void rast_submit(struct rast_context *rc)
+void rast_flush(struct rast_context *rc)
 {
    struct rast_pool *pool = rc->pool;
    if (!pool || !pool->nprim)
       return;
 
-   double t0 = work_begins(pool);
-   if (!pool->scene && (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool))) {
-      /* small, or no worker: on the calling thread, every row its own */
-      const size_t n = pool->nprim;
-      pool->nprim = 0;
-      pool->pixels = 0;
-      draw_share(rc, pool->prim, n);
+   const double t0 = work_begins(pool);
+   if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
+      draw_share(rc, pool);
       pool->last_end = seconds_now();
       pool->times.alone += pool->last_end - t0;
-      pool->drawn_serial += n;
-      return;
-   }
-   const struct rast_state_copy *state = state_now(pool, rc);
-   if (!state) {
-      /* no memory for the copy: drawn when every thread has finished */
-      rast_wait(rc);
-      t0 = work_begins(pool);
-      const size_t n = pool->nprim;
+      pool->drawn_serial += pool->nprim;
       pool->nprim = 0;
       pool->pixels = 0;
-      draw_share(rc, pool->prim, n);
-      pool->last_end = seconds_now();
-      pool->times.alone += pool->last_end - t0;
-      pool->drawn_serial += n;
       return;
    }
 
-   if (pool->overlap && !pool->scene)
-      scene_open(pool, rc);
-   const double tw = seconds_now();
-   struct rast_event *ev = next_event(pool);
-   const double waited = seconds_now() - tw;
-   pool->scene_wait += waited;
-   pool->times.waiting += waited;
-   take_queue(pool, ev);
-   ev->state = state;
-   fegetenv(&ev->fenv);
-   if (pool->scene) {
-      pool->scene_batches++;
-      memcpy(ev->band_lo, pool->scene_lo, sizeof(ev->band_lo));
-      memcpy(ev->band_hi, pool->scene_hi, sizeof(ev->band_hi));
-      if (pool->scene_nb) {
-         const double total = band_work(pool, ev->prim, ev->nprim, pool->scene_height,
-                                        pool->scene_nb);
-         for (size_t b = 0; total > 0 && b < pool->scene_nb; b++)
-            pool->scene_work[b] += pool->band_w[b];
+   for (unsigned t = 1; t < pool->n; t++) {
+      if (pool->synced[t] != rc->state_serial) {
+         sync_state(pool->ctx[t], rc, t);
+         pool->synced[t] = rc->state_serial;
       }
-   } else {
-      split_rows(pool, rc, ev);
    }
-   publish(pool);
-   if (pool->scene) {
-      /* Its own rows of the batches before, while the workers have more
-       * than the one they draw: else it goes on to the next batch first, so
-       * that they do not wait for it (at most half the ring behind). */
-      while (pool->main_next < pool->published &&
-             (atomic_load(&pool->pending) >= 2 * (pool->n - 1) ||
-              pool->published - pool->main_next >= RAST_RING / 2))
-         draw_main_parts(pool, pool->main_next);
-      pool->drawn_parallel += ev->nprim;
-      const double t2 = seconds_now();
-      pool->times.shares += t2 - t0 - waited;
-      pool->last_end = t2;
-      return;
-   }
-
-   /* the calling thread's own rows */
+   split_rows(pool, rc);
    rc->band_count = pool->n;
-   rc->band_lo = ev->band_lo[0];
-   rc->band_hi = ev->band_hi[0];
-   const double t1 = seconds_now();
-   draw_share(rc, ev->prim, ev->nprim);
-   const double t2 = seconds_now();
-   rc->band_count = 1;
-   rc->band_lo = INT64_MIN;
-   rc->band_hi = INT64_MAX;
-   pool->share[0].seconds = t2 - t1;
-   pool->drawn_parallel += ev->nprim;
-   pool->times.shares += t2 - t0 - waited;
-   pool->last_end = t2;
+   fegetenv(&pool->fenv);
+   wake_workers(pool);
 
-   /* without scenes, the batch ends here */
-   wait_pending(pool, 0);
+   const double t1 = seconds_now();
+   draw_share(rc, pool);
+   const double t2 = seconds_now();
+   pool->share[0].seconds = t2 - t1;
+
+   wait_workers(pool);
    pool->last_end = seconds_now();
+   pool->times.shares += t1 - t0 + pool->share[0].seconds;
    pool->times.waiting += pool->last_end - t2;
    for (unsigned t = 1; t < pool->n; t++)
       pool->times.worker_shares += pool->share[t].seconds;
+   rc->band_count = 1;
+   rc->band_lo = INT64_MIN;
+   rc->band_hi = INT64_MAX;
    learn_speeds(pool);
    for (unsigned t = 1; t < pool->n; t++)
       stats_add(&rc->stats, &pool->ctx[t]->stats);
-   free_old_copies(pool);
-}
-
-void rast_flush(struct rast_context *rc)
-{
-   rast_submit(rc);
-   rast_wait(rc);
-}
-
-bool rast_busy(const struct rast_context *rc)
-{
-   return rc->pool && rc->pool->scene;
-}
-
-void rast_set_overlap(struct rast_context *rc, bool on)
-{
-   if (!rc->pool)
-      return;
-   rast_flush(rc);
-   rc->pool->overlap = on;
-}
-
-void rast_flush_state(struct rast_context *rc)
-{
-   if (rc->pool && rc->pool->scene)
-      rast_submit(rc);
-   else
-      rast_flush(rc);
+   pool->drawn_parallel += pool->nprim;
+   pool->nprim = 0;
+   pool->pixels = 0;
 }
 
 bool rast_queue(struct rast_context *rc, enum rast_prim_kind kind, const float (*v0)[4],
@@ -1104,21 +619,10 @@ static void pool_destroy(struct rast_context *rc)
    pool_stop(pool);
    for (unsigned t = 1; t < pool->n; t++)
       rast_destroy(pool->ctx[t]);
-   if (pool->behind)
-      rast_destroy(pool->behind);
    pthread_mutex_destroy(&pool->mtx);
    pthread_cond_destroy(&pool->go);
    pthread_cond_destroy(&pool->done);
    free(pool->prim);
-   for (unsigned i = 0; i < RAST_RING; i++)
-      free(pool->ring[i].prim);
-   for (struct rast_state_copy *c = pool->copies, *next; c; c = next) {
-      next = c->next;
-      free(c);
-   }
-   for (unsigned i = 0; i < RAST_SCENE_HIST; i++)
-      free(pool->hist[i].work);
-   free(pool->scene_work);
    free(pool->band_w);
    free(pool);
    rc->pool = NULL;
@@ -1148,12 +652,6 @@ bool rast_set_threads(struct rast_context *rc, unsigned n)
    pool->ctx[0] = rc;
    pool->n = 1;
    rc->pool = pool;
-   pool->behind = rast_create(rc->profile);
-   if (!pool->behind) {
-      pool_destroy(rc);
-      return false;
-   }
-   pool->behind->band_count = n;
    for (unsigned t = 1; t < n; t++) {
       struct rast_context *w = rast_create(rc->profile);
       if (!w) {
@@ -1163,6 +661,7 @@ bool rast_set_threads(struct rast_context *rc, unsigned n)
       w->band_index = t;
       w->band_count = n;
       pool->ctx[t] = w;
+      pool->synced[t] = rc->state_serial - 1;
       pool->n = t + 1;
    }
    rc->band_index = 0;
@@ -1172,11 +671,6 @@ bool rast_set_threads(struct rast_context *rc, unsigned n)
 unsigned rast_get_threads(const struct rast_context *rc)
 {
    return rc->pool ? rc->pool->n : 1;
-}
-
-struct rast_context *rast_behind_context(struct rast_context *rc)
-{
-   return rc->pool ? rc->pool->behind : rc;
 }
 
 struct rast_context *rast_thread_context(struct rast_context *rc, unsigned t)

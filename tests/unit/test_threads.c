@@ -116,16 +116,13 @@ static void bind_shader(struct rast_context *rc, struct shade_ctx *sctx, unsigne
    rast_set_shader(rc, &fs);
 }
 
-/* overlap: each batch only submitted (rast_submit), the next batch's state
- * set while the workers may still draw it, as the driver does */
 static void draw_scene(const struct scene *s, unsigned threads, bool daz, unsigned interp,
-                       bool overlap, struct result *res)
+                       struct result *res)
 {
    static struct shade_ctx sctx[RAST_MAX_THREADS];
    struct rast_context *rc = rast_create(rast_profile_by_name("seed"));
    CHECK(rast_set_threads(rc, threads), "%u threads", threads);
    rast_set_interp(rc, interp);
-   rast_set_overlap(rc, overlap);
 #if defined(__x86_64__) || defined(__i386__)
    /* With daz, drawn as Mesa's draw module leaves the thread around a draw:
     * denormals flushed to zero (FTZ) and read as zero (DAZ), set after the
@@ -174,10 +171,7 @@ static void draw_scene(const struct scene *s, unsigned threads, bool daz, unsign
          default: rast_point(rc, v0); break;
          }
       }
-      if (overlap)
-         rast_submit(rc);
-      else
-         rast_flush(rc);
+      rast_flush(rc);
    }
    res->stats = *rast_get_stats(rc);
    res->quads_shaded = 0;
@@ -314,12 +308,12 @@ int main(void)
          threads = RAST_MAX_THREADS;
       /* every FIXPIPE_INTERP mode, measured or not, in turn */
       const unsigned interp = n % 3 | (n % 6 >= 3 ? RAST_INTERP_MEASURE : 0u);
-      draw_scene(&scene, 1, n & 1, interp, false, &one);
-      draw_scene(&scene, threads, n & 1, interp, n % 4 >= 2, &many);
+      draw_scene(&scene, 1, n & 1, interp, &one);
+      draw_scene(&scene, threads, n & 1, interp, &many);
       if (interp != RAST_INTERP_SCANLINE) {
          /* the scan converter's coverage, whatever the interpolator */
          static struct result walk;
-         draw_scene(&scene, 1, n & 1, RAST_INTERP_SCANLINE, false, &walk);
+         draw_scene(&scene, 1, n & 1, RAST_INTERP_SCANLINE, &walk);
          CHECK(walk.stats.quads == one.stats.quads &&
                walk.stats.pixels_covered == one.stats.pixels_covered &&
                walk.stats.triangles == one.stats.triangles,
