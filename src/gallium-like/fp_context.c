@@ -204,13 +204,14 @@ static void fp_print_stats(const struct fp_context *fp)
            rast_get_threads(fp->rast), serial, parallel, jobs_serial, jobs_parallel);
    /* on the same line: seconds differ from run to run, and the threads
     * line is the one the thread-count identity test leaves out */
-   struct rast_thread_times tt;
-   rast_get_thread_times(fp->rast, &tt);
-   if (rast_get_threads(fp->rast) > 1)
+   if (rast_get_threads(fp->rast) > 1) {
+      struct rast_thread_times tt;
+      rast_get_thread_times(fp->rast, &tt);
       fprintf(stderr, "; the calling thread's seconds: its shares %.3f, waiting for the workers %.3f, "
               "batches alone %.3f, clears divided %.3f, between batches %.3f; the workers' "
               "shares %.3f", tt.shares, tt.waiting, tt.alone, tt.jobs, tt.between,
               tt.worker_shares);
+   }
    fprintf(stderr, "\n");
 }
 

@@ -209,6 +209,13 @@ static double work_begins(struct rast_pool *pool)
    return now;
 }
 
+/* It leaves it now, after the work begun at t0, which goes to *figure. */
+static void work_ends(struct rast_pool *pool, double t0, double *figure)
+{
+   pool->last_end = seconds_now();
+   *figure += pool->last_end - t0;
+}
+
 static unsigned size_class(size_t nprim)
 {
    unsigned c = 0;
@@ -525,8 +532,7 @@ unsigned rast_run_on_threads(struct rast_context *rc, rast_job_fn job, void *arg
    wait_workers(pool);
    pool->job = NULL;
    pool->job_arg = NULL;
-   pool->last_end = seconds_now();
-   pool->times.jobs += pool->last_end - t0;
+   work_ends(pool, t0, &pool->times.jobs);
    return pool->n;
 }
 
@@ -539,8 +545,7 @@ void rast_flush(struct rast_context *rc)
    const double t0 = work_begins(pool);
    if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
       draw_share(rc, pool);
-      pool->last_end = seconds_now();
-      pool->times.alone += pool->last_end - t0;
+      work_ends(pool, t0, &pool->times.alone);
       pool->drawn_serial += pool->nprim;
       pool->nprim = 0;
       pool->pixels = 0;
@@ -564,9 +569,8 @@ void rast_flush(struct rast_context *rc)
    pool->share[0].seconds = t2 - t1;
 
    wait_workers(pool);
-   pool->last_end = seconds_now();
-   pool->times.shares += t1 - t0 + pool->share[0].seconds;
-   pool->times.waiting += pool->last_end - t2;
+   pool->times.shares += t2 - t0;
+   work_ends(pool, t2, &pool->times.waiting);
    for (unsigned t = 1; t < pool->n; t++)
       pool->times.worker_shares += pool->share[t].seconds;
    rc->band_count = 1;
