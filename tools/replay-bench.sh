@@ -12,8 +12,9 @@
 # the scene's frames 2 to N, the median of the runs (eglretrace --pframe-times: the
 # scene's first frame, with its set-up, counts in the whole replay only), and for
 # fixpipe the share of each skip taken (FIXPIPE_STATS=frames:N, docs/datapath.md),
-# from the first run (the counts are the same in every run).  A benchmark, not a
-# test: it never fails on a number.
+# from one more replay after the timed ones (the counts are the same in every run;
+# no timed configuration prints counters).  A benchmark, not a test: it never fails
+# on a number.
 #
 #   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
 #                         [--piglit "LIST ..."] [--piglit-runs N] [--trace FILE] [--out DIR]
@@ -33,7 +34,10 @@
 #                    e.g. a worktree of an earlier commit after its ./fixpipe setup)
 #   softpipe         our Mesa build (with LLVM: draw compiles vertex shaders)
 #   llvmpipe         Debian's system Mesa, the reference (always run, first)
-# Default: fixpipe fixpipe-1thread fixpipe-scalar fixpipe-nojit softpipe llvmpipe
+#   llvmpipe-1thread LP_NUM_THREADS=0: llvmpipe drawing on the calling thread, so that
+#                    the reference's own speed-up on the machine's cores is measured
+#                    in the same run as fixpipe's (docs/threads.md)
+# Default: fixpipe fixpipe-1thread fixpipe-scalar fixpipe-nojit softpipe llvmpipe llvmpipe-1thread
 # (+ fixpipe-before with --before).
 # --scenes: the names of the trace's scenes in order, each the same number of frames
 # (default: the checked-in trace's build texture phong bump effect2d pulsar desktop
@@ -69,17 +73,17 @@ while [ $# -gt 0 ]; do
 done
 [ -r "$trace" ] || { echo "replay-bench: no trace $trace" >&2; exit 2; }
 if [ -z "$configs" ]; then
-    configs="fixpipe fixpipe-1thread fixpipe-scalar fixpipe-nojit softpipe llvmpipe"
+    configs="fixpipe fixpipe-1thread fixpipe-scalar fixpipe-nojit softpipe llvmpipe llvmpipe-1thread"
     [ -z "$before" ] || configs="fixpipe-before $configs"
 fi
 # llvmpipe first: its snapshots are the reference
 configs="llvmpipe $(echo "$configs" | tr ' ' '\n' | { grep -vx llvmpipe || true; } | tr '\n' ' ')"
 for c in $configs; do
     case $c in
-    fixpipe|fixpipe-1thread|fixpipe-scalar|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe) ;;
+    fixpipe|fixpipe-1thread|fixpipe-scalar|fixpipe-jitall|fixpipe-nojit|softpipe|llvmpipe|llvmpipe-1thread) ;;
     fixpipe-barycentric|fixpipe-vector) ;;
     fixpipe-before) [ -n "$before" ] || { echo "replay-bench: fixpipe-before needs --before WORKDIR" >&2; exit 2; } ;;
-    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-1thread, fixpipe-scalar, fixpipe-jitall, fixpipe-nojit, fixpipe-barycentric, fixpipe-vector, fixpipe-before, softpipe, llvmpipe)" >&2; exit 2 ;;
+    *) echo "replay-bench: unknown configuration '$c' (accepted: fixpipe, fixpipe-1thread, fixpipe-scalar, fixpipe-jitall, fixpipe-nojit, fixpipe-barycentric, fixpipe-vector, fixpipe-before, softpipe, llvmpipe, llvmpipe-1thread)" >&2; exit 2 ;;
     esac
 done
 mkdir -p "$out"
@@ -106,7 +110,8 @@ run() {
     fixpipe-barycentric) driver=fixpipe; envs=(FIXPIPE_INTERP=barycentric) ;;
     fixpipe-vector) driver=fixpipe; envs=(FIXPIPE_INTERP=vector) ;;
     fixpipe-before) driver=fixpipe; work=$before/.fixpipe ;;
-    fixpipe) [ -z "$scene_frames" ] || envs=(FIXPIPE_STATS=frames:1) ;;
+    fixpipe-stats) driver=fixpipe; envs=(FIXPIPE_STATS=frames:1) ;;
+    llvmpipe-1thread) driver=llvmpipe; envs=(LP_NUM_THREADS=0) ;;
     esac
     local t0 t1
     t0=$(date +%s.%N)
@@ -193,19 +198,24 @@ if [ "$runs" -gt 1 ]; then
     done
     if [[ " $configs " == *" fixpipe "* && " $configs " == *" fixpipe-1thread "* ]]; then
         echo
-        echo "two threads' speed-up (fixpipe-1thread's time ÷ fixpipe's), per round: $(ratio_summary fixpipe-1thread fixpipe)"
+        echo "fixpipe's speed-up on $(nproc) cores (fixpipe-1thread's time ÷ fixpipe's), per round: $(ratio_summary fixpipe-1thread fixpipe)"
+    fi
+    if [[ " $configs " == *" llvmpipe-1thread "* ]]; then
+        echo "llvmpipe's speed-up on $(nproc) cores (llvmpipe-1thread's time ÷ llvmpipe's), per round: $(ratio_summary llvmpipe-1thread llvmpipe)"
     fi
 fi
 
 # per scene: frames 2..N of each scene from the frame-end timestamps of each run's
 # log (ns; a trace's last frame may have no swap: that scene's time is scaled from
 # its frames timed), the median over the runs; and fixpipe's skips from its counters
-# after every frame of the first run (the counts are the same in every run;
-# cumulative per GL context: a frame number that does not grow starts a context)
+# after every frame of one more replay, not timed (the counts are the same in every
+# run; cumulative per GL context: a frame number that does not grow starts a context).
+# The counters cost the replay about 2%, so no timed run prints them: the two
+# thread counts, and fixpipe against llvmpipe, compare like with like.
 scene_times() { # LOG: one line of seconds per scene
     awk -v n="$scene_frames" -v k="$nscenes" '$1 == "rendering_finished" { t[f++] = $2 }
         END { for (s = 0; s < k; s++) { a = s * n; b = a + n - 1; if (b > f - 1) b = f - 1
-                  if (b > a) printf "%.2f\n", (t[b] - t[a]) / 1e9 * (n - 1) / (b - a); else print "n/a" } }' "$1"
+                  if (b > a) printf "%.3f\n", (t[b] - t[a]) / 1e9 * (n - 1) / (b - a); else print "n/a" } }' "$1"
 }
 if [ "$nscenes" -gt 0 ]; then
     declare -A sec each
@@ -226,8 +236,9 @@ if [ "$nscenes" -gt 0 ]; then
     # quads, quads left unshaded by the early tests or for want of a visible effect of
     # all quads
     shares=()
-    if [ -r "$out/fixpipe.1.log" ]; then
-        mapfile -t shares < <(sed -n 's/^fixpipe work at frame \([0-9]*\): /\1 /p' "$out/fixpipe.1.log" |
+    if [[ " $configs " == *" fixpipe "* ]]; then
+        run fixpipe-stats "$trace" "$out/fixpipe.stats.log" >/dev/null
+        mapfile -t shares < <(sed -n 's/^fixpipe work at frame \([0-9]*\): /\1 /p' "$out/fixpipe.stats.log" |
             awk -v n="$scene_frames" -v k="$nscenes" '
             BEGIN { split("divided skip_w comp_quads skip_comp lod_quads skip_lod tex_quads skip_axes quads skip_fragcoord quads skip_z quads skip_unshaded", key, " ") }
             { if ($1 + 0 <= frame + 0) for (x in p) p[x] = 0
@@ -253,6 +264,56 @@ if [ "$nscenes" -gt 0 ]; then
         echo " $(ratio "${sec[fixpipe.$i]:-}" "${sec[llvmpipe.$i]:-}") | $(ratio "${sec[softpipe.$i]:-}" "${sec[fixpipe.$i]:-}") | $sw | $scc | $sl | $sa | $sf | $sz | $su |"
         i=$((i + 1))
     done
+    # each driver's speed-up on the machine's cores, scene by scene: where the
+    # second thread's time goes is easier seen than read
+    speedup_pairs=()
+    [[ " $configs " != *" fixpipe "* || " $configs " != *" fixpipe-1thread "* ]] ||
+        speedup_pairs+=("fixpipe 200,40,40")
+    [[ " $configs " != *" llvmpipe-1thread "* ]] || speedup_pairs+=("llvmpipe 40,160,60")
+    if [ ${#speedup_pairs[@]} -gt 0 ] && [ -x "$root/tools/fp-plot" ]; then
+        echo
+        printf '| scene | speed-up on %s cores:' "$(nproc)"
+        for pr in "${speedup_pairs[@]}"; do printf ' %s |' "${pr%% *}"; done
+        printf '\n|---|'
+        for pr in "${speedup_pairs[@]}"; do printf -- '---:|'; done
+        echo
+        i=0
+        for sc in $scenes; do
+            printf '| %s |' "$sc"
+            for pr in "${speedup_pairs[@]}"; do
+                d=${pr%% *}
+                printf ' %s |' "$(ratio "${sec[$d-1thread.$i]:-}" "${sec[$d.$i]:-}")"
+            done
+            echo
+            i=$((i + 1))
+        done
+        {
+            echo "title speed-up on $(nproc) cores, scene by scene (frames 2-$scene_frames)"
+            echo "xlabel scene, in the trace's order"
+            echo "ylabel one thread's time / all cores' time"
+            echo "legend bl"
+            echo "yrange 1 $(nproc).1"
+            # points, not lines: the scenes are in the trace's order, nothing
+            # lies between them; the first driver's points carry the names
+            label=1
+            for pr in "${speedup_pairs[@]}"; do
+                d=${pr%% *}
+                echo "series ${pr#* } points $d"
+                i=0
+                for sc in $scenes; do
+                    v=$(ratio "${sec[$d-1thread.$i]:-}" "${sec[$d.$i]:-}")
+                    [ "$v" = n/a ] || echo "$((i + 1)) $v${label:+ $sc}"
+                    i=$((i + 1))
+                done
+                label=
+            done
+            echo "series 120,120,120 line $(nproc)x (every thread busy all the time)"
+            echo "1 $(nproc)"
+            echo "$nscenes $(nproc)"
+        } > "$out/speedup.txt"
+        "$root/tools/fp-plot" "$out/speedup.txt" "$out/speedup-per-scene.png" --size 720x420 >/dev/null 2>&1 &&
+            echo "chart: $out/speedup-per-scene.png"
+    fi
 fi
 
 # the chart: replay time (log) against mean error, one point per configuration
@@ -269,7 +330,7 @@ if [ -x "$chart" ]; then
             [ "$c" != llvmpipe ] || continue
             case $c in
             fixpipe) rgb=200,40,40 ;; fixpipe-before) rgb=120,120,120 ;; fixpipe-nojit) rgb=230,140,30 ;;
-            fixpipe-jitall) rgb=160,40,160 ;; fixpipe-1thread) rgb=230,120,120 ;; fixpipe-scalar) rgb=150,90,40 ;; softpipe) rgb=40,90,200 ;; *) rgb=0,0,0 ;;
+            fixpipe-jitall) rgb=160,40,160 ;; fixpipe-1thread) rgb=230,120,120 ;; llvmpipe-1thread) rgb=120,200,120 ;; fixpipe-scalar) rgb=150,90,40 ;; softpipe) rgb=40,90,200 ;; *) rgb=0,0,0 ;;
             esac
             [ "${replay[$c]}" != n/a ] && [ "${err[$c]}" != n/a ] || continue
             echo "series $rgb points $c"
