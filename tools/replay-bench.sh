@@ -13,8 +13,10 @@
 # scene's first frame, with its set-up, counts in the whole replay only), and for
 # fixpipe the share of each skip taken (FIXPIPE_STATS=frames:N, docs/datapath.md),
 # from one more replay after the timed ones (the counts are the same in every run;
-# no timed configuration prints counters).  A benchmark, not a test: it never fails
-# on a number.
+# no timed configuration prints counters); with fixpipe-1thread or llvmpipe-1thread,
+# each driver's speed-up on the machine's cores scene by scene, as a table and a
+# chart (OUT/speedup-per-scene.png).  A benchmark, not a test: it never fails on a
+# number.
 #
 #   tools/replay-bench.sh [--runs N] [--configs "NAME ..."] [--before WORKDIR]
 #                         [--piglit "LIST ..."] [--piglit-runs N] [--trace FILE] [--out DIR]
@@ -67,7 +69,7 @@ while [ $# -gt 0 ]; do
     --piglit) piglit_lists=$2; shift 2 ;;
     --piglit-runs) piglit_runs=$2; shift 2 ;;
     --scenes) scenes=$2; shift 2 ;;
-    -h|--help) sed -n '2,40p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "replay-bench: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
