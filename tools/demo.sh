@@ -17,7 +17,7 @@ scene=all size=512x512 frames=10
 drivers="fixpipe llvmpipe softpipe"
 ref=llvmpipe
 
-usage() { sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 [ $# -ge 1 ] || usage
 case $1 in -h|--help) usage ;; -*) usage ;; esac
 out=$1
