@@ -21,6 +21,9 @@ import sys
 import time
 import xml.etree.ElementTree as ET
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from fpexpect import bad_input, matching, read_fails, read_regexes, shard  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 PIGLIT_DIR = os.environ.get("FIXPIPE_PIGLIT_DIR", "/usr/lib/x86_64-linux-gnu/piglit")
@@ -29,7 +32,6 @@ FORMAT = "fixpipe-piglit-summary/1"
 # piglit results that count as another one
 ALIASES = {"incomplete": "crash", "dmesg-fail": "crash", "dmesg-warn": "crash"}
 COUNT_KEYS = ("pass", "warn", "fail", "crash", "timeout", "skip", "notrun", "excluded")
-EXPECT = {"Fail": "fail", "Crash": "crash", "Timeout": "timeout"}
 
 
 # ------------------------------------------------------------------ inputs
@@ -46,62 +48,6 @@ def read_list(path):
                 names.append(name)
     seen = set()
     return [n for n in names if not (n in seen or seen.add(n))], directives
-
-
-def bad_input(msg):
-    """A broken list or expectation file: exit status 2, not the 1 of a test failure."""
-    print(f"fixpipe: {msg}", file=sys.stderr)
-    sys.exit(2)
-
-
-def read_entries(path):
-    """(entry, reason) for each non-comment line; reason is the '#' line(s) just above."""
-    entries, comment = [], []
-    if not os.path.exists(path):
-        return entries
-    with open(path, encoding="utf-8") as f:
-        for n, line in enumerate(f, 1):
-            s = line.strip()
-            if not s:
-                comment = []
-            elif s.startswith("#"):
-                comment.append(s.lstrip("#").strip())
-            else:
-                entries.append((s, " ".join(comment), n))
-                comment = []
-    return entries
-
-
-def read_fails(path):
-    fails = {}
-    for line, reason, n in read_entries(path):
-        name, sep, status = line.rpartition(",")
-        if not sep or status not in EXPECT:
-            bad_input(f"{path}:{n}: expected '<test name>,Fail|Crash|Timeout', got {line!r}")
-        fails[name.lower()] = (EXPECT[status], reason)
-    return fails
-
-
-def read_regexes(path):
-    out = []
-    for line, reason, n in read_entries(path):
-        try:
-            out.append((re.compile(line), reason))
-        except re.error as e:
-            bad_input(f"{path}:{n}: bad regex {line!r}: {e}")
-    return out
-
-
-def matching(regexes, name):
-    for r, reason in regexes:
-        if r.search(name):
-            return reason or r.pattern
-    return None
-
-
-def shard(names, i, n):
-    """Round-robin over the sorted names: every test in exactly one shard, sizes within one."""
-    return [t for k, t in enumerate(sorted(names)) if k % n == i - 1]
 
 
 def profile_index(names):

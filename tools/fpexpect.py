@@ -1,0 +1,75 @@
+"""Expectation files in Mesa CI's format, shared by the piglit and dEQP runners.
+
+DRIVER-fails.txt   '<test name>,Fail|Crash|Timeout' a line
+DRIVER-flakes.txt  a regular expression a line: any result of a matching test is accepted
+DRIVER-skips.txt   a regular expression a line: matching tests are not run
+
+Every entry has its reason in the '#' comment line(s) just above it; a blank line ends a
+comment.  A malformed line is an input error (exit status 2), never a silent pass.
+"""
+import re
+import sys
+
+EXPECT = {"Fail": "fail", "Crash": "crash", "Timeout": "timeout"}
+
+
+def bad_input(msg):
+    """A broken list or expectation file: exit status 2, not the 1 of a test failure."""
+    print(f"fixpipe: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_entries(path):
+    """(entry, reason, line number) for each non-comment line; reason is the '#' lines above."""
+    entries, comment = [], []
+    try:
+        f = open(path, encoding="utf-8")
+    except FileNotFoundError:
+        return entries
+    with f:
+        for n, line in enumerate(f, 1):
+            s = line.strip()
+            if not s:
+                comment = []
+            elif s.startswith("#"):
+                comment.append(s.lstrip("#").strip())
+            else:
+                entries.append((s, " ".join(comment), n))
+                comment = []
+    return entries
+
+
+def read_fails(path, fold_case=True):
+    """name -> (expected result, reason).  piglit's names are case-insensitive, dEQP's not."""
+    fails = {}
+    for line, reason, n in read_entries(path):
+        name, sep, status = line.rpartition(",")
+        if not sep or status not in EXPECT:
+            bad_input(f"{path}:{n}: expected '<test name>,Fail|Crash|Timeout', got {line!r}")
+        if not reason:
+            bad_input(f"{path}:{n}: {name} has no '# reason' line above it")
+        fails[name.lower() if fold_case else name] = (EXPECT[status], reason)
+    return fails
+
+
+def read_regexes(path):
+    out = []
+    for line, reason, n in read_entries(path):
+        try:
+            out.append((re.compile(line), reason))
+        except re.error as e:
+            bad_input(f"{path}:{n}: bad regex {line!r}: {e}")
+    return out
+
+
+def matching(regexes, name):
+    """The reason of the first regex that matches name, or None."""
+    for r, reason in regexes:
+        if r.search(name):
+            return reason or r.pattern
+    return None
+
+
+def shard(names, i, n):
+    """Round-robin over the sorted names: every test in exactly one shard, sizes within one."""
+    return [t for k, t in enumerate(sorted(names)) if k % n == i - 1]
