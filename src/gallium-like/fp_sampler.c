@@ -228,6 +228,7 @@ static void fp_sampler_desc(const struct fp_sampler_view *fv, const struct pipe_
             : ss->min_mip_filter == PIPE_TEX_MIPFILTER_NEAREST ? TEX_MIP_NEAREST
                                                                : TEX_MIP_NONE;
    d->normalized = !ss->unnormalized_coords;
+   d->seamless_cube = ss->seamless_cube_map;
    d->compare = ss->compare_mode != PIPE_TEX_COMPARE_NONE && fv->zs;
    d->func = (enum tex_func)ss->compare_func;
    d->lod_bias = ss->lod_bias;

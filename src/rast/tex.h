@@ -108,6 +108,7 @@ struct tex_sampler_desc {
    enum tex_filter min_filter, mag_filter;
    enum tex_mip mip;
    bool normalized;             /* false: texel coordinates (RECT) */
+   bool seamless_cube;          /* cube maps filtered across face edges (GL ES 3.0) */
    bool compare;
    enum tex_func func;
    float lod_bias, min_lod, max_lod;
@@ -305,6 +306,10 @@ int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */
 int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q);
 unsigned tex_cube_face(const struct tex_unit *u, ns_val rx, ns_val ry, ns_val rz,
                        ns_val *s, ns_val *t);
+/* Seamless cube maps (tex_cube.c): the texel across a face's edge from the
+ * tap (x, y), one of them in {-1, size}; false at a corner. */
+bool tex_cube_across(unsigned face, int32_t size, int32_t x, int32_t y, unsigned *face_out,
+                     int32_t *x_out, int32_t *y_out);
 void tex_cube_on_face(const struct tex_unit *u, unsigned face, ns_val rx, ns_val ry, ns_val rz,
                       ns_val *s, ns_val *t);
 void tex_unit_select(const struct tex_unit *u, int32_t lod, unsigned *level0, unsigned *level1,

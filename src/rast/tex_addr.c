@@ -183,6 +183,19 @@ static void mborder_linear(const struct tex_unit *u, const struct tex_axis *ax, 
    border_linear_of(u, ax, MIRRORED(c), a);
 }
 
+/* Seamless cube faces: the face coordinate clamped to [0, 1] (the face
+ * projection keeps it there but for rounding), then the linear pair with
+ * indices in [-1, size]: a tap beyond the face's edge is the neighbouring
+ * face's, which the filter finds (tex_cube_across). */
+void tex_addr_cube_seamless(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
+                            struct tex_addr *a)
+{
+   const ns_val cc = tex_ns_clamp(u->kind, c, u->k_zero, u->k_one);
+   const int64_t i = floor_w(u, sub(u, mul(u, cc, ax->scale), u->k_texel_offset), &a->w);
+   a->i0 = (int32_t)tex_clampi(i, -1, ax->size - 1);
+   a->i1 = a->i0 + 1;
+}
+
 /* [wrap][filter]; the clamp bounds per mode are set in tex_bind.c. */
 static const tex_addr_fn addr_table[TEX_WRAP_COUNT][2] = {
    [TEX_WRAP_REPEAT] = { repeat_nearest, repeat_linear },

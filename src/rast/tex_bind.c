@@ -165,6 +165,12 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
          u->addr[f][a] = tex_addr_choose(u->samp.wrap[a], (enum tex_filter)f);
       u->sample_level[f] = tex_level_choose(u->dims, (enum tex_filter)f);
    }
+   /* Seamless cube maps: LINEAR reads across the face's edges; NEAREST
+    * never leaves the face, so its CLAMP_TO_EDGE above is already right. */
+   if (v->target == TEX_TARGET_CUBE && s->seamless_cube) {
+      u->addr[TEX_FILTER_LINEAR][0] = u->addr[TEX_FILTER_LINEAR][1] = tex_addr_cube_seamless;
+      u->sample_level[TEX_FILTER_LINEAR] = tex_level_cube_seamless();
+   }
    u->tap = tex_tap_choose(u->samp.compare && v->depth);
    u->fetch = tex_format_fetch(v->format);
    if (!u->fetch)

@@ -125,6 +125,56 @@ static void level_3d_linear(const struct tex_unit *u, unsigned level, const ns_v
    memcpy(out, g, sizeof(g));
 }
 
+/* The four taps of a seamless cube face's bilinear footprint, in the
+ * order (x0, y0), (x1, y0), (x0, y1), (x1, y1): those beyond an edge read
+ * from the face across it (tex_cube_across); at a corner, where the fourth
+ * tap has no texel, it is the mean of the three that have one, as llvmpipe
+ * and the Khronos suite's reference take it (GL leaves it open).  The
+ * address unit leaves the indices unclamped (tex_addr_cube_seamless). */
+void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
+                   const int32_t y[2], unsigned face, float ref, float t[4][4])
+{
+   const struct tex_level *lv = &u->view.level[level];
+   const int32_t size = u->axis[level][0].size;
+   int corner = -1;
+   for (unsigned k = 0; k < 4; k++) {
+      const int32_t tx = x[k & 1], ty = y[k >> 1];
+      unsigned f;
+      int32_t fx, fy;
+      if (tx >= 0 && tx < size && ty >= 0 && ty < size)
+         u->tap(u, lv, tx, ty, (int)face, ref, t[k]);
+      else if (tex_cube_across(face, size, tx, ty, &f, &fx, &fy))
+         u->tap(u, lv, fx, fy, (int)f, ref, t[k]);
+      else
+         corner = (int)k;
+   }
+   if (corner >= 0) {
+      const unsigned c = (unsigned)corner;
+      for (unsigned ch = 0; ch < 4; ch++)
+         t[c][ch] = (t[c ^ 1][ch] + t[c ^ 2][ch] + t[c ^ 3][ch]) * (1.0f / 3.0f);
+   }
+}
+
+/* A seamless cube face, LINEAR (GL ES 3.0 3.8.9.1); `layer` is the face. */
+static void level_cube_seamless(const struct tex_unit *u, unsigned level, const ns_val c[3],
+                                int layer, float ref, float out[4])
+{
+   struct tex_addr A, B;
+   float t[4][4], a[4], b[4];
+   u->addr[TEX_FILTER_LINEAR][0](u, &u->axis[level][0], c[0], &A);
+   u->addr[TEX_FILTER_LINEAR][1](u, &u->axis[level][1], c[1], &B);
+   const int32_t x[2] = { A.i0, A.i1 }, y[2] = { B.i0, B.i1 };
+   tex_cube_taps(u, level, x, y, (unsigned)layer, ref, t);
+   lerp4(a, t[0], t[1], A.w);
+   lerp4(b, t[2], t[3], A.w);
+   lerp4(out, a, b, B.w);
+}
+
+tex_level_fn tex_level_cube_seamless(void)
+{
+   return level_cube_seamless;
+}
+
 tex_level_fn tex_level_choose(unsigned dims, enum tex_filter filter)
 {
    static const tex_level_fn table[3][2] = {

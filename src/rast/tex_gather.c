@@ -4,7 +4,8 @@
  * unit is the LINEAR filter's (the sampler's wrap modes, the number
  * system's coordinates and texel offset), so a gather returns exactly the
  * texels the filter would have blended, and a depth view compares each of
- * them with the reference as the filter's taps do.
+ * them with the reference as the filter's taps do.  A seamless cube map's
+ * footprint crosses its face's edges as the filter's does (tex_cube_taps).
  */
 #include "rast/tex_priv.h"
 
@@ -49,13 +50,19 @@ void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigne
          B.i0 = B.i1;
          B.i1 = j;
       }
-      /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
-      const int32_t x[4] = { A.i0, A.i1, A.i1, A.i0 };
-      const int32_t y[4] = { B.i1, B.i1, B.i0, B.i0 };
-      for (unsigned k = 0; k < 4; k++) {
-         float texel[4];
-         u->tap(u, lv, x[k], y[k], layer, q->ref[p], texel);
-         rgba[k][p] = u->samp.compare ? texel[0] : channel(u, texel, comp);
+      /* the footprint (x0, y0), (x1, y0), (x0, y1), (x1, y1), a seamless
+       * cube's across its face's edges */
+      float taps[4][4];
+      const int32_t x[2] = { A.i0, A.i1 }, y[2] = { B.i0, B.i1 };
+      if (cube && u->samp.seamless_cube) {
+         tex_cube_taps(u, 0, x, y, (unsigned)layer, q->ref[p], taps);
+      } else {
+         for (unsigned k = 0; k < 4; k++)
+            u->tap(u, lv, x[k & 1], y[k >> 1], layer, q->ref[p], taps[k]);
       }
+      /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
+      static const unsigned order[4] = { 2, 3, 1, 0 };
+      for (unsigned k = 0; k < 4; k++)
+         rgba[k][p] = u->samp.compare ? taps[order[k]][0] : channel(u, taps[order[k]], comp);
    }
 }

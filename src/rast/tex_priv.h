@@ -75,6 +75,9 @@ static inline ns_val tex_ns_int(const struct tex_unit *u, int64_t i)
 /* tex_addr.c */
 tex_addr_fn tex_addr_choose(enum tex_wrap wrap, enum tex_filter filter);
 bool tex_addr_mirrored(const struct tex_unit *u, unsigned axis, ns_val c);
+void tex_addr_cube_seamless(const struct tex_unit *u, const struct tex_axis *ax, ns_val c,
+                            struct tex_addr *a);
+
 
 /* tex_lod.c */
 int32_t tex_lod_diffs(const struct tex_unit *u, ns_val c[TEX_QUAD][3], unsigned dims);
@@ -91,6 +94,9 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
 
 /* tex_filter.c */
 tex_level_fn tex_level_choose(unsigned dims, enum tex_filter filter);
+tex_level_fn tex_level_cube_seamless(void);
+void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
+                   const int32_t y[2], unsigned face, float ref, float t[4][4]);
 tex_tap_fn tex_tap_choose(bool compare);
 void tex_lerp4(float o[4], const float a[4], const float b[4], uint32_t w);   /* w: 2^-8 */
 

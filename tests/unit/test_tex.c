@@ -452,6 +452,90 @@ static void cube_faces(void)
    CHECK(checked > 90000, "cube cases %u", checked);
 }
 
+/* Seamless cube maps: the texel across each edge against GL's face table
+ * in floating point (the direction of the tap's centre projected on the
+ * cube), and the LINEAR filter on an edge and at a corner of faces of one
+ * colour each: half of each face on an edge, a third of each at a corner,
+ * where the filter without seams keeps one face's colour. */
+static void cube_seamless(void)
+{
+   static const int32_t sizes[] = { 1, 2, 3, 4, 5, 8, 16 };
+   unsigned crossed = 0;
+   for (unsigned n = 0; n < sizeof(sizes) / sizeof(sizes[0]); n++) {
+      const int32_t N = sizes[n];
+      for (unsigned f = 0; f < 6; f++)
+         for (int32_t k = -1; k <= N; k++)
+            for (unsigned e = 0; e < 4; e++) {
+               const int32_t x = e == 0 ? -1 : e == 1 ? N : k;
+               const int32_t y = e == 2 ? -1 : e == 3 ? N : k;
+               unsigned g;
+               int32_t gx, gy;
+               const bool corner = (x < 0 || x >= N) && (y < 0 || y >= N);
+               const bool got = tex_cube_across(f, N, x, y, &g, &gx, &gy);
+               if (corner || (x >= 0 && x < N && y >= 0 && y < N)) {
+                  CHECK(!got, "size %d face %u (%d, %d): no texel across", N, f, x, y);
+                  continue;
+               }
+               /* the tap's centre as a direction: GL's table inverted */
+               const double S = 2 * x + 1 - N, T = 2 * y + 1 - N, M = N;
+               double r[3];
+               switch (f) {
+               case 0: r[0] = M; r[2] = -S; r[1] = -T; break;
+               case 1: r[0] = -M; r[2] = S; r[1] = -T; break;
+               case 2: r[1] = M; r[0] = S; r[2] = T; break;
+               case 3: r[1] = -M; r[0] = S; r[2] = -T; break;
+               case 4: r[2] = M; r[0] = S; r[1] = -T; break;
+               default: r[2] = -M; r[0] = -S; r[1] = -T; break;
+               }
+               double rs, rt;
+               const unsigned want = ref_cube(r[0], r[1], r[2], &rs, &rt);
+               const int32_t wx = (int32_t)floor(rs * N), wy = (int32_t)floor(rt * N);
+               CHECK(got && g == want && g != f && gx == wx && gy == wy,
+                     "size %d face %u (%d, %d): face %u (%d, %d), want face %u (%d, %d)", N, f, x,
+                     y, g, gx, gy, want, wx, wy);
+               crossed++;
+            }
+   }
+   CHECK(crossed == 6 * 4 * (1 + 2 + 3 + 4 + 5 + 8 + 16), "edge taps checked %u", crossed);
+
+   /* faces of one colour each: red channel 40 * face */
+   const int32_t N = 4;
+   static uint8_t texels[6 * 4 * 4 * 4];
+   for (unsigned i = 0; i < sizeof(texels) / 4; i++) {
+      texels[4 * i + 0] = (uint8_t)(40 * (i / (N * N)));
+      texels[4 * i + 1] = texels[4 * i + 2] = 0;
+      texels[4 * i + 3] = 255;
+   }
+   const struct numsys *ns = numsys_default();
+   for (unsigned seamless = 0; seamless < 2; seamless++) {
+      struct tex_view_desc v;
+      struct tex_sampler_desc s;
+      struct tex_unit u;
+      view_1level(&v, TEX_TARGET_CUBE, TEX_FMT_RGBA8, texels, N, N, 1);
+      samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
+      s.seamless_cube = seamless;
+      tex_unit_bind(&u, ns, &v, &s, &st);
+      struct tex_quad q;
+      float rgba[4][TEX_QUAD];
+      memset(&q, 0, sizeof(q));
+      /* pixel 0 on the edge of +X (face 0) and +Z (4), inside +X by a hair;
+       * pixel 1 on the corner of +X, +Y and +Z (faces 0, 2, 4) */
+      q.s[0] = 1.0f; q.t[0] = 0.25f; q.r[0] = 0.9999f;
+      q.s[1] = q.t[1] = q.r[1] = 1.0f;
+      q.s[2] = q.s[3] = 1.0f;
+      tex_unit_sample(&u, &q, TEX_LOD_ZERO, rgba);
+      const double edge = rgba[0][0] * 255, corner = rgba[0][1] * 255;
+      if (seamless) {
+         CHECK(fabs(edge - (0 + 160) / 2.0) < 1.5, "seamless edge: red %g, want 80", edge);
+         CHECK(fabs(corner - (0 + 80 + 160) / 3.0) < 1.5, "seamless corner: red %g, want 80",
+               corner);
+      } else {
+         CHECK(edge == 0 && corner == 0, "face by face: red %g and %g, want 0 (+X's own)", edge,
+               corner);
+      }
+   }
+}
+
 /* Cube LOD from derivatives (textureCubeGrad, and the implicit LOD, which
  * projects the quad's direction differences the same way): against GL's
  * s = (sc/|ma| + 1)/2 differentiated in double, on directions whose major
@@ -964,6 +1048,7 @@ int main(void)
    lod_select();
    mip_levels();
    cube_faces();
+   cube_seamless();
    cube_lod_grads();
    shadow();
    border_colour();
