@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """fp-report: writes docs/conformance.md from the results already on disk: the piglit
 summaries of the piglit runner (out/piglit/DRIVER-LIST[-sIofN]/summary.json, format in
-docs/piglit.md) and the trace results of tools/fp-trace (out/traces/NAME/result.json).
+docs/piglit.md), of the dEQP runner (out/deqp/DRIVER-MODULE-LIST/summary.json, docs/deqp.md)
+and the trace results of tools/fp-trace (out/traces/NAME/result.json).
 Heat maps of the worst frames go to docs/img/conformance/.
 
 `./fixpipe report` runs the traces first and then this; `--piglit` runs the lists too.
 
-usage: fp-report.py [--out docs/conformance.md] [--lists]
+usage: fp-report.py [--out docs/conformance.md] [--lists] [--deqp]
   --lists   print the piglit list names (piglit-lists/*.txt) and exit
+  --deqp    print the dEQP section alone (out/deqp/*/summary.json) and exit
 """
 import glob
 import json
@@ -142,6 +144,78 @@ def piglit_section():
                 out.append(f"| {len(ts)} | {r.lstrip('# ').replace('|', '/')} |")
             out.append("")
     return out
+
+
+# ------------------------------------------------------------------ dEQP
+def read_deqp(driver, module, lst):
+    """A dEQP run's summary (deqp-lists/run.py), shards merged; None if not run."""
+    base = os.path.join(REPO, "out", "deqp", f"{driver}-{module}-{lst}")
+    paths = [os.path.join(base, "summary.json")]
+    if not os.path.exists(paths[0]):
+        paths = sorted(glob.glob(base + "-s*of*/summary.json"))
+    runs = []
+    for p in paths:
+        try:
+            with open(p, encoding="utf-8") as f:
+                d = json.load(f)
+        except (OSError, ValueError):
+            continue
+        if str(d.get("format", "")).startswith("fixpipe-deqp-summary/"):
+            runs.append(d)
+    if not runs:
+        return None
+    merged = {"counts": {}, "tests": {}, "seconds": 0.0, "started": None, "total": 0,
+              "shards": len(runs), "complete": len(runs) == runs[0]["shard"][1]}
+    for d in runs:
+        for k, v in d["counts"].items():
+            merged["counts"][k] = merged["counts"].get(k, 0) + v
+        merged["tests"].update(d["tests"])
+        merged["seconds"] += d.get("seconds", 0)
+        merged["total"] += d.get("total", 0)
+        if merged["started"] is None or d["started"] < merged["started"]:
+            merged["started"] = d["started"]
+    return merged
+
+
+def deqp_section():
+    """The Khronos suite's counts per module and list on the three drivers."""
+    runs = sorted({tuple(os.path.basename(os.path.dirname(p)).split("-", 2)[1:])
+                   for p in glob.glob(os.path.join(REPO, "out", "deqp", "*-gles*-*",
+                                                   "summary.json"))})
+    # the named lists (and their fractions), not ad-hoc case files
+    runs = sorted({(m, re.sub(r"-s\d+of\d+$", "", lst)) for m, lst in runs
+                   if re.match(r"(mustpass|all)(-f\d+)?(-s\d+of\d+)?$", lst)})
+    out = ["## dEQP (Khronos GL ES conformance)", ""]
+    if not runs:
+        return out + ["No dEQP summaries in `out/deqp/` yet: `./fixpipe deqp gles2 --driver D` "
+                      "for each driver (docs/deqp.md).", ""]
+    out += ["`./fixpipe deqp MODULE --list LIST --driver D` (docs/deqp.md); *pass* counts "
+            "QualityWarning and CompatibilityWarning as dEQP's own summary does.", "",
+            "| module | list | driver | cases | pass | fail | crash | timeout | not supported "
+            "| fixpipe fails, driver passes | run |",
+            "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for module, lst in runs:
+        sums = {d: read_deqp(d, module, lst) for d in DRIVERS}
+        fx = sums["fixpipe"]
+        for d in DRIVERS:
+            s = sums[d]
+            if not s:
+                out.append(f"| {module} | {lst} | {d} | – | – | – | – | – | – | – | not run |")
+                continue
+            c = s["counts"]
+            only = "–"
+            if fx and d != "fixpipe":
+                only = str(sum(1 for t, r in fx["tests"].items()
+                               if r["result"] in FAILING
+                               and s["tests"].get(t, {}).get("result") in ("pass", "warn",
+                                                                            "flake")))
+            when = (s["started"] or "?").replace("T", " ").rstrip("Z")
+            out.append(f"| {module} | {lst} | {d} | {s['total']} |"
+                       f" {c.get('pass', 0) + c.get('warn', 0) + c.get('flake', 0)} |"
+                       f" {c.get('fail', 0)} | {c.get('crash', 0)} | {c.get('timeout', 0)} |"
+                       f" {c.get('notsupported', 0)} | {only} | {when}, {s['seconds']:.0f} s"
+                       f"{'' if s['complete'] else ' (shards missing)'} |")
+    return out + [""]
 
 
 # ------------------------------------------------------------------ traces
@@ -316,6 +390,9 @@ def main(argv):
     if "-h" in argv or "--help" in argv:
         print(__doc__)
         return 0
+    if "--deqp" in argv:
+        print("\n".join(deqp_section()))
+        return 0
     dest = os.path.join(REPO, "docs", "conformance.md")
     if "--out" in argv:
         dest = argv[argv.index("--out") + 1]
@@ -339,6 +416,7 @@ def main(argv):
              "minute, then this page from the piglit summaries on disk); `./fixpipe report "
              "--piglit` also runs every piglit list on the three drivers first (long).", ""]
     lines += piglit_section()
+    lines += deqp_section()
     lines += trace_section(img_dir)
     with open(dest, "w", encoding="utf-8") as f:
         f.write("\n".join(lines).rstrip() + "\n")
