@@ -434,8 +434,20 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
             q.ddy[a][p] = derivs[a][1][p];
          }
    }
-   if (offset && (offset[0] | offset[1] | offset[2])) {
-      /* texel offsets (GLSL 1.30+) as coordinate offsets on the base level */
+   const bool offsets = offset && (offset[0] | offset[1] | offset[2]);
+   if (offsets && control != TGSI_SAMPLER_GATHER) {
+      /* texel offsets (GLSL ES 3.00) at the level sampled: the unit's table
+       * path, which moves the coordinate per level */
+      const enum tex_lod_control ctl = fp_lod_control(control);
+      ts->quads++;
+      ts->lod_quads += ctl == TEX_LOD_IMPLICIT || ctl == TEX_LOD_BIAS;
+      ts->texels += 4 * u->taps;
+      tex_unit_sample_offset(u, &q, ctl, offset, rgba);
+      fp_tex_stats(ts);
+      return;
+   }
+   if (offsets) {
+      /* a gather reads the base level: its offsets as coordinate offsets there */
       float *co[3] = { q.s, q.t, q.r };
       for (unsigned a = 0; a < u->dims; a++) {
          float k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].w : offset[a];

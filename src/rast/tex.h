@@ -274,6 +274,14 @@ void tex_unit_sample_quads(const struct tex_unit *u, const struct tex_quad *q, u
 void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
                              enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
 
+/* textureOffset and its kin: `offset` texels (per axis, GLSL's constant
+ * offsets) added at the level sampled, not at the base level: the
+ * coordinate moves by offset / size of each level the filter reads, before
+ * the wrap (GL ES 3.0 3.8.10).  The table path. */
+void tex_unit_sample_offset(const struct tex_unit *u, const struct tex_quad *q,
+                            enum tex_lod_control ctl, const int8_t offset[3],
+                            float rgba[4][TEX_QUAD]);
+
 /* textureGather (tex_gather.c): channel `comp` (after the swizzle; for a
  * depth view with comparison, the comparison) of the four texels of the
  * base level's bilinear footprint, in GL's order: rgba[0] = (i0, j1),

@@ -179,8 +179,43 @@ void tex_unit_sample_quads(const struct tex_unit *u, const struct tex_quad *q, u
       tex_unit_sample(u, &q[i], ctl, rgba[i]);
 }
 
+/* The coordinate registers at `level` moved by `offset` texels of that
+ * level: offset / size, a constant the number system holds exactly for
+ * every power-of-two size (loaded, not computed: no range event). */
+static void offset_at(const struct tex_unit *u, unsigned level, const int8_t offset[3],
+                      const ns_val c[3], ns_val out[3])
+{
+   struct ns_stats loads = { 0, 0 };
+   for (unsigned a = 0; a < 3; a++) {
+      out[a] = c[a];
+      if (a >= u->dims || !offset[a])
+         continue;
+      const float k = u->samp.normalized ? (float)offset[a] / (float)u->axis[level][a].size
+                                         : (float)offset[a];
+      out[a] = u->ns->add(u->ns, c[a], u->ns->from_float(u->ns, k, &loads), u->stats);
+   }
+}
+
+static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
+                           enum tex_lod_control ctl, const int8_t *offset,
+                           float rgba[4][TEX_QUAD]);
+
 void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
                              enum tex_lod_control ctl, float rgba[4][TEX_QUAD])
+{
+   sample_generic(u, q, ctl, NULL, rgba);
+}
+
+void tex_unit_sample_offset(const struct tex_unit *u, const struct tex_quad *q,
+                            enum tex_lod_control ctl, const int8_t offset[3],
+                            float rgba[4][TEX_QUAD])
+{
+   sample_generic(u, q, ctl, offset, rgba);
+}
+
+static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
+                           enum tex_lod_control ctl, const int8_t *offset,
+                           float rgba[4][TEX_QUAD])
 {
    const bool cube = u->view.target == TEX_TARGET_CUBE;
    ns_val c[TEX_QUAD][3], dir[TEX_QUAD][3];
@@ -252,10 +287,15 @@ void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
       uint32_t frac;
       enum tex_filter f;
       tex_unit_select(u, tex_clamp_lod(u, lod[p]), &l0, &l1, &frac, &f);
-      u->sample_level[f](u, l0, c[p], layer[p], q->ref[p], out[p]);
+      ns_val co[3];
+      if (offset)
+         offset_at(u, l0, offset, c[p], co);
+      u->sample_level[f](u, l0, offset ? co : c[p], layer[p], q->ref[p], out[p]);
       if (frac) {
          float b[4];
-         u->sample_level[f](u, l1, c[p], layer[p], q->ref[p], b);
+         if (offset)
+            offset_at(u, l1, offset, c[p], co);
+         u->sample_level[f](u, l1, offset ? co : c[p], layer[p], q->ref[p], b);
          tex_lerp4(out[p], out[p], b, frac);
       }
    }

@@ -410,6 +410,64 @@ static void mip_levels(void)
    }
 }
 
+/* textureOffset at the level sampled: on level 1 (4x4) an offset of one
+ * texel is a quarter of the coordinate, not the base level's eighth; it
+ * wraps as the coordinate does; trilinear moves each level by its own. */
+static void offsets_per_level(void)
+{
+   static uint8_t lv[2][8 * 8 * 4];
+   const struct numsys *ns = numsys_default();
+   struct tex_view_desc v;
+   struct tex_sampler_desc s;
+   struct tex_unit u;
+   /* red = 16 * x + y on every level: which texel was read */
+   for (unsigned l = 0; l < 2; l++)
+      for (unsigned y = 0; y < (8u >> l); y++)
+         for (unsigned x = 0; x < (8u >> l); x++) {
+            uint8_t *t = &lv[l][4 * (y * (8u >> l) + x)];
+            t[0] = (uint8_t)(16 * x + y + 128 * l);
+            t[1] = t[2] = 0;
+            t[3] = 255;
+         }
+   view_1level(&v, TEX_TARGET_2D, TEX_FMT_RGBA8, lv[0], 8, 8, 1);
+   v.num_levels = 2;
+   for (unsigned l = 0; l < 2; l++) {
+      v.level[l].data = lv[l];
+      v.level[l].w = v.level[l].h = 8 >> l;
+      v.level[l].row_stride = 4u * (8 >> l);
+   }
+   samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_NEAREST);
+   s.mip = TEX_MIP_NEAREST;
+   tex_unit_bind(&u, ns, &v, &s, &st);
+   struct { float s, t, lod; int8_t off[3]; unsigned want; } cases[] = {
+      { 0.3f, 0.6f, 1.0f, { 1, -1, 0 }, 128 + 16 * 2 + 1 },   /* (1, 2) + (1, -1) */
+      { 0.9f, 0.1f, 1.0f, { 1, -1, 0 }, 128 + 16 * 0 + 3 },   /* (3, 0) wraps to (0, 3) */
+      { 0.3f, 0.6f, 0.0f, { 1, -1, 0 }, 16 * 3 + 3 },         /* base: (2, 4) + (1, -1) */
+   };
+   for (unsigned k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
+      struct tex_quad q;
+      float rgba[4][TEX_QUAD];
+      memset(&q, 0, sizeof(q));
+      for (unsigned p = 0; p < 4; p++) {
+         q.s[p] = cases[k].s; q.t[p] = cases[k].t; q.lod[p] = cases[k].lod;
+      }
+      tex_unit_sample_offset(&u, &q, TEX_LOD_EXPLICIT, cases[k].off, rgba);
+      CHECK(lroundf(rgba[0][0] * 255) == (long)cases[k].want, "offset case %u: texel %ld want %u",
+            k, lroundf(rgba[0][0] * 255), cases[k].want);
+   }
+   /* no offset: the same bits as the plain sample */
+   static const int8_t none[3] = { 0, 0, 0 };
+   struct tex_quad q;
+   float a[4][TEX_QUAD], b[4][TEX_QUAD];
+   memset(&q, 0, sizeof(q));
+   for (unsigned p = 0; p < 4; p++) {
+      q.s[p] = 0.11f * (float)p; q.t[p] = 0.7f; q.lod[p] = 0.6f;
+   }
+   tex_unit_sample_offset(&u, &q, TEX_LOD_EXPLICIT, none, a);
+   tex_unit_sample(&u, &q, TEX_LOD_EXPLICIT, b);
+   CHECK(!memcmp(a, b, sizeof(a)), "a zero offset changes the result");
+}
+
 static void cube_faces(void)
 {
    const struct numsys *ns = numsys_default();
@@ -1047,6 +1105,7 @@ int main(void)
    sample_2d();
    lod_select();
    mip_levels();
+   offsets_per_level();
    cube_faces();
    cube_seamless();
    cube_lod_grads();
