@@ -57,6 +57,9 @@ struct fp_fragment_shader {
     * (fp_rebase.c). */
    struct fp_coord_use { uint32_t samplers[3]; } coord_use[RAST_MAX_VARYINGS][4];
    uint8_t coord_other[RAST_MAX_VARYINGS];
+   /* Per input, the components read as an array layer (fp_rebase.c): the
+    * model divides them in binary32 (rast_varying's float_mask). */
+   uint8_t layer_read[RAST_MAX_VARYINGS];
    /* Tiered execution: interpreted until hot, then compiled (fp_fs.c). */
    uint64_t quads_interpreted;
    struct fp_jit_variant *jit;

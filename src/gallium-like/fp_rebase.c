@@ -9,6 +9,10 @@
  * no indirection), and every sampler it reaches wraps that axis with one of
  * the two modes.  The first half is the shader's (scanned once, here); the
  * second is the bound samplers' (at each vertex layout, fp_vbuf.c).
+ *
+ * The same scan finds the components read as an array layer (directly or
+ * through a temporary holding the input times a constant): the model
+ * divides those in binary32 (rast_varying's float_mask).
  */
 #include <string.h>
 #include "tgsi/tgsi_parse.h"
@@ -31,6 +35,37 @@ static unsigned wrapped_axes(enum tgsi_texture_type target)
       return 3;
    default:
       return 0;            /* RECT (unnormalised), cube, shadow, buffers, MSAA */
+   }
+}
+
+/* The channel of the coordinate operand that holds the array layer, or -1. */
+static int layer_channel(enum tgsi_texture_type target)
+{
+   switch (target) {
+   case TGSI_TEXTURE_1D_ARRAY:
+   case TGSI_TEXTURE_SHADOW1D_ARRAY:
+      return 1;
+   case TGSI_TEXTURE_2D_ARRAY:
+   case TGSI_TEXTURE_SHADOW2D_ARRAY:
+      return 2;
+   case TGSI_TEXTURE_CUBE_ARRAY:
+   case TGSI_TEXTURE_SHADOWCUBE_ARRAY:
+      return 3;
+   default:
+      return -1;           /* no layer, or an integer one (TXF on MSAA arrays) */
+   }
+}
+
+/* The instructions that take a layer from a float coordinate in Src[0]. */
+static bool is_layer_sampling(enum tgsi_opcode op)
+{
+   switch (op) {
+   case TGSI_OPCODE_TEX: case TGSI_OPCODE_TEX_LZ: case TGSI_OPCODE_TXB:
+   case TGSI_OPCODE_TXL: case TGSI_OPCODE_TXD: case TGSI_OPCODE_TG4:
+   case TGSI_OPCODE_TEX2: case TGSI_OPCODE_TXB2: case TGSI_OPCODE_TXL2:
+      return true;
+   default:
+      return false;
    }
 }
 
@@ -116,6 +151,8 @@ static void scan_instruction(struct rebase_scan *sc, const struct tgsi_full_inst
          sampler = in->Src[s].Register.Index;
    const int copy = scaled_input(sc, in);
    const unsigned wmask = in->Dst[0].Register.WriteMask;
+   /* the channel of Src[0] read as an array layer, or -1 */
+   const int layer = is_layer_sampling(op) ? layer_channel(in->Texture.Texture) : -1;
    int16_t written[4] = { -1, -1, -1, -1 };
 
    for (unsigned s = 0; s < in->Instruction.NumSrcRegs; s++) {
@@ -140,6 +177,8 @@ static void scan_instruction(struct rebase_scan *sc, const struct tgsi_full_inst
             }
             const int16_t v = src->Register.Index < SCAN_TEMPS
                                  ? sc->scaled[src->Register.Index][swz[c]] : -1;
+            if (v >= 0 && s == 0 && (int)c == layer)
+               fs->layer_read[v / 4] |= (uint8_t)(1u << v % 4);
             if (v >= 0 && !(is_derivative(op) && plain(src)))
                fs->coord_other[v / 4] |= (uint8_t)(1u << v % 4);
          }
@@ -167,6 +206,8 @@ static void scan_instruction(struct rebase_scan *sc, const struct tgsi_full_inst
             memset(fs->coord_other, 0xff, sizeof(fs->coord_other));
             continue;
          }
+         if (s == 0 && (int)c == layer)
+            fs->layer_read[src->Register.Index] |= (uint8_t)(1u << swz[c]);
          struct fp_coord_use *u = &fs->coord_use[src->Register.Index][swz[c]];
          if (c < axes)
             u->samplers[c] |= 1u << sampler;
@@ -198,6 +239,7 @@ void fp_rebase_scan(struct fp_fragment_shader *fs)
    memset(sc.scaled, 0xff, sizeof(sc.scaled));
    memset(fs->coord_use, 0, sizeof(fs->coord_use));
    memset(fs->coord_other, 0, sizeof(fs->coord_other));
+   memset(fs->layer_read, 0, sizeof(fs->layer_read));
    if (tgsi_parse_init(&p, fs->tokens) != TGSI_PARSE_OK) {
       memset(fs->coord_other, 0xff, sizeof(fs->coord_other));
       return;

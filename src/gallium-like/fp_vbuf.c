@@ -134,6 +134,9 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
          if (fp_is_sprite_coord(fp, name, index))
             vl.point_coord_mask |= 1u << i;
          rebase_of(fp, i, &vl.varying[i]);
+         /* an array layer: divided in binary32 (rast_varying.float_mask) */
+         if (vl.varying[i].interp == RAST_INTERP_PERSPECTIVE)
+            vl.varying[i].float_mask = fp->fs->layer_read[i] & vl.varying[i].usage_mask;
          draw_emit_vertex_attr(vinfo, EMIT_4F, src);
       }
       vl.num_varyings = n;

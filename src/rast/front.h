@@ -130,8 +130,9 @@ struct fr_tex {
    /* ---- per quad row: a's and b's numerators at the current quad's left
     *      pixel centres, both scan lines (exact integers, stepped) ---- */
    int64_t an[2], bn[2];
-   /* COLOR components (wide profile: perspective colour) are not texture
-    * coordinates: they keep binary32 (their planes hold floats). */
+   /* COLOR components (wide profile: perspective colour) and array layers
+    * (rast_varying.float_mask) are not texture coordinates: they keep
+    * binary32 (their planes hold floats). */
    bool any_color, is_color[FR_MAX_COMP];
    struct ns_stats st;                  /* moved to rast_stats per quad row */
    struct dfx_stats dst;

@@ -498,9 +498,11 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
    t->any_color = false;
    for (unsigned j = 0; j < fr->npersp; j++) {
       unsigned v = fr->persp[j].var;
-      /* in the float system a COLOR component is just another plane */
+      /* in the float system a COLOR component is just another plane; an
+       * array layer (float_mask) is divided as a COLOR component is */
       t->is_color[j] = !is_float && v < rc->vl.num_varyings &&
-                       rc->vl.varying[v].interp == RAST_INTERP_COLOR;
+                       (rc->vl.varying[v].interp == RAST_INTERP_COLOR ||
+                        (rc->vl.varying[v].float_mask >> fr->persp[j].chan & 1u));
       t->any_color |= t->is_color[j];
    }
    t->begin = tex_begin;

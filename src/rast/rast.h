@@ -272,6 +272,15 @@ struct rast_varying {
     * registers' grid that of the primitive's extent, not of its distance
     * from 0 (docs/texture-unit.md, "Coordinate rebase"). */
    uint8_t rebase_mask, rebase_even;
+   /* PERSPECTIVE components divided in binary32 whatever the texture
+    * path's number system, as a non-float system divides COLOR ones: those
+    * the shader reads as an array layer.  The layer is no address the unit
+    * computes in its system but GL's integer choice clamp(RNE(r)) from the
+    * shader's binary32 value, and a system's grid at a half-integer (dfx24:
+    * 2^-15 at 1.5) or its adder's alignment rounds a layer crossing one to
+    * the same side over the whole primitive (docs/texture-unit.md,
+    * "Array layer"). */
+   uint8_t float_mask;
 };
 
 struct rast_vertex_layout {

@@ -620,10 +620,12 @@ static void replay_state(struct rast_context *rc, const struct rast_vec_tri *t)
       vl.varying[t->var[i]].interp = RAST_INTERP_COLOR;
       vl.varying[t->var[i]].usage_mask |= (uint8_t)(1u << t->chan[i]);
    }
-   /* divided COLOR components are the wide profile's perspective colour */
+   /* components divided in binary32 (the wide profile's perspective
+    * colour, array layers) replay as float_mask ones: the same division,
+    * in either profile */
    for (unsigned j = 0; j < t->npersp; j++) {
-      vl.varying[t->pvar[j]].interp = t->pcolor[j] ? RAST_INTERP_COLOR
-                                                   : RAST_INTERP_PERSPECTIVE;
+      vl.varying[t->pvar[j]].interp = RAST_INTERP_PERSPECTIVE;
+      vl.varying[t->pvar[j]].float_mask |= (uint8_t)(t->pcolor[j] << t->pchan[j]);
       vl.varying[t->pvar[j]].usage_mask |= (uint8_t)(1u << t->pchan[j]);
    }
    if (memcmp(&vl, &rc->vl, sizeof(vl)))

@@ -37,7 +37,7 @@ struct rast_vec_tri {
    /* the perspective division's: A/w of each component at each vertex */
    unsigned npersp;
    uint8_t pvar[VEC_MAX_PERSP], pchan[VEC_MAX_PERSP];
-   bool pcolor[VEC_MAX_PERSP];        /* a COLOR component divided (wide profile) */
+   bool pcolor[VEC_MAX_PERSP];        /* divided in binary32: COLOR (wide), array layer */
    float aw[VEC_MAX_PERSP][3];
 };
 

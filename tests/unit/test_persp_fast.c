@@ -128,6 +128,11 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
                /* rebased components: the set-up's, the same on every path */
                .rebase_mask = (uint8_t)(t_rand() * 16), .rebase_even = (uint8_t)(t_rand() * 16) };
          }
+         /* now and then an array layer: components divided in binary32 */
+         if (t_rand() < 0.15) {
+            struct rast_varying *vr = &vl.varying[(unsigned)(t_rand() * vl.num_varyings)];
+            vr->float_mask = (uint8_t)(t_rand() * 16);
+         }
          rast_set_vertex_layout(t.rc, &vl);
       }
       struct rast_raster_state rs;
@@ -249,6 +254,102 @@ static void run(const char *profile, const char *texfmt, unsigned nprim, uint64_
    *ev += events;
 }
 
+/* The array layer (rast_varying.float_mask): dEQP-GLES3's
+ * texture.filtering.2d_array "level rounding" quad, layers 1.50001 at one
+ * corner, 1.49999 at the opposite one and their mean (1.5) at the other two:
+ * the reference samples layer 2 over one triangle and layer 1 over the other,
+ * where the layer lies up to 1e-5 below 1.5.  A texture path's system does
+ * not hold that (dfx24 rounds all three to 1.5, dfx26 and dfx29 lose the
+ * plane's terms in the adder's alignment, fx16.16 and fx24.8 have too few
+ * fraction bits), so the layer is divided in binary32: its bits must be the
+ * binary32 system's in every system, profile and data path, and the second
+ * triangle's pixels off the diagonal must choose layer 1. */
+static float layer_rec[2][64 * 64];
+static int layer_tri;
+static unsigned layer_hits[2];
+
+static void layer_hook(struct tctx *tc, const struct rast_quad *q)
+{
+   (void)tc;
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++) {
+      const int x = q->x + (int)(p & 1) - 8, y = q->y + (int)(p >> 1) - 8;
+      if ((q->mask >> p & 1u) && x >= 0 && x < 64 && y >= 0 && y < 64) {
+         layer_rec[layer_tri][y * 64 + x] = q->in[0][2][p];
+         layer_hits[layer_tri]++;
+      }
+   }
+}
+
+static void layer_draw(const char *profile, const char *texfmt, unsigned opts, bool mask)
+{
+   t_init(&t, profile, 128, 128);
+   rast_set_texfmt(t.rc, numsys_by_name(texfmt));
+   rast_set_options(t.rc, opts);
+   t.hook = layer_hook;
+   t_raster(&t, true, false);
+   struct rast_vertex_layout l;
+   memset(&l, 0, sizeof l);
+   l.vertex_size = 2;
+   l.num_varyings = 1;
+   l.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE,
+                                         .usage_mask = 0x7,
+                                         .float_mask = (uint8_t)(mask ? 0x4 : 0) };
+   rast_set_vertex_layout(t.rc, &l);
+   const float l0 = 1.50001f, l1 = 1.49999f, lm = l0 * 0.5f + l1 * 0.5f;
+   /* the quad's four corners (s, t, layer), as dEQP's renderQuad */
+   float v[4][2][4] = { { { 8, 8, 0.5f, 1 }, { -2.0f, -1.5f, l0, 1 } },
+                        { { 8, 72, 0.5f, 1 }, { -2.0f, -0.6f, lm, 1 } },
+                        { { 72, 8, 0.5f, 1 }, { -1.1f, -1.5f, lm, 1 } },
+                        { { 72, 72, 0.5f, 1 }, { -1.1f, -0.6f, l1, 1 } } };
+   memset(layer_rec, 0, sizeof layer_rec);
+   layer_hits[0] = layer_hits[1] = 0;
+   layer_tri = 0;
+   t_begin(&t);
+   t_tri(t.rc, v[0], v[1], v[2]);
+   layer_tri = 1;
+   t_begin(&t);
+   t_tri(t.rc, v[2], v[1], v[3]);
+   t_fini(&t);
+}
+
+static void layer_rounding(void)
+{
+   static const char *const systems[] = { "dfx24", "dfx17", "dfx26", "dfx29", "fx16.16",
+                                          "fx8.24", "fx24.8" };
+   static const unsigned opts[] = { 0, RAST_OPT_NOSKIP, RAST_OPT_SCALAR | RAST_OPT_NOSKIP,
+                                    RAST_OPT_NOF32 };
+   static float ref[2][64 * 64];
+   static const char *const profiles[] = { "seed", "wide" };
+   for (unsigned pf = 0; pf < 2; pf++) {
+      layer_draw(profiles[pf], "float", 0, true);
+      memcpy(ref, layer_rec, sizeof ref);
+      unsigned n = 0, layer1 = 0;
+      for (unsigned i = 0; i < 64 * 64; i++)
+         if (ref[1][i] != 0.0f) {
+            n++;
+            layer1 += floorf(ref[1][i] + 0.5f) == 1.0f;
+         }
+      CHECK(layer_hits[1] == 2080 && n == layer_hits[1] && layer1 + 64 >= n,
+            "%s: binary32 chose layer 1 at %u of %u pixels of the second triangle",
+            profiles[pf], layer1, n);
+      for (unsigned s = 0; s < sizeof systems / sizeof systems[0]; s++)
+         for (unsigned o = 0; o < sizeof opts / sizeof opts[0]; o++) {
+            layer_draw(profiles[pf], systems[s], opts[o], true);
+            CHECK(!memcmp(layer_rec, ref, sizeof ref),
+                  "%s %s opts %u: the array layer is not binary32's", profiles[pf],
+                  systems[s], opts[o]);
+         }
+      layer_draw(profiles[pf], "dfx24", 0, false);
+      unsigned same = 0;
+      for (unsigned i = 0; i < 64 * 64; i++)
+         same += layer_rec[1][i] != 0.0f &&
+                 floorf(layer_rec[1][i] + 0.5f) == floorf(ref[1][i] + 0.5f);
+      printf("array layer (%s): layer 1 at %u of %u pixels of the second triangle in binary32, "
+             "the same layer at %u of them in dfx24 when not divided in binary32\n",
+             profiles[pf], layer1, n, same);
+   }
+}
+
 int main(void)
 {
    for (int p = 0; p < NPASS; p++)
@@ -261,6 +362,7 @@ int main(void)
       printf("no AVX2 on this CPU: the SSE2 lanes only\n");
    else if (!avx512)
       printf("no AVX-512 on this CPU: its passes take the AVX2 lanes\n");
+   layer_rounding();
    t_seed(12345);
    uint64_t ev = 0;
    const unsigned nprim = 3000;
