@@ -81,7 +81,7 @@ def piglit_section():
     out += ["Counts over the tests of each list (`./fixpipe piglit LIST --driver D`, "
             "docs/piglit.md): *excluded* are tests a driver's `skips.txt` keeps out of the "
             "run; *skip* are tests that ran and reported skip (a missing extension or version: "
-            "fixpipe is GL ES 2.0 / GL 2.1). All runs on the same machine; the date is when "
+            "a missing extension or version). All runs on the same machine; the date is when "
             "each run started.", "",
             "| list | driver | tests | pass | fail | crash | timeout | skip | excluded | run |",
             "|---|---|---:|---:|---:|---:|---:|---:|---:|---|"]
