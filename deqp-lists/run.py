@@ -3,6 +3,7 @@
 
 usage: run.py gles2|gles3 [--list mustpass|all|FILE] [--driver D] [--shard I/N]
               [--fraction N] [--jobs J] [--timeout S] [--chunk N] [--out DIR]
+       run.py gles2|gles3 --sweep [--grid full|quick] [--list FILE]   (sweep.py)
        run.py --merge DIR...     combine the summary.json files of the shards of one run
 
 In the spirit of Mesa CI's deqp-runner: the case list is cut into chunks, each run by one
@@ -474,6 +475,9 @@ def positive(s):
 
 
 def main(argv):
+    if "--sweep" in argv:
+        import sweep
+        return sweep.main(argv)
     if argv[:1] == ["--merge"]:
         if len(argv) < 2:
             print("usage: run.py --merge DIR...", file=sys.stderr)

@@ -185,6 +185,31 @@ def test_lists():
           in r.output, r.output)
 
 
+def test_sweep():
+    r = Run()
+    lst = os.path.join(r.tmp.name, "sweep.txt")
+    with open(lst, "w") as f:
+        f.write(f"{G}.a.*\n{G}.b.*\n{G}.e.*\n")
+    out = os.path.join(r.tmp.name, "sweep")
+    e = dict(os.environ, DEQP_BUILD=r.build, FAKE_DEQP_CASES=r.cases)
+    # Debian's python3 has matplotlib (./fixpipe setup), the charts' one way
+    p = subprocess.run(["/usr/bin/python3", RUNNER, "gles2", "--sweep", "--grid", "quick", "--list",
+                        lst, "--out", out, "--launcher",
+                        os.path.join(HERE, "fake-launcher")], env=e, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True, timeout=120)
+    ok = p.returncode == 0 and os.path.exists(os.path.join(out, "sweep.json"))
+    check("a quick sweep writes its table, chart and data", ok and all(
+        os.path.exists(os.path.join(out, f)) for f in ("sweep.md", "sweep.png")), p.stdout)
+    if ok:
+        with open(os.path.join(out, "sweep.json")) as f:
+            d = json.load(f)
+        check("the sweep counts each group under each setting",
+              [s["label"] for s in d["settings"]] == ["seed", "xy=12.4"]
+              and d["groups"]["functional.fake.b"]["seed"] == [1, 2]
+              and d["groups"]["functional.fake.a"]["xy=12.4"] == [2, 2]
+              and d["groups"]["functional.fake.e"]["seed"] == [1, 1], d["groups"])
+
+
 def main():
     for name, fn in sorted(globals().items()):
         if name.startswith("test_"):
