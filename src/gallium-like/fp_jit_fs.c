@@ -28,6 +28,7 @@
 #include "gallivm/lp_bld_type.h"
 #include "nir/tgsi_to_nir.h"
 #include "pipe/p_shader_tokens.h"
+#include "tgsi/tgsi_info.h"
 #include "tgsi/tgsi_scan.h"
 #include "util/os_time.h"
 #include "util/disk_cache.h"
@@ -410,6 +411,38 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
    /* textureGather: tgsi_to_nir has no TG4 (it aborts) */
    if (info->opcode_count[TGSI_OPCODE_TG4])
       return false;
+   /* Opcodes Mesa 22.3.6's tgsi_to_nir has no translation for: it aborts
+    * the process ("unknown TGSI opcode"), and a GL program must not die
+    * through valid GL (ldexp() is LDEXP).  A shader with one stays on
+    * tgsi_exec, which has them.  The list is tgsi_to_nir.c's op_trans[]
+    * entries of 0 that ttn_emit_instruction has no case for. */
+   static const uint8_t ttn_missing[] = {
+      TGSI_OPCODE_LDEXP, TGSI_OPCODE_FMA, TGSI_OPCODE_DEMOTE, TGSI_OPCODE_READ_HELPER,
+      TGSI_OPCODE_CLOCK, TGSI_OPCODE_PK2H, TGSI_OPCODE_PK2US, TGSI_OPCODE_PK4B,
+      TGSI_OPCODE_PK4UB, TGSI_OPCODE_UP2H, TGSI_OPCODE_UP2US, TGSI_OPCODE_UP4B,
+      TGSI_OPCODE_UP4UB, TGSI_OPCODE_CAL, TGSI_OPCODE_RET, TGSI_OPCODE_BGNSUB,
+      TGSI_OPCODE_ENDSUB, TGSI_OPCODE_SWITCH, TGSI_OPCODE_CASE, TGSI_OPCODE_DEFAULT,
+      TGSI_OPCODE_ENDSWITCH, TGSI_OPCODE_MEMBAR, TGSI_OPCODE_RESQ, TGSI_OPCODE_TXQS,
+      TGSI_OPCODE_LOD, TGSI_OPCODE_ATOMUADD, TGSI_OPCODE_ATOMXCHG, TGSI_OPCODE_ATOMCAS,
+      TGSI_OPCODE_ATOMAND, TGSI_OPCODE_ATOMOR, TGSI_OPCODE_ATOMXOR, TGSI_OPCODE_ATOMUMIN,
+      TGSI_OPCODE_ATOMUMAX, TGSI_OPCODE_ATOMIMIN, TGSI_OPCODE_ATOMIMAX, TGSI_OPCODE_ATOMFADD,
+      TGSI_OPCODE_ATOMINC_WRAP, TGSI_OPCODE_ATOMDEC_WRAP, TGSI_OPCODE_INTERP_CENTROID,
+      TGSI_OPCODE_INTERP_SAMPLE, TGSI_OPCODE_INTERP_OFFSET, TGSI_OPCODE_READ_FIRST,
+      TGSI_OPCODE_READ_INVOC, TGSI_OPCODE_BALLOT, TGSI_OPCODE_VOTE_ANY, TGSI_OPCODE_VOTE_ALL,
+      TGSI_OPCODE_VOTE_EQ, TGSI_OPCODE_SAMPLE_POS, TGSI_OPCODE_SAMPLE_INFO,
+      TGSI_OPCODE_IMG2HND, TGSI_OPCODE_SAMP2HND,
+   };
+   for (unsigned i = 0; i < sizeof(ttn_missing); i++)
+      if (info->opcode_count[ttn_missing[i]])
+         return false;
+   /* and no double or 64-bit integer arithmetic (GL ES has none) */
+   for (unsigned op = 0; op < TGSI_OPCODE_LAST; op++) {
+      if (!info->opcode_count[op])
+         continue;
+      if (tgsi_type_is_64bit(tgsi_opcode_infer_dst_type((enum tgsi_opcode)op, 0)) ||
+          tgsi_type_is_64bit(tgsi_opcode_infer_src_type((enum tgsi_opcode)op, 0)))
+         return false;
+   }
    /* texelFetch from multisampled textures: interpreted (the compiled
     * code's fetch has no sample operand) */
    for (unsigned i = 0; i < PIPE_MAX_SHADER_SAMPLER_VIEWS; i++)

@@ -15,6 +15,11 @@
  *                pixel shows texelFetch of sample (x + y) % 4
  *   stencil-tex  overlapping triangles counted in a depth/stencil texture,
  *                then sampled as GL_STENCIL_INDEX (usampler2D)
+ *   builtins     a fragment shader calling GLSL ES 3.10's built-ins on each
+ *                pixel's own numbers (ldexp and frexp, the packing functions,
+ *                the bit operations, the extended arithmetic), each checked
+ *                against an identity it must meet: a pixel is green where
+ *                all hold, a colour per failed identity otherwise
  *
  * Self-checks (errors fail the program on any driver): GL ES 3.1 or later,
  * the compute case's words and counter against the CPU's, the image case's
@@ -336,6 +341,53 @@ static void case_stencil_tex(int size)
    glDeleteFramebuffers(1, &fbo);
 }
 
+
+/* GLSL ES 3.10's built-ins on per-pixel values, each checked in the shader
+ * against an identity (an exact one wherever the function is exact): the
+ * picture is green on any conformant driver, whatever its interpolation. */
+static const char *fs_builtins =
+   "#version 310 es\n"
+   "precision highp float;\n"
+   "precision highp int;\n"
+   "in vec2 v_uv;\n"
+   "out vec4 o_color;\n"
+   "void main() {\n"
+   "   uint bits = uint(gl_FragCoord.x) * 2654435761u ^ uint(gl_FragCoord.y) * 40503u;\n"
+   "   float x = (v_uv.x - 0.5) * 1000.0 + 0.375;\n"
+   "   uint bad = 0u;\n"
+   "   int e; float m = frexp(x, e);\n"
+   "   if (ldexp(m, e) != x || abs(m) < 0.5 || abs(m) >= 1.0) bad |= 1u;\n"
+   "   vec4 c = vec4(v_uv, 0.25, 1.0);\n"
+   "   if (any(greaterThan(abs(unpackUnorm4x8(packUnorm4x8(c)) - c), vec4(0.5 / 255.0)))) bad |= 2u;\n"
+   "   vec4 sn = c * 2.0 - 1.0;\n"
+   "   if (any(greaterThan(abs(unpackSnorm4x8(packSnorm4x8(sn)) - sn), vec4(0.5 / 127.0)))) bad |= 2u;\n"
+   "   if (any(greaterThan(abs(unpackUnorm2x16(packUnorm2x16(v_uv)) - v_uv), vec2(0.5 / 65535.0)))) bad |= 4u;\n"
+   "   if (any(greaterThan(abs(unpackSnorm2x16(packSnorm2x16(sn.xy)) - sn.xy), vec2(0.5 / 32767.0)))) bad |= 4u;\n"
+   "   if (unpackHalf2x16(packHalf2x16(vec2(0.5, -2.25))) != vec2(0.5, -2.25)) bad |= 8u;\n"
+   "   int lsb = findLSB(bits), msb = findMSB(bits);\n"
+   "   if (bits != 0u && ((bits >> uint(lsb) & 1u) != 1u || (bits & ((1u << uint(lsb)) - 1u)) != 0u ||\n"
+   "                      (bits >> uint(msb)) != 1u)) bad |= 16u;\n"
+   "   uint n = 0u; for (uint v = bits; v != 0u; v &= v - 1u) n++;\n"
+   "   if (uint(bitCount(bits)) != n) bad |= 16u;\n"
+   "   if (bitfieldReverse(bitfieldReverse(bits)) != bits || (bitfieldReverse(bits) >> 31) != (bits & 1u)) bad |= 32u;\n"
+   "   if (bitfieldExtract(bits, 3, 7) != ((bits >> 3) & 127u)) bad |= 32u;\n"
+   "   if (bitfieldExtract(bitfieldInsert(bits, 5u, 9, 3), 9, 3) != 5u) bad |= 32u;\n"
+   "   if (bitfieldExtract(int(bits), 28, 4) != int(bits) >> 28) bad |= 32u;\n"
+   "   uint carry, borrow;\n"
+   "   uint sum = uaddCarry(bits, 0xffff0000u, carry);\n"
+   "   if (sum != bits + 0xffff0000u || carry != (bits >= 0x10000u ? 1u : 0u)) bad |= 64u;\n"
+   "   uint diff = usubBorrow(bits, 0x80000000u, borrow);\n"
+   "   if (diff != bits - 0x80000000u || borrow != (bits < 0x80000000u ? 1u : 0u)) bad |= 64u;\n"
+   "   uint hi, lo; umulExtended(bits, 65537u, hi, lo);\n"
+   "   if (lo != bits * 65537u || hi != (bits >> 16) + ((bits & 0xffffu) + (bits >> 16) >> 16)) bad |= 128u;\n"
+   "   int small = int(bits & 0xffffu) - 32768, ihi, ilo;\n"
+   "   imulExtended(small, -3, ihi, ilo);\n"
+   "   if (ilo != small * -3 || ihi != (ilo < 0 ? -1 : 0)) bad |= 128u;\n"
+   "   if (intBitsToFloat(floatBitsToInt(x)) != x || uintBitsToFloat(floatBitsToUint(x)) != x) bad |= 256u;\n"
+   "   o_color = bad == 0u ? vec4(0.0, 1.0, 0.0, 1.0)\n"
+   "                       : vec4(float(bad & 15u) / 15.0, 0.0, float(bad >> 4) / 31.0, 1.0);\n"
+   "}\n";
+
 int main(int argc, char **argv)
 {
    struct e2e_args a;
@@ -355,6 +407,16 @@ int main(int argc, char **argv)
       case_image(a.size);
    } else if (!strcmp(c, "gather")) {
       case_gather(a.size);
+   } else if (!strcmp(c, "builtins")) {
+      glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
+      glViewport(0, 0, a.size, a.size);
+      glUseProgram(program(fs_builtins));
+      draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+      /* the corner pixels: green where every identity held */
+      unsigned char px[4];
+      glReadPixels(a.size / 2, a.size / 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+      printf("stat: pixel=%u,%u,%u\n", px[0], px[1], px[2]);
+      check(px[0] == 0 && px[1] == 255 && px[2] == 0, "a built-in broke its identity");
    } else if (!strcmp(c, "ms-fetch") || !strcmp(c, "stencil-tex")) {
       const bool ms = !strcmp(c, "ms-fetch");
       static const char *fs_ms =
@@ -397,7 +459,7 @@ int main(int argc, char **argv)
          check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0), "sample 1 of the edge pixel is red");
       }
    } else {
-      fp_die("--case: compute, image, gather, ms-fetch or stencil-tex");
+      fp_die("--case: compute, image, gather, builtins, ms-fetch or stencil-tex");
    }
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */
