@@ -17,6 +17,7 @@ import importlib.machinery
 import importlib.util
 import json
 import os
+import shutil
 import subprocess
 import sys
 
@@ -46,6 +47,9 @@ def group_of(case):
 
 def run_setting(args, label, profile, texfmt):
     out = os.path.join(args.out, "runs")
+    # a setting's directory holds this run alone (an earlier sweep's, of another
+    # list or fraction, would be read as this one's)
+    shutil.rmtree(os.path.join(out, label.replace(" ", "_")), ignore_errors=True)
     env = dict(os.environ, FIXPIPE_PROFILE=profile, FIXPIPE_TEXFMT=texfmt)
     env.pop("FIXPIPE_DEBUG", None)
     empty = os.path.join(args.out, "no-expectations")

@@ -177,7 +177,26 @@ def read_deqp(driver, module, lst):
     return merged
 
 
-def deqp_section():
+def deqp_sweep(img_dir):
+    """Conformance against precision (./fixpipe deqp MODULE --sweep), where it was run."""
+    out = []
+    for module in ("gles2", "gles3"):
+        base = os.path.join(REPO, "out", "deqp", f"sweep-{module}")
+        if not os.path.exists(os.path.join(base, "sweep.md")):
+            continue
+        out += [f"### {module}: conformance against precision", "",
+                f"`./fixpipe deqp {module} --sweep` (docs/deqp.md).", ""]
+        with open(os.path.join(base, "sweep.md"), encoding="utf-8") as f:
+            out += f.read().rstrip().splitlines()
+        if img_dir and os.path.exists(os.path.join(base, "sweep.png")):
+            name = f"deqp-sweep-{module}.png"
+            shutil.copy(os.path.join(base, "sweep.png"), os.path.join(img_dir, name))
+            out += ["", f"![dEQP {module} against precision]({IMG_REL}/{name})"]
+        out.append("")
+    return out
+
+
+def deqp_section(img_dir=None):
     """The Khronos suite's counts per module and list on the three drivers."""
     runs = sorted({tuple(os.path.basename(os.path.dirname(p)).split("-", 2)[1:])
                    for p in glob.glob(os.path.join(REPO, "out", "deqp", "*-gles*-*",
@@ -215,7 +234,7 @@ def deqp_section():
                        f" {c.get('fail', 0)} | {c.get('crash', 0)} | {c.get('timeout', 0)} |"
                        f" {c.get('notsupported', 0)} | {only} | {when}, {s['seconds']:.0f} s"
                        f"{'' if s['complete'] else ' (shards missing)'} |")
-    return out + [""]
+    return out + [""] + deqp_sweep(img_dir)
 
 
 # ------------------------------------------------------------------ traces
@@ -416,7 +435,7 @@ def main(argv):
              "minute, then this page from the piglit summaries on disk); `./fixpipe report "
              "--piglit` also runs every piglit list on the three drivers first (long).", ""]
     lines += piglit_section()
-    lines += deqp_section()
+    lines += deqp_section(img_dir)
     lines += trace_section(img_dir)
     with open(dest, "w", encoding="utf-8") as f:
         f.write("\n".join(lines).rstrip() + "\n")
