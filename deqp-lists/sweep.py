@@ -108,7 +108,7 @@ def write_outputs(args, settings, results):
     labels = [s[0] for s in settings]
     md = [f"Cases of each group that pass on fixpipe under each setting ({args.module}, "
           f"`{os.path.relpath(args.list, REPO) if os.sep in args.list else args.list}`"
-          + (f", every {args.fraction}th case" if args.fraction > 1 else "") + "); "
+          + (f", one case in {args.fraction}" if args.fraction > 1 else "") + "); "
           "*beyond default*: cases the default setting passes and this one fails.", "",
           "| setting | FIXPIPE_PROFILE | FIXPIPE_TEXFMT | pass | beyond default |",
           "|---|---|---|---:|---:|"]
