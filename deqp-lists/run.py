@@ -35,7 +35,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tools"))
-from fpexpect import bad_input, matching, read_fails, read_regexes, shard  # noqa: E402
+from fpexpect import (bad_input, join_shards, matching, parse_shard, read_fails,  # noqa: E402
+                      read_regexes, shard)
 
 DRIVERS = ("fixpipe", "softpipe", "llvmpipe")
 MODULES = {"gles2": "dEQP-GLES2", "gles3": "dEQP-GLES3"}
@@ -429,43 +430,16 @@ def cmd_run(args):
 
 
 def cmd_merge(dirs):
-    tests, first, seen = {}, None, []
-    for d in dirs:
-        path = d if d.endswith(".json") else os.path.join(d, "summary.json")
-        try:
-            with open(path, encoding="utf-8") as f:
-                s = json.load(f)
-        except (OSError, ValueError) as e:
-            bad_input(f"{path}: {e}")
-        if s.get("format") != FORMAT:
-            bad_input(f"{path}: not a {FORMAT} file")
-        first = first or s
-        key = ("module", "list", "driver", "fraction")
-        if [s[k] for k in key] != [first[k] for k in key]:
-            bad_input(f"{path}: another run ({', '.join(str(s[k]) for k in key)})")
-        seen.append(s["shard"][0])
-        for n, t in s["tests"].items():
-            if n in tests:
-                bad_input(f"{path}: {n} is in two shards")
-            tests[n] = t
+    first, tests, missing = join_shards(dirs, FORMAT, ("module", "list", "driver", "fraction"))
     n_shards = first["shard"][1]
-    missing = sorted(set(range(1, n_shards + 1)) - set(seen))
     counts, expected = tally(tests)
     summary = dict(first, shard=[0, n_shards], tests=tests, counts=counts, expected=expected,
                    total=len(tests))
-    status = report(summary, f"deqp-{first['module']}-{first['driver']}",
-                    f"{first['driver']}-fails.txt")
+    status = report(summary, f"deqp-{first['module']}-{first['driver']}", f"{first['driver']}-fails.txt")
     if missing:
         print(f"fixpipe: shards {missing} of {n_shards} are missing: the run is incomplete")
         status = 1
     return status
-
-
-def parse_shard(s):
-    m = re.fullmatch(r"(\d+)/(\d+)", s)
-    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
-        raise argparse.ArgumentTypeError(f"--shard wants I/N with 1 <= I <= N, got {s!r}")
-    return int(m.group(1)), int(m.group(2))
 
 
 def positive(s):

@@ -22,7 +22,8 @@ import time
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
-from fpexpect import bad_input, matching, read_fails, read_regexes, shard  # noqa: E402
+from fpexpect import (bad_input, join_shards, matching, parse_shard, read_fails,  # noqa: E402
+                      read_regexes, shard)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -333,23 +334,8 @@ def cmd_run(args):
 
 
 def cmd_merge(dirs):
-    tests, first, seen = {}, None, []
-    for d in dirs:
-        path = d if d.endswith(".json") else os.path.join(d, "summary.json")
-        with open(path, encoding="utf-8") as f:
-            s = json.load(f)
-        if s.get("format") != FORMAT:
-            bad_input(f"{path}: not a {FORMAT} file")
-        first = first or s
-        if (s["list"], s["driver"]) != (first["list"], first["driver"]):
-            bad_input(f"{path}: {s['driver']}-{s['list']}, not {first['driver']}-{first['list']}")
-        seen.append(s["shard"][0])
-        for n, t in s["tests"].items():
-            if n in tests:
-                bad_input(f"{path}: {n!r} is in two shards")
-            tests[n] = t
+    first, tests, missing = join_shards(dirs, FORMAT, ("list", "driver"))
     n_shards = first["shard"][1]
-    missing = sorted(set(range(1, n_shards + 1)) - set(seen))
     counts, expected = tally(tests)
     summary = dict(first, shard=[0, n_shards], tests=tests, counts=counts, expected=expected,
                    total=len(tests))
@@ -359,13 +345,6 @@ def cmd_merge(dirs):
         print(f"fixpipe: shards {missing} of {n_shards} are missing")
         status = 1
     return status
-
-
-def parse_shard(s):
-    m = re.fullmatch(r"(\d+)/(\d+)", s)
-    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
-        raise argparse.ArgumentTypeError(f"--shard wants I/N with 1 <= I <= N, got {s!r}")
-    return int(m.group(1)), int(m.group(2))
 
 
 def main(argv):

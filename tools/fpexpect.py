@@ -7,6 +7,8 @@ DRIVER-skips.txt   a regular expression a line: matching tests are not run
 Every entry has its reason in the '#' comment line(s) just above it; a blank line ends a
 comment.  A malformed line is an input error (exit status 2), never a silent pass.
 """
+import argparse
+import json
 import re
 import sys
 
@@ -73,3 +75,37 @@ def matching(regexes, name):
 def shard(names, i, n):
     """Round-robin over the sorted names: every test in exactly one shard, sizes within one."""
     return [t for k, t in enumerate(sorted(names)) if k % n == i - 1]
+
+
+def parse_shard(s):
+    """--shard I/N for argparse."""
+    m = re.fullmatch(r"(\d+)/(\d+)", s)
+    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
+        raise argparse.ArgumentTypeError(f"--shard wants I/N with 1 <= I <= N, got {s!r}")
+    return int(m.group(1)), int(m.group(2))
+
+
+def join_shards(dirs, fmt, key):
+    """The summaries of one run's shards (DIR/summary.json or the files): (the first summary,
+    every test's entry, the shard numbers missing).  A file of another format or another run
+    (the fields in `key` differ) and a test in two shards are input errors."""
+    tests, first, seen = {}, None, []
+    for d in dirs:
+        path = d if d.endswith(".json") else d.rstrip("/") + "/summary.json"
+        try:
+            with open(path, encoding="utf-8") as f:
+                s = json.load(f)
+        except (OSError, ValueError) as e:
+            bad_input(f"{path}: {e}")
+        if s.get("format") != fmt:
+            bad_input(f"{path}: not a {fmt} file")
+        first = first or s
+        if [s[k] for k in key] != [first[k] for k in key]:
+            bad_input(f"{path}: another run ({', '.join(str(s[k]) for k in key)})")
+        seen.append(s["shard"][0])
+        for n, t in s["tests"].items():
+            if n in tests:
+                bad_input(f"{path}: {n!r} is in two shards")
+            tests[n] = t
+    n_shards = first["shard"][1]
+    return first, tests, sorted(set(range(1, n_shards + 1)) - set(seen))
