@@ -14,6 +14,7 @@ struct vbuf_render;
 struct tgsi_exec_machine;
 struct fp_tgsi_sampler;
 struct fp_compute_shader;
+struct nir_shader;
 struct tgsi_image;
 struct tgsi_buffer;
 
@@ -37,6 +38,7 @@ struct fp_rasterizer_state {
 
 struct fp_fragment_shader {
    const struct tgsi_token *tokens;
+   struct nir_shader *nir;          /* st's NIR, for the compiled path; NULL from TGSI */
    /* What tgsi_exec runs: `tokens`, or with framebuffer fetch a copy that
     * reads the fetched colour of output k from IN[fetch_first + k]
     * (fp_fbfetch.c); fetch_mask: the colour buffers read. */

@@ -200,7 +200,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
    if (fp_fs_hot(fp, fs, 0) == FP_FS_COLD && !fs->hot_ahead &&
        !(fp_env_debug() & FP_DEBUG_JITALL))
       return false;
-   fs->jit = fp_jit_fs_compile(fp, fs->tokens, &fs->info, fs->depth_output, fs->color_output,
+   fs->jit = fp_jit_fs_compile(fp, fs->tokens, fs->nir, &fs->info, fs->depth_output, fs->color_output,
                                fs->num_color_outputs);
    if (!fs->jit) {
       fs->jit_failed = true;

@@ -71,9 +71,13 @@ struct fp_jit_variant {
    bool cache_hit;                  /* code from Mesa's on-disk shader cache */
 };
 
-/* Compiles the TGSI fragment shader; NULL when gallivm cannot (the caller
- * keeps interpreting it). */
+/* Compiles the fragment shader: st's NIR where it came so (nir, with
+ * `tokens` the TGSI nir_to_tgsi made of it, whose input registers the code
+ * reads), else its TGSI; NULL when gallivm cannot (the caller keeps
+ * interpreting it). */
+struct nir_shader;
 struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgsi_token *tokens,
+                                         const struct nir_shader *nir,
                                          const struct tgsi_shader_info *info,
                                          int depth_output, const int *color_output,
                                          unsigned num_color_outputs);

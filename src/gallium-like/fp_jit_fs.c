@@ -1,9 +1,10 @@
 /*
  * A fragment shader compiled by gallivm for the model's quads.
  *
- * TGSI (what st/mesa gives this driver) -> tgsi_to_nir -> lp_build_opt_nir
- * (llvmpipe's NIR preparation) -> lp_build_nir_soa (llvmpipe's code
- * generator) -> one LLVM function per shader:
+ * st/mesa's NIR (the screen prefers NIR for fragment shaders) ->
+ * lp_build_opt_nir (llvmpipe's NIR preparation) -> lp_build_nir_soa
+ * (llvmpipe's code generator) -> one LLVM function per shader; a shader
+ * that comes as TGSI (u_blitter's) goes through tgsi_to_nir first:
  *
  *    void fs(const struct fp_jit_context *ctx, const struct rast_quad *q,
  *            struct rast_shaded_quad *out, int32_t mask[4])
@@ -19,6 +20,8 @@
 #include <stdio.h>
 
 #include "compiler/nir/nir.h"
+#include "compiler/nir/nir_serialize.h"
+#include "util/blob.h"
 #include "gallivm/lp_bld_const.h"
 #include "gallivm/lp_bld_flow.h"
 #include "gallivm/lp_bld_init.h"
@@ -116,6 +119,62 @@ static char *fp_jit_finalize_nir(struct pipe_screen *screen, void *shader)
    } while (progress);
    lp_build_opt_nir(nir);
    return NULL;
+}
+
+/* st's NIR, made with the screen's options for nir_to_tgsi, under gallivm's:
+ * nir_opt_algebraic lowers what they lower that the screen's did not
+ * (ldexp, the packing built-ins, fsat ...), lp_build_opt_nir the rest, as
+ * llvmpipe's finalize does for its own NIR. */
+static void fp_jit_prepare_nir(nir_shader *nir)
+{
+   nir->options = &fp_jit_nir_options;
+   NIR_PASS_V(nir, nir_lower_int64);
+   bool progress;
+   do {
+      progress = false;
+      NIR_PASS(progress, nir, nir_copy_prop);
+      NIR_PASS(progress, nir, nir_opt_dce);
+      NIR_PASS(progress, nir, nir_opt_cse);
+      NIR_PASS(progress, nir, nir_opt_dead_cf);
+      NIR_PASS(progress, nir, nir_opt_constant_folding);
+      NIR_PASS(progress, nir, nir_opt_algebraic);
+   } while (progress);
+   lp_build_opt_nir(nir);
+}
+
+/* The output slots gallivm gives a NIR shader's colours and depth: the
+ * outputs' driver_location (lp_build_nir_soa indexes its outputs so), by
+ * the colour buffer their location names.  False for an output the back
+ * end has no place for (stencil export, sample mask). */
+static bool fp_jit_nir_outputs(const nir_shader *nir, int *depth_output,
+                               int color_output[RAST_MAX_CBUFS])
+{
+   *depth_output = -1;
+   for (unsigned cb = 0; cb < RAST_MAX_CBUFS; cb++)
+      color_output[cb] = -1;
+   nir_foreach_shader_out_variable(var, nir) {
+      const int loc = var->data.location, base = (int)var->data.driver_location;
+      if (var->data.location_frac != 0 || var->data.index > 1 ||
+          (var->data.index == 1 && loc != FRAG_RESULT_DATA0))
+         return false;
+      if (var->data.index == 1) {
+         /* dual-source blending's second colour: the back end's colour 1,
+          * as TGSI's COLOR[1] */
+         color_output[1] = base;
+      } else if (loc == FRAG_RESULT_DEPTH) {
+         *depth_output = base;
+      } else if (loc == FRAG_RESULT_COLOR) {
+         color_output[0] = base;
+      } else if (loc >= FRAG_RESULT_DATA0) {
+         const int slots = (int)glsl_count_attribute_slots(var->type, false);
+         for (int k = 0; k < slots; k++)
+            if (loc - FRAG_RESULT_DATA0 + k < RAST_MAX_CBUFS)
+               color_output[loc - FRAG_RESULT_DATA0 + k] = base + k;
+      } else {
+         return false;
+      }
+   }
+   return true;
 }
 
 static LLVMValueRef fp_byte_ptr(struct gallivm_state *gallivm, LLVMValueRef base, size_t offset,
@@ -373,8 +432,9 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
    return func;
 }
 
-/* What the compiled path takes; any other shader stays interpreted.
- * tgsi_to_nir aborts on a varying semantic it has no NIR slot for (nir_to_tgsi
+/* What the compiled path takes from TGSI alone (the driver's own and
+ * u_blitter's shaders; st's come as NIR); any other shader stays
+ * interpreted.  tgsi_to_nir aborts on a varying semantic it has no NIR slot for (nir_to_tgsi
  * gives packed varyings TGSI_SEMANTIC_PATCH, say); the slot names the
  * variable only, the compiled code reads inputs by TGSI index. */
 static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
@@ -479,22 +539,31 @@ static unsigned fp_jit_quads_a_call(void)
 
 /* The shader's key in the on-disk cache: what the generated code depends on.
  * The driver's own layout (rast_quad, fp_jit_context) is in the cache's id. */
-static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
-                             const int *color_output, unsigned num_color_outputs, unsigned quads,
+static void fp_jit_cache_key(const struct tgsi_token *tokens, const nir_shader *nir,
+                             int depth_output, const int *color_output,
+                             unsigned num_color_outputs, unsigned quads,
                              unsigned char key[CACHE_KEY_SIZE], struct disk_cache *cache)
 {
    struct mesa_sha1 ctx;
    unsigned char sha1[20];
    /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad;
     * 4: two quads a call; 5: the quads by pointer arrays, four a call for
-    * texturing shaders */
-   static const char version[] = "fixpipe fs quad 5";
+    * texturing shaders; 6: st's NIR, gathers and multisample fetches */
+   static const char version[] = "fixpipe fs quad 6";
    /* the quads a call (noskip: one, which also leaves the quads laid out
     * by the code out: fp_jit_sample.c) */
    _mesa_sha1_init(&ctx);
    _mesa_sha1_update(&ctx, version, sizeof(version));
    _mesa_sha1_update(&ctx, &quads, sizeof(quads));
+   /* the shader compiled, and the TGSI its inputs are laid out by */
    _mesa_sha1_update(&ctx, tokens, tgsi_num_tokens(tokens) * sizeof(struct tgsi_token));
+   if (nir) {
+      struct blob blob;
+      blob_init(&blob);
+      nir_serialize(&blob, nir, true);
+      _mesa_sha1_update(&ctx, blob.data, blob.size);
+      blob_finish(&blob);
+   }
    _mesa_sha1_update(&ctx, &depth_output, sizeof(depth_output));
    _mesa_sha1_update(&ctx, &num_color_outputs, sizeof(num_color_outputs));
    _mesa_sha1_update(&ctx, color_output, num_color_outputs * sizeof(*color_output));
@@ -503,14 +572,24 @@ static void fp_jit_cache_key(const struct tgsi_token *tokens, int depth_output,
 }
 
 struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgsi_token *tokens,
+                                         const nir_shader *src_nir,
                                          const struct tgsi_shader_info *info,
                                          int depth_output, const int *color_output,
                                          unsigned num_color_outputs)
 {
    const int64_t start = os_time_get_nano();
-   if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS ||
-       !fp_jit_shader_ok(info))
+   if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS)
       return NULL;
+   /* st's NIR: every operation gallivm has, its outputs by their NIR slots;
+    * TGSI alone: what tgsi_to_nir can read */
+   int nir_color_output[RAST_MAX_CBUFS];
+   if (src_nir) {
+      if (!fp_jit_nir_outputs(src_nir, &depth_output, nir_color_output))
+         return NULL;
+      color_output = nir_color_output;
+   } else if (!fp_jit_shader_ok(info)) {
+      return NULL;
+   }
    /* gallivm (and LLVM) initialized here, at the process's first compilation */
    LLVMContextRef llvm_context = fp_llvm_context(fp);
    if (!llvm_context)
@@ -523,10 +602,16 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    /* tgsi_to_nir takes the NIR options and the final passes from the
     * screen: give it gallivm's (the screen's own are for st's NIR-to-TGSI
     * and must not change), on a copy so every cap it reads is ours. */
-   struct fp_screen jit_screen = *fp_screen(fp->pipe.screen);
-   jit_screen.base.get_compiler_options = fp_jit_compiler_options;
-   jit_screen.base.finalize_nir = fp_jit_finalize_nir;
-   nir_shader *nir = tgsi_to_nir(tokens, &jit_screen.base, false);
+   nir_shader *nir;
+   if (src_nir) {
+      nir = nir_shader_clone(NULL, src_nir);
+      fp_jit_prepare_nir(nir);
+   } else {
+      struct fp_screen jit_screen = *fp_screen(fp->pipe.screen);
+      jit_screen.base.get_compiler_options = fp_jit_compiler_options;
+      jit_screen.base.finalize_nir = fp_jit_finalize_nir;
+      nir = tgsi_to_nir(tokens, &jit_screen.base, false);
+   }
    if (!nir) {
       FREE(v);
       return NULL;
@@ -538,8 +623,8 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    struct lp_cached_code cached = { 0 };
    unsigned char key[CACHE_KEY_SIZE];
    if (cache) {
-      fp_jit_cache_key(tokens, depth_output, color_output, num_color_outputs, v->quads, key,
-                       cache);
+      fp_jit_cache_key(tokens, src_nir, depth_output, color_output, num_color_outputs,
+                       v->quads, key, cache);
       size_t size = 0;
       cached.data = disk_cache_get(cache, key, &size);
       cached.data_size = cached.data ? size : 0;

@@ -56,6 +56,8 @@ static enum tgsi_texture_type fp_tgsi_target(const nir_tex_instr *tex)
       return s ? TGSI_TEXTURE_SHADOWRECT : TGSI_TEXTURE_RECT;
    case GLSL_SAMPLER_DIM_BUF:
       return TGSI_TEXTURE_BUFFER;
+   case GLSL_SAMPLER_DIM_MS:
+      return a ? TGSI_TEXTURE_2D_ARRAY_MSAA : TGSI_TEXTURE_2D_MSAA;
    default:
       return a ? (s ? TGSI_TEXTURE_SHADOW2D_ARRAY : TGSI_TEXTURE_2D_ARRAY)
                : (s ? TGSI_TEXTURE_SHADOW2D : TGSI_TEXTURE_2D);
@@ -115,12 +117,24 @@ static void fp_jit_sample(struct tgsi_sampler *s, uint32_t texture, uint32_t sam
          memcpy(y, arg[1], sizeof(y));
       if (dim > 2)
          memcpy(z, arg[2], sizeof(z));
-      if (lod_control == LP_SAMPLER_LOD_EXPLICIT)
+      /* the level, or of a multisampled texture the sample (exec_txf
+       * takes either from the coordinate's w) */
+      if (lod_control == LP_SAMPLER_LOD_EXPLICIT || (key & LP_SAMPLER_FETCH_MS))
          memcpy(level, ilod, sizeof(level));
       s->get_texel(s, texture, x, y, z, level, offset, rgba);
       return;
    }
 
+   if (op == LP_SAMPLER_OP_GATHER) {
+      /* exec_tex's TG4: the component in the last operand's bits */
+      union { uint32_t u; float f; } comp = {
+         (key & LP_SAMPLER_GATHER_COMP_MASK) >> LP_SAMPLER_GATHER_COMP_SHIFT
+      };
+      const float c1[RAST_QUAD_SIZE] = { comp.f, comp.f, comp.f, comp.f };
+      s->get_samples(s, texture, sampler, arg[0], arg[1], arg[2], arg[3], c1, NULL, offset,
+                     TGSI_SAMPLER_GATHER, rgba);
+      return;
+   }
    const enum tgsi_sampler_control control = fp_control(key);
    if (control == TGSI_SAMPLER_LOD_BIAS || control == TGSI_SAMPLER_LOD_EXPLICIT)
       arg[4] = lod;
@@ -318,7 +332,11 @@ static void fp_emit_tex_general(const struct fp_jit_sampler *js, struct gallivm_
       fp_store_vec(gallivm, coords, fvec, i, fp_jit_quad_part(gallivm, params->coords[i], k, nq));
 
    LLVMValueRef lod = fp_vec_array(gallivm, fvec, 1, "tex_lod");
-   fp_store_vec(gallivm, lod, fvec, 0, fp_jit_quad_part(gallivm, params->lod, k, nq));
+   fp_store_vec(gallivm, lod, fvec, 0,
+                fp_jit_quad_part(gallivm,
+                                 (params->sample_key & LP_SAMPLER_FETCH_MS) ? params->ms_index
+                                                                            : params->lod,
+                                 k, nq));
 
    /* Only the derivatives the target has are set (visit_tex leaves the
     * rest of lp_derivatives uninitialised). */

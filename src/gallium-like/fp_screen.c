@@ -201,10 +201,16 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
 {
    (void)screen;
    switch (param) {
+   /* Fragment shaders come as st's NIR: the compiled path takes it as it
+    * is (fp_jit_fs.c), and tgsi_exec the TGSI nir_to_tgsi makes of it in
+    * the driver, as st would have (fp_state_shader.c).  The other stages
+    * are TGSI for draw and tgsi_exec. */
    case PIPE_SHADER_CAP_PREFERRED_IR:
-      return PIPE_SHADER_IR_TGSI;
+      return shader == PIPE_SHADER_FRAGMENT ? PIPE_SHADER_IR_NIR : PIPE_SHADER_IR_TGSI;
    case PIPE_SHADER_CAP_SUPPORTED_IRS:
-      return 1 << PIPE_SHADER_IR_TGSI;
+      return shader == PIPE_SHADER_FRAGMENT
+                ? (1 << PIPE_SHADER_IR_TGSI) | (1 << PIPE_SHADER_IR_NIR)
+                : 1 << PIPE_SHADER_IR_TGSI;
    default:
       break;
    }

@@ -9,40 +9,61 @@
 #include "tgsi/tgsi_parse.h"
 #include "tgsi/tgsi_scan.h"
 #include "tgsi/tgsi_exec.h"
+#include "compiler/nir/nir.h"
+#include "nir/nir_to_tgsi.h"
+#include "util/ralloc.h"
 
 #include "fp_context.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
+
+static void fp_fs_free(struct fp_fragment_shader *fs)
+{
+   ralloc_free(fs->nir);
+   FREE((void *)fs->tokens);
+   FREE(fs);
+}
 
 static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)
 {
    struct fp_context *fp = fp_context(pipe);
    struct fp_fragment_shader *fs;
 
-   if (templ->type != PIPE_SHADER_IR_TGSI || !templ->tokens)
+   if (templ->type == PIPE_SHADER_IR_TGSI ? !templ->tokens
+                                          : templ->type != PIPE_SHADER_IR_NIR || !templ->ir.nir)
       return NULL;
    fs = CALLOC_STRUCT(fp_fragment_shader);
    if (!fs)
       return NULL;
-   fs->tokens = tgsi_dup_tokens(templ->tokens);
+   if (templ->type == PIPE_SHADER_IR_NIR) {
+      /* st's NIR, ours to free: the compiled path keeps a copy; the rest of
+       * the driver (tgsi_exec, draw, the scans) takes the TGSI nir_to_tgsi
+       * makes of it, which frees it, the tokens st makes for a driver that
+       * prefers TGSI.  Their input registers are the NIR inputs'
+       * driver_location, which the compiled code reads them by. */
+      fs->nir = nir_shader_clone(NULL, templ->ir.nir);
+      fs->tokens = nir_to_tgsi(templ->ir.nir, pipe->screen);
+   } else {
+      fs->tokens = tgsi_dup_tokens(templ->tokens);
+   }
    if (!fs->tokens) {
+      ralloc_free(fs->nir);
       FREE(fs);
       return NULL;
    }
    tgsi_scan_shader(fs->tokens, &fs->info);
    if (!fp_fbfetch_strip(fs)) {
-      FREE((void *)fs->tokens);
-      FREE(fs);
+      fp_fs_free(fs);
       return NULL;
    }
    fp_rebase_scan(fs);
 
    struct pipe_shader_state dstate = *templ;
+   dstate.type = PIPE_SHADER_IR_TGSI;
    dstate.tokens = fs->tokens;
    fs->draw_fs = draw_create_fragment_shader(fp->draw, &dstate);
    if (!fs->draw_fs) {
-      FREE((void *)fs->tokens);
-      FREE(fs);
+      fp_fs_free(fs);
       return NULL;
    }
 
@@ -74,8 +95,7 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
    }
    if (!fp_fbfetch_prepare(fs)) {
       draw_delete_fragment_shader(fp->draw, fs->draw_fs);
-      FREE((void *)fs->tokens);
-      FREE(fs);
+      fp_fs_free(fs);
       return NULL;
    }
    return fs;
@@ -105,8 +125,7 @@ static void fp_delete_fs_state(struct pipe_context *pipe, void *cso)
    draw_delete_fragment_shader(fp->draw, fs->draw_fs);
    fp_jit_fs_destroy(fs->jit);
    fp_fbfetch_release(fs);
-   FREE((void *)fs->tokens);
-   FREE(fs);
+   fp_fs_free(fs);
 }
 
 static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)

@@ -38,17 +38,18 @@ render() {
                  "$out/$name.cached.log" | awk '{ c += $1; h += $2 } END { print c + 0, h + 0 }')
     if [ "$1" -gt 0 ] && [ "$1" = "$2" ]; then
         pass "$name: $1 shaders compiled, all from the disk cache"
-    elif [ "$1" = 0 ] && [ "$2" = 0 ] && [ "$name" = es31-gather ]; then
-        # its one fragment shader gathers (TG4), which tgsi_to_nir cannot read:
-        # interpreted by design (fp_jit_shader_ok, docs/compute.md)
-        pass "$name: no shader compiled (textureGather stays interpreted)"
-    elif [ "$1" = 0 ] && [ "$2" = 0 ] && [ "$name" = es31-builtins ]; then
-        # its one fragment shader calls ldexp() (LDEXP) and the packing built-ins,
-        # which tgsi_to_nir cannot translate: interpreted by design
-        # (fp_jit_shader_ok, docs/jit.md); the run must not abort
-        pass "$name: no shader compiled (tgsi_to_nir lacks its opcodes)"
     else
         fail "$name: the cached run compiled $1 shaders, $2 from the disk cache"
+        return 1
+    fi
+    # and under jitall no shader refused, no quad interpreted: st's NIR
+    # reaches gallivm whole (gathers, multisample fetches, every built-in)
+    set -- $(sed -n 's/.*fragment shaders: tiered, .* failed \([0-9]*\) .*interpreted \([0-9]*\);.*/\1 \2/p' \
+                 "$out/$name.jitall.log" | awk '{ f += $1; q += $2 } END { print f + 0, q + 0 }')
+    if [ "$1" = 0 ] && [ "$2" = 0 ]; then
+        pass "$name: under jitall no shader refused, no quad interpreted"
+    else
+        fail "$name: under jitall $1 shaders refused, $2 quads interpreted"
         return 1
     fi
 }
