@@ -160,6 +160,8 @@ typedef void (*tex_quad2_fn)(const struct tex_unit *u, const struct tex_quad q[2
                              enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD]);
 typedef void (*tex_quad4_fn)(const struct tex_unit *u, const struct tex_quad q[4],
                              enum tex_lod_control ctl, float rgba[4][4][TEX_QUAD]);
+typedef void (*tex_gather_fn)(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                              float rgba[4][TEX_QUAD]);
 
 struct tex_unit {
    const struct numsys *ns;
@@ -181,6 +183,9 @@ struct tex_unit {
    tex_quad2_fn quad2;
    /* four quads in one call, two pairs step by step; NULL: quad2 twice */
    tex_quad4_fn quad4;
+   /* textureGather specialised (tex_fast.c: 2-D views, dfx24 and
+    * binary32); NULL: tex_unit_gather_generic */
+   tex_gather_fn gather;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
    uint32_t bind_serial;          /* which binding: RTL vectors dump a binding once */
    /* texel reads a pixel, for the counters: the minification filter's taps
@@ -289,6 +294,10 @@ void tex_unit_sample_offset(const struct tex_unit *u, const struct tex_quad *q,
  * cube views. */
 void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
                      float rgba[4][TEX_QUAD]);
+/* The table path of it: the reference the specialised gather (u->gather)
+ * must match bit for bit. */
+void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                             float rgba[4][TEX_QUAD]);
 
 /* texelFetch: integer coordinates, level relative to the view; outside
  * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */

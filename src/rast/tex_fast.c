@@ -73,6 +73,77 @@ QUAD_FN(quad_float_1d, TEX_FK_FLOAT, 1)
 QUAD_FN(quad_float_2d, TEX_FK_FLOAT, 2)
 QUAD_FN(quad_float_3d, TEX_FK_FLOAT, 3)
 
+/* tex_gather.c's gather of a 2-D or 2-D array view, the operations
+ * inline: the same bits and range events (test_tex_fast.c). */
+TEX_FAST_INLINE void gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                            float rgba[4][TEX_QUAD], const enum tex_fk k)
+{
+   struct tex_fst x = { { 0, 0 }, { 0, 0 } };
+   const struct tex_level *lv = &u->view.level[0];
+   const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
+   /* tex_addr_mirrored is false but for the mirroring modes */
+   const bool mirror0 = u->samp.wrap[0] >= TEX_WRAP_MIRROR_REPEAT;
+   const bool mirror1 = u->samp.wrap[1] >= TEX_WRAP_MIRROR_REPEAT;
+   /* a depth view's taps give the comparison in every colour channel */
+   const unsigned sw = u->samp.compare ? 0 : u->view.swizzle[comp & 3];
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      const ns_val s = tex_fcoord(u, k, q->s[p], &x), t = tex_fcoord(u, k, q->t[p], &x);
+      const int layer = array ? layer_of(u, q->layer[p]) : 0;
+      struct tex_addr A, B;
+      addr(u, k, true, u->samp.wrap[0], &u->axis[0][0], s, &A, &x);
+      addr(u, k, true, u->samp.wrap[1], &u->axis[0][1], t, &B, &x);
+      if (mirror0 && tex_addr_mirrored(u, 0, s)) {
+         const int32_t i = A.i0;
+         A.i0 = A.i1;
+         A.i1 = i;
+      }
+      if (mirror1 && tex_addr_mirrored(u, 1, t)) {
+         const int32_t j = B.i0;
+         B.i0 = B.i1;
+         B.i1 = j;
+      }
+      /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
+      const v4f t0 = tap(u, lv, A.i0, B.i1, layer, q->ref[p]);
+      const v4f t1 = tap(u, lv, A.i1, B.i1, layer, q->ref[p]);
+      const v4f t2 = tap(u, lv, A.i1, B.i0, layer, q->ref[p]);
+      const v4f t3 = tap(u, lv, A.i0, B.i0, layer, q->ref[p]);
+      if (sw < 4) {
+         rgba[0][p] = t0[sw];
+         rgba[1][p] = t1[sw];
+         rgba[2][p] = t2[sw];
+         rgba[3][p] = t3[sw];
+      } else {
+         const float c = sw == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
+         rgba[0][p] = rgba[1][p] = rgba[2][p] = rgba[3][p] = c;
+      }
+   }
+   tex_fst_flush(&x, u->stats);
+}
+
+static void gather_dfx19(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                         float rgba[4][TEX_QUAD])
+{
+   gather(u, q, comp, rgba, TEX_FK_DFX19);
+}
+
+static void gather_float(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                         float rgba[4][TEX_QUAD])
+{
+   gather(u, q, comp, rgba, TEX_FK_FLOAT);
+}
+
+tex_gather_fn tex_fast_gather_choose(const struct tex_unit *u, bool scalar)
+{
+   if (scalar || (u->view.target != TEX_TARGET_2D && u->view.target != TEX_TARGET_2D_ARRAY &&
+                  u->view.target != TEX_TARGET_RECT))
+      return NULL;
+   if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
+      return gather_dfx19;
+   if (u->kind == TEX_NS_FLOAT)
+      return gather_float;
+   return NULL;
+}
+
 tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod,
                             tex_quad2_fn *pair, tex_quad4_fn *four)
 {

@@ -6,6 +6,8 @@
  * texels the filter would have blended, and a depth view compares each of
  * them with the reference as the filter's taps do.  A seamless cube map's
  * footprint crosses its face's edges as the filter's does (tex_cube_taps).
+ * This is the table path; 2-D views take tex_fast.c's specialised copy
+ * (u->gather) unless FIXPIPE_DEBUG=scalar.
  */
 #include "rast/tex_priv.h"
 
@@ -18,6 +20,15 @@ static inline float channel(const struct tex_unit *u, const float t[4], unsigned
 
 void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
                      float rgba[4][TEX_QUAD])
+{
+   if (u->gather)
+      u->gather(u, q, comp, rgba);
+   else
+      tex_unit_gather_generic(u, q, comp, rgba);
+}
+
+void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
+                             float rgba[4][TEX_QUAD])
 {
    const struct tex_level *lv = &u->view.level[0];
    const bool cube = u->view.target == TEX_TARGET_CUBE;

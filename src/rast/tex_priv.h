@@ -89,6 +89,7 @@ int32_t tex_lod_grads(const struct tex_unit *u, const ns_val dx[3], const ns_val
 
 /* tex_fast.c: the specialised quad of the unit's number system, or NULL;
  * the lanes' (lanes.h) where there is one, unless scalar. */
+tex_gather_fn tex_fast_gather_choose(const struct tex_unit *u, bool scalar);
 tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod,
                             tex_quad2_fn *pair, tex_quad4_fn *four);
 

@@ -5,7 +5,7 @@
  * every wrap mode, filters, mip modes, LOD controls, shadow compare,
  * swizzles, decoded and callback formats, 1 to 9 levels) and random
  * quads (smooth and scattered, coordinates from 2^-40 to 2^40, zeros,
- * subnormals, inf, NaN).  First the inline operations alone against the
+ * subnormals, inf, NaN); the same for the specialised gather.  First the inline operations alone against the
  * numsys table on random operands. */
 #include <math.h>
 #include <string.h>
@@ -547,6 +547,52 @@ static void rows_memo_runs(unsigned units, unsigned calls)
    }
 }
 
+/* The specialised gather (u->gather) against the table path: the same
+ * bits and range events on random units, every channel; chosen exactly
+ * for the 2-D views of dfx24 and binary32, and not with `scalar`. */
+static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit)
+{
+   const struct numsys *ns = numsys_by_name(name);
+   unsigned bad = 0, fast_units = 0;
+   for (unsigned i = 0; i < units; i++) {
+      struct tex_unit u;
+      struct ns_stats s_fast = { 0, 0 }, s_gen = { 0, 0 };
+      rand_unit(&u, ns, &s_fast);
+      const bool two_d = u.view.target == TEX_TARGET_2D || u.view.target == TEX_TARGET_2D_ARRAY ||
+                         u.view.target == TEX_TARGET_RECT;
+      CHECK(!!u.gather == (fast && two_d), "%s: specialised gather %s for target %d", name,
+            u.gather ? "chosen" : "missing", u.view.target);
+      tex_unit_set_datapath(&u, true, false);
+      CHECK(!u.gather, "%s: specialised gather chosen on the scalar datapath", name);
+      tex_unit_set_datapath(&u, false, false);
+      fast_units += u.gather != NULL;
+      for (unsigned j = 0; j < per_unit; j++) {
+         struct tex_quad q;
+         rand_quad(&q, &u);
+         const unsigned comp = rndn(4);
+         float r0[4][TEX_QUAD], r1[4][TEX_QUAD];
+         u.stats = &s_gen;
+         tex_unit_gather_generic(&u, &q, comp, r0);
+         u.stats = &s_fast;
+         tex_unit_gather(&u, &q, comp, r1);
+         const bool ok = !memcmp(r0, r1, sizeof(r0)) && s_gen.sat == s_fast.sat &&
+                         s_gen.flush == s_fast.flush;
+         if (!ok && bad++ < 5)
+            CHECK(ok, "%s unit %u gather %u: target %d fmt %d wrap %d/%d comp %u compare %d: "
+                  "r %a vs %a, sat %llu vs %llu, flush %llu vs %llu", name, i, j,
+                  u.view.target, u.view.format, u.samp.wrap[0], u.samp.wrap[1], comp,
+                  u.samp.compare, (double)r0[0][0], (double)r1[0][0],
+                  (unsigned long long)s_gen.sat, (unsigned long long)s_fast.sat,
+                  (unsigned long long)s_gen.flush, (unsigned long long)s_fast.flush);
+      }
+   }
+   CHECK(bad == 0, "%s: %u of %u gathers differ", name, bad, units * per_unit);
+   CHECK(!fast || fast_units > units / 4, "%s: only %u of %u units had the specialised gather",
+         name, fast_units, units);
+   printf("  %-8s %u units (%u specialised) x %u gathers: %u differ\n", name, units,
+          fast_units, per_unit, bad);
+}
+
 int main(void)
 {
    for (unsigned l = 0; l < MAXL; l++)
@@ -567,6 +613,10 @@ int main(void)
    quads_vs_generic("float", true, 3000, 200, LANES_BEST);
    quads_vs_generic("fx16.16", false, 100, 50, LANES_BEST);   /* the table path */
    quads_vs_generic("dfx23", false, 100, 50, LANES_BEST);
+   printf("specialised gather vs the table path (bits and range events):\n");
+   gathers_vs_generic("dfx24", true, 2000, 200);
+   gathers_vs_generic("float", true, 2000, 200);
+   gathers_vs_generic("dfx23", false, 100, 50);
    printf("  %llu quads on lanes, %llu of them without a LOD\n", (unsigned long long)lanes_quads,
           (unsigned long long)nolod_quads);
    CHECK(nolod_quads > 10000, "only %llu quads left the LOD out", (unsigned long long)nolod_quads);
