@@ -45,7 +45,10 @@ static const char *fp_get_name(struct pipe_screen *screen)
    return fp_screen(screen)->name;
 }
 
-/* st/mesa compiles to NIR and converts to TGSI for us, as for softpipe. */
+/* st/mesa compiles to NIR and converts to TGSI for us, as for softpipe:
+ * nir_to_tgsi's own defaults (nir_to_tgsi_compiler_options), which it
+ * needs (TGSI has no local invocation index: without its lowering every
+ * compute shader reading gl_LocalInvocationIndex read zero). */
 static const nir_shader_compiler_options fp_compiler_options = {
    .fdot_replicates = true,
    .fuse_ffma32 = true,
@@ -59,10 +62,13 @@ static const nir_shader_compiler_options fp_compiler_options = {
    .lower_fmod = true,
    .lower_rotate = true,
    .lower_uniforms_to_ubo = true,
+   .lower_uadd_sat = true,
+   .lower_usub_sat = true,
    .lower_vector_cmp = true,
    .lower_int64_options = nir_lower_imul_2x32_64,
    .max_unroll_iterations = 32,
    .use_interpolated_input_intrinsics = true,
+   .lower_cs_local_index_to_id = true,
 };
 
 static const void *fp_get_compiler_options(struct pipe_screen *screen,

@@ -6,6 +6,10 @@
  *                waits at a barrier, writes s[63 - i] + s[(i + 1) % 64] back
  *                and counts the odd results in an atomic counter; the
  *                words are then drawn as a texture through the model
+ *   shared       shared arrays of vec4, mat3 and a struct in a 13x2x4 work
+ *                group, read across the group after a barrier, shared
+ *                atomics and every SSBO atomic, against the CPU's results;
+ *                the words drawn as above
  *   image        a compute shader writes an RGBA8 image from an r32ui one
  *                (imageLoad, imageStore, imageAtomicAdd), drawn as above
  *   gather       textureGather of a 16x16 random texture (green, then
@@ -134,6 +138,147 @@ static void case_compute(int size)
    show_words(in, size);
    glDeleteBuffers(2, buf);
    free(in);
+   free(want);
+}
+
+/* Shared variables of vector, matrix and struct types in a 13x2x4 work
+ * group (widths not a multiple of tgsi_exec's four lanes), shared atomics,
+ * and every SSBO atomic; each invocation's results against the CPU's. */
+static void case_shared(int size)
+{
+   static const char *cs =
+      "#version 310 es\n"
+      "layout(local_size_x = 13, local_size_y = 2, local_size_z = 4) in;\n"
+      "struct S { vec2 a; uint b; };\n"
+      "shared vec4 sv[104];\n"
+      "shared mat3 sm[104];\n"
+      "shared S ss[104];\n"
+      "shared uint scount;\n"
+      "shared int smin;\n"
+      "layout(std430, binding = 0) buffer Out { uvec4 o[]; } outp;\n"
+      "layout(std430, binding = 1) buffer Atom { uint add, mn, mx, an, orr, xr, xch, cas; int imn, imx; } at;\n"
+      "void main() {\n"
+      "   uint i = gl_LocalInvocationIndex;\n"
+      "   uint g = gl_WorkGroupID.x;\n"
+      "   uint v = i * 2654435761u + g * 40503u;\n"
+      "   if (i == 0u) { scount = 0u; smin = 1000000; }\n"
+      "   barrier();\n"
+      "   sv[i] = vec4(float(i), float(g), float(v & 255u), float(i * g));\n"
+      "   sm[i] = mat3(float(i)) + mat3(vec3(1.0, 2.0, 3.0), vec3(float(g)), vec3(float(v & 15u)));\n"
+      "   ss[i] = S(vec2(float(i) * 0.5, float(g) + 0.25), v);\n"
+      "   atomicAdd(scount, i + 1u);\n"
+      "   atomicMin(smin, int(v & 1023u) - 500);\n"
+      "   atomicAdd(at.add, v & 255u);\n"
+      "   atomicMin(at.mn, v | 1u);\n"
+      "   atomicMax(at.mx, v);\n"
+      "   atomicAnd(at.an, v | 0x0f0f0f0fu);\n"
+      "   atomicOr(at.orr, 1u << (i % 32u));\n"
+      "   atomicXor(at.xr, v);\n"
+      "   atomicExchange(at.xch, 7u);\n"
+      "   atomicCompSwap(at.cas, g * 104u + i, g * 104u + i + 1u);\n"
+      "   atomicMin(at.imn, int(v) >> 8);\n"
+      "   atomicMax(at.imx, int(v) >> 8);\n"
+      "   barrier();\n"
+      "   uint j = 103u - i;\n"
+      "   vec4 a = sv[j];\n"
+      "   mat3 m = sm[(i + 7u) % 104u];\n"
+      "   S t = ss[(i + 13u) % 104u];\n"
+      "   outp.o[g * 104u + i] = uvec4(uint(a.x + a.y * 1000.0 + a.z * 7.0 + a.w),\n"
+      "                                uint(m[0][0] + m[1][1] * 10.0 + m[2][2] * 100.0 + m[0][1] * 1000.0),\n"
+      "                                uint(t.a.x * 4.0 + t.a.y * 4.0) ^ t.b,\n"
+      "                                scount + uint(smin + 600));\n"
+      "}\n";
+   (void)size;
+   const unsigned groups = 3, n = 104 * groups;
+   uint32_t *want = calloc(n * 4, 4);
+   if (!want)
+      fp_die("out of memory");
+   uint32_t w_add = 0, w_mn = 0xffffffffu, w_mx = 0, w_an = 0xffffffffu, w_or = 0, w_xr = 0,
+            w_cas = 0;
+   int32_t w_imn = 0x7fffffff, w_imx = -0x7fffffff - 1;
+   for (unsigned g = 0; g < groups; g++) {
+      uint32_t count = 0;
+      int32_t smin = 1000000;
+      for (unsigned i = 0; i < 104; i++) {
+         const uint32_t v = i * 2654435761u + g * 40503u;
+         count += i + 1;
+         const int32_t m = (int32_t)(v & 1023u) - 500;
+         smin = m < smin ? m : smin;
+         w_add += v & 255u;
+         w_mn = (v | 1u) < w_mn ? (v | 1u) : w_mn;
+         w_mx = v > w_mx ? v : w_mx;
+         w_an &= v | 0x0f0f0f0fu;
+         w_or |= 1u << (i % 32u);
+         w_xr ^= v;
+         if (w_cas == g * 104u + i)
+            w_cas++;
+         const int32_t s8 = (int32_t)v >> 8;
+         w_imn = s8 < w_imn ? s8 : w_imn;
+         w_imx = s8 > w_imx ? s8 : w_imx;
+      }
+      for (unsigned i = 0; i < 104; i++) {
+         const unsigned j = 103 - i, k = (i + 7) % 104, t = (i + 13) % 104;
+         const uint32_t vj = j * 2654435761u + g * 40503u;
+         const uint32_t vk = k * 2654435761u + g * 40503u;
+         const uint32_t vt = t * 2654435761u + g * 40503u;
+         uint32_t *o = want + 4 * (g * 104 + i);
+         o[0] = (uint32_t)((float)j + (float)g * 1000.0f + (float)(vj & 255u) * 7.0f +
+                           (float)(j * g));
+         /* mat3(k) + mat3(col (1,2,3), col (g,g,g), col (v&15 x3)) */
+         const float m00 = (float)k + 1.0f, m11 = (float)k + (float)g,
+                     m22 = (float)k + (float)(vk & 15u), m01 = 2.0f;
+         o[1] = (uint32_t)(m00 + m11 * 10.0f + m22 * 100.0f + m01 * 1000.0f);
+         o[2] = (uint32_t)((float)t * 0.5f * 4.0f + ((float)g + 0.25f) * 4.0f) ^ vt;
+         o[3] = count + (uint32_t)(smin + 600);
+      }
+   }
+   GLuint buf[2];
+   glGenBuffers(2, buf);
+   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
+   glBufferData(GL_SHADER_STORAGE_BUFFER, n * 16, NULL, GL_DYNAMIC_COPY);
+   const uint32_t init[10] = { 0, 0xffffffffu, 0, 0xffffffffu, 0, 0, 0, 0,
+                               0x7fffffff, 0x80000000u };
+   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[1]);
+   glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(init), init, GL_DYNAMIC_COPY);
+   glUseProgram(fp_gl_compute_program(cs));
+   glDispatchCompute(groups, 1, 1);
+   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+
+   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[0]);
+   const uint32_t *got = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, n * 16, GL_MAP_READ_BIT);
+   int wrong[4] = { 0, 0, 0, 0 };
+   for (unsigned k = 0; got && k < n * 4; k++)
+      wrong[k % 4] += got[k] != want[k];
+   printf("stat: wrong_vec4=%d wrong_mat3=%d wrong_struct=%d wrong_shared_atomics=%d\n",
+          wrong[0], wrong[1], wrong[2], wrong[3]);
+   check(got && !wrong[0], "shared vec4 reads differ from the CPU's");
+   check(got && !wrong[1], "shared mat3 reads differ from the CPU's");
+   check(got && !wrong[2], "shared struct reads differ from the CPU's");
+   check(got && !wrong[3], "shared atomics differ from the CPU's");
+   /* the words drawn as a texture, their low bytes */
+   uint32_t *px = calloc((size_t)size * size, 4);
+   if (!px)
+      fp_die("out of memory");
+   for (unsigned k = 0; got && k < n * 4 && k < (unsigned)(size * size); k++)
+      px[k] = got[k] | 0xff000000u;
+   glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+
+   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[1]);
+   const uint32_t *a = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizeof(init), GL_MAP_READ_BIT);
+   const uint32_t want_at[10] = { w_add, w_mn, w_mx, w_an, w_or, w_xr, 7u, w_cas,
+                                  (uint32_t)w_imn, (uint32_t)w_imx };
+   int bad_at = 0;
+   for (unsigned k = 0; a && k < 10; k++) {
+      if (a[k] != want_at[k])
+         printf("ssbo atomic %u: %#x, want %#x\n", k, a[k], want_at[k]);
+      bad_at += !a || a[k] != want_at[k];
+   }
+   printf("stat: wrong_ssbo_atomics=%d\n", bad_at);
+   check(a && !bad_at, "SSBO atomics differ from the CPU's");
+   glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+   show_words(px, size);
+   glDeleteBuffers(2, buf);
+   free(px);
    free(want);
 }
 
@@ -403,6 +548,8 @@ int main(int argc, char **argv)
       /* nothing more to try */
    } else if (!strcmp(c, "compute")) {
       case_compute(a.size);
+   } else if (!strcmp(c, "shared")) {
+      case_shared(a.size);
    } else if (!strcmp(c, "image")) {
       case_image(a.size);
    } else if (!strcmp(c, "gather")) {
@@ -459,7 +606,7 @@ int main(int argc, char **argv)
          check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0), "sample 1 of the edge pixel is red");
       }
    } else {
-      fp_die("--case: compute, image, gather, builtins, ms-fetch or stencil-tex");
+      fp_die("--case: compute, shared, image, gather, builtins, ms-fetch or stencil-tex");
    }
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */
