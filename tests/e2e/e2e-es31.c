@@ -19,8 +19,8 @@
  *                pixel shows texelFetch of sample (x + y) % 4
  *   stencil-tex  overlapping triangles counted in a depth/stencil texture,
  *                then sampled as GL_STENCIL_INDEX (usampler2D)
- *   builtins     a fragment shader calling GLSL ES 3.10's built-ins on each
- *                pixel's own numbers (ldexp and frexp, the packing functions,
+ *   builtins     a fragment shader and a compute shader calling GLSL ES
+ *                3.10's built-ins on each pixel's (invocation's) own numbers (ldexp and frexp, the packing functions,
  *                the bit operations, the extended arithmetic), each checked
  *                against an identity it must meet: a pixel is green where
  *                all hold, a colour per failed identity otherwise
@@ -490,6 +490,40 @@ static void case_stencil_tex(int size)
 /* GLSL ES 3.10's built-ins on per-pixel values, each checked in the shader
  * against an identity (an exact one wherever the function is exact): the
  * picture is green on any conformant driver, whatever its interpolation. */
+/* GLSL ES 3.10's built-ins, each against an identity it must meet, on the
+ * invocation's own numbers (bits, x, uv): `bad` gets a bit per broken one. */
+#define BUILTINS_BODY \
+   "   uint bad = 0u;\n" \
+   "   int e; float m = frexp(x, e);\n" \
+   "   if (ldexp(m, e) != x || abs(m) < 0.5 || abs(m) >= 1.0) bad |= 1u;\n" \
+   "   vec4 c = vec4(uv, 0.25, 1.0);\n" \
+   "   if (any(greaterThan(abs(unpackUnorm4x8(packUnorm4x8(c)) - c), vec4(0.5 / 255.0)))) bad |= 2u;\n" \
+   "   vec4 sn = c * 2.0 - 1.0;\n" \
+   "   if (any(greaterThan(abs(unpackSnorm4x8(packSnorm4x8(sn)) - sn), vec4(0.5 / 127.0)))) bad |= 2u;\n" \
+   "   if (any(greaterThan(abs(unpackUnorm2x16(packUnorm2x16(uv)) - uv), vec2(0.5 / 65535.0)))) bad |= 4u;\n" \
+   "   if (any(greaterThan(abs(unpackSnorm2x16(packSnorm2x16(sn.xy)) - sn.xy), vec2(0.5 / 32767.0)))) bad |= 4u;\n" \
+   "   if (unpackHalf2x16(packHalf2x16(vec2(0.5, -2.25))) != vec2(0.5, -2.25)) bad |= 8u;\n" \
+   "   int lsb = findLSB(bits), msb = findMSB(bits);\n" \
+   "   if (bits != 0u && ((bits >> uint(lsb) & 1u) != 1u || (bits & ((1u << uint(lsb)) - 1u)) != 0u ||\n" \
+   "                      (bits >> uint(msb)) != 1u)) bad |= 16u;\n" \
+   "   uint n = 0u; for (uint v = bits; v != 0u; v &= v - 1u) n++;\n" \
+   "   if (uint(bitCount(bits)) != n) bad |= 16u;\n" \
+   "   if (bitfieldReverse(bitfieldReverse(bits)) != bits || (bitfieldReverse(bits) >> 31) != (bits & 1u)) bad |= 32u;\n" \
+   "   if (bitfieldExtract(bits, 3, 7) != ((bits >> 3) & 127u)) bad |= 32u;\n" \
+   "   if (bitfieldExtract(bitfieldInsert(bits, 5u, 9, 3), 9, 3) != 5u) bad |= 32u;\n" \
+   "   if (bitfieldExtract(int(bits), 28, 4) != int(bits) >> 28) bad |= 32u;\n" \
+   "   uint carry, borrow;\n" \
+   "   uint sum = uaddCarry(bits, 0xffff0000u, carry);\n" \
+   "   if (sum != bits + 0xffff0000u || carry != (bits >= 0x10000u ? 1u : 0u)) bad |= 64u;\n" \
+   "   uint diff = usubBorrow(bits, 0x80000000u, borrow);\n" \
+   "   if (diff != bits - 0x80000000u || borrow != (bits < 0x80000000u ? 1u : 0u)) bad |= 64u;\n" \
+   "   uint hi, lo; umulExtended(bits, 65537u, hi, lo);\n" \
+   "   if (lo != bits * 65537u || hi != (bits >> 16) + ((bits & 0xffffu) + (bits >> 16) >> 16)) bad |= 128u;\n" \
+   "   int small = int(bits & 0xffffu) - 32768, ihi, ilo;\n" \
+   "   imulExtended(small, -3, ihi, ilo);\n" \
+   "   if (ilo != small * -3 || ihi != (ilo < 0 ? -1 : 0)) bad |= 128u;\n" \
+   "   if (intBitsToFloat(floatBitsToInt(x)) != x || uintBitsToFloat(floatBitsToUint(x)) != x) bad |= 256u;\n"
+
 static const char *fs_builtins =
    "#version 310 es\n"
    "precision highp float;\n"
@@ -497,41 +531,49 @@ static const char *fs_builtins =
    "in vec2 v_uv;\n"
    "out vec4 o_color;\n"
    "void main() {\n"
+   "   vec2 uv = v_uv;\n"
    "   uint bits = uint(gl_FragCoord.x) * 2654435761u ^ uint(gl_FragCoord.y) * 40503u;\n"
-   "   float x = (v_uv.x - 0.5) * 1000.0 + 0.375;\n"
-   "   uint bad = 0u;\n"
-   "   int e; float m = frexp(x, e);\n"
-   "   if (ldexp(m, e) != x || abs(m) < 0.5 || abs(m) >= 1.0) bad |= 1u;\n"
-   "   vec4 c = vec4(v_uv, 0.25, 1.0);\n"
-   "   if (any(greaterThan(abs(unpackUnorm4x8(packUnorm4x8(c)) - c), vec4(0.5 / 255.0)))) bad |= 2u;\n"
-   "   vec4 sn = c * 2.0 - 1.0;\n"
-   "   if (any(greaterThan(abs(unpackSnorm4x8(packSnorm4x8(sn)) - sn), vec4(0.5 / 127.0)))) bad |= 2u;\n"
-   "   if (any(greaterThan(abs(unpackUnorm2x16(packUnorm2x16(v_uv)) - v_uv), vec2(0.5 / 65535.0)))) bad |= 4u;\n"
-   "   if (any(greaterThan(abs(unpackSnorm2x16(packSnorm2x16(sn.xy)) - sn.xy), vec2(0.5 / 32767.0)))) bad |= 4u;\n"
-   "   if (unpackHalf2x16(packHalf2x16(vec2(0.5, -2.25))) != vec2(0.5, -2.25)) bad |= 8u;\n"
-   "   int lsb = findLSB(bits), msb = findMSB(bits);\n"
-   "   if (bits != 0u && ((bits >> uint(lsb) & 1u) != 1u || (bits & ((1u << uint(lsb)) - 1u)) != 0u ||\n"
-   "                      (bits >> uint(msb)) != 1u)) bad |= 16u;\n"
-   "   uint n = 0u; for (uint v = bits; v != 0u; v &= v - 1u) n++;\n"
-   "   if (uint(bitCount(bits)) != n) bad |= 16u;\n"
-   "   if (bitfieldReverse(bitfieldReverse(bits)) != bits || (bitfieldReverse(bits) >> 31) != (bits & 1u)) bad |= 32u;\n"
-   "   if (bitfieldExtract(bits, 3, 7) != ((bits >> 3) & 127u)) bad |= 32u;\n"
-   "   if (bitfieldExtract(bitfieldInsert(bits, 5u, 9, 3), 9, 3) != 5u) bad |= 32u;\n"
-   "   if (bitfieldExtract(int(bits), 28, 4) != int(bits) >> 28) bad |= 32u;\n"
-   "   uint carry, borrow;\n"
-   "   uint sum = uaddCarry(bits, 0xffff0000u, carry);\n"
-   "   if (sum != bits + 0xffff0000u || carry != (bits >= 0x10000u ? 1u : 0u)) bad |= 64u;\n"
-   "   uint diff = usubBorrow(bits, 0x80000000u, borrow);\n"
-   "   if (diff != bits - 0x80000000u || borrow != (bits < 0x80000000u ? 1u : 0u)) bad |= 64u;\n"
-   "   uint hi, lo; umulExtended(bits, 65537u, hi, lo);\n"
-   "   if (lo != bits * 65537u || hi != (bits >> 16) + ((bits & 0xffffu) + (bits >> 16) >> 16)) bad |= 128u;\n"
-   "   int small = int(bits & 0xffffu) - 32768, ihi, ilo;\n"
-   "   imulExtended(small, -3, ihi, ilo);\n"
-   "   if (ilo != small * -3 || ihi != (ilo < 0 ? -1 : 0)) bad |= 128u;\n"
-   "   if (intBitsToFloat(floatBitsToInt(x)) != x || uintBitsToFloat(floatBitsToUint(x)) != x) bad |= 256u;\n"
+   "   float x = (uv.x - 0.5) * 1000.0 + 0.375;\n"
+   BUILTINS_BODY
    "   o_color = bad == 0u ? vec4(0.0, 1.0, 0.0, 1.0)\n"
    "                       : vec4(float(bad & 15u) / 15.0, 0.0, float(bad >> 4) / 31.0, 1.0);\n"
    "}\n";
+
+/* The same in a compute shader, 64x64 invocations in 8x8 groups, `bad` to a
+ * storage buffer. */
+static const char *cs_builtins =
+   "#version 310 es\n"
+   "precision highp float;\n"
+   "precision highp int;\n"
+   "layout(local_size_x = 8, local_size_y = 8) in;\n"
+   "layout(std430, binding = 0) buffer Bad { uint v[]; } result;\n"
+   "void main() {\n"
+   "   uvec2 p = gl_GlobalInvocationID.xy;\n"
+   "   vec2 uv = (vec2(p) + 0.5) / 64.0;\n"
+   "   uint bits = p.x * 2654435761u ^ p.y * 40503u;\n"
+   "   float x = (uv.x - 0.5) * 1000.0 + 0.375;\n"
+   BUILTINS_BODY
+   "   result.v[p.y * 64u + p.x] = bad;\n"
+   "}\n";
+
+/* The compute shader's results: the invocations whose identities broke. */
+static int builtins_compute(void)
+{
+   GLuint buf;
+   glGenBuffers(1, &buf);
+   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf);
+   glBufferData(GL_SHADER_STORAGE_BUFFER, 64 * 64 * 4, NULL, GL_DYNAMIC_COPY);
+   glUseProgram(fp_gl_compute_program(cs_builtins));
+   glDispatchCompute(8, 8, 1);
+   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+   const uint32_t *got = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, 64 * 64 * 4, GL_MAP_READ_BIT);
+   int broken = got ? 0 : 64 * 64;
+   for (int k = 0; got && k < 64 * 64; k++)
+      broken += got[k] != 0;
+   glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+   glDeleteBuffers(1, &buf);
+   return broken;
+}
 
 int main(int argc, char **argv)
 {
@@ -564,6 +606,9 @@ int main(int argc, char **argv)
       glReadPixels(a.size / 2, a.size / 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
       printf("stat: pixel=%u,%u,%u\n", px[0], px[1], px[2]);
       check(px[0] == 0 && px[1] == 255 && px[2] == 0, "a built-in broke its identity");
+      const int broken = builtins_compute();
+      printf("stat: compute_broken=%d\n", broken);
+      check(broken == 0, "a built-in broke its identity in the compute shader");
    } else if (!strcmp(c, "ms-fetch") || !strcmp(c, "stencil-tex")) {
       const bool ms = !strcmp(c, "ms-fetch");
       static const char *fs_ms =
