@@ -32,7 +32,7 @@ static const struct debug_named_value fp_debug_flags[] = {
    { "jitall", FP_DEBUG_JITALL,
      "compile every shader at its first draw instead of once it is hot" },
    { "scalar", FP_DEBUG_SCALAR,
-     "the model's scalar reference datapath instead of its lanes (same bits)" },
+     "the model's scalar reference datapath instead of its lanes, gathers on the texture unit's table path (same bits)" },
    { "noskip", FP_DEBUG_NOSKIP,
      "compute everything the model's skips leave out (same bits)" },
    { "nothreads", FP_DEBUG_NOTHREADS,
