@@ -15,6 +15,8 @@
  *   gather       textureGather of a 16x16 random texture (green, then
  *                alpha with a texel offset, then a depth texture with a
  *                comparison), a band each, through the modeled unit
+ *   gather-cube  textureGather on an 8x8 cube map across the corner of
+ *                three faces, a view with a swizzle, green then alpha
  *   ms-fetch     random flat triangles into a 4-sample texture, then each
  *                pixel shows texelFetch of sample (x + y) % 4
  *   stencil-tex  overlapping triangles counted in a depth/stencil texture,
@@ -418,6 +420,53 @@ static void random_triangle(uint32_t *rng, int size, float pos[12])
 }
 
 /* Leaves the texture bound to unit 0 for the pass that reads it. */
+/* textureGather on a cube map, its footprints crossing the faces' edges
+ * (seamless, as ES 3.0 filters), on a view with a swizzle; the left half
+ * gathers green, the right half alpha, which the swizzle takes from red. */
+static void case_gather_cube(int size)
+{
+   static const char *fs =
+      "#version 310 es\n"
+      "precision highp float;\n"
+      "uniform highp samplerCube u_cube;\n"
+      "uniform int u_comp;\n"
+      "in vec2 v_uv;\n"
+      "out vec4 o_color;\n"
+      "void main() {\n"
+      "   /* directions sweeping across the +x face's corner with +y and +z */\n"
+      "   vec3 d = vec3(1.0, v_uv.y * 2.2 - 0.1, v_uv.x * 2.2 - 0.1);\n"
+      "   o_color = u_comp == 1 ? textureGather(u_cube, d, 1) : textureGather(u_cube, d, 3);\n"
+      "}\n";
+   enum { W = 8 };
+   uint32_t texels[6][W * W];
+   uint32_t rng = 0xc0be3101u;
+   for (int f = 0; f < 6; f++)
+      for (int k = 0; k < W * W; k++)
+         texels[f][k] = e2e_rand(&rng);
+   GLuint tex;
+   glGenTextures(1, &tex);
+   glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+   for (int f = 0; f < 6; f++)
+      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_RGBA8, W, W, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, texels[f]);
+   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+   /* (r, g, b, a) of the view = (b, g, a, r) of the texels */
+   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_SWIZZLE_R, GL_BLUE);
+   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_SWIZZLE_B, GL_ALPHA);
+   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_SWIZZLE_A, GL_RED);
+   GLuint p = program(fs);
+   glUseProgram(p);
+   glUniform1i(glGetUniformLocation(p, "u_cube"), 0);
+   GLint comp = glGetUniformLocation(p, "u_comp");
+   const int half = size / 2;
+   glUniform1i(comp, 1);
+   draw_rect(-1, -1, e2e_ndc(half * E2E_SUB, size), 1, 0.0f, 0.0f, 0.5f, 1.0f);
+   glUniform1i(comp, 3);
+   draw_rect(e2e_ndc(half * E2E_SUB, size), -1, 1, 1, 0.5f, 0.0f, 1.0f, 1.0f);
+   glDeleteTextures(1, &tex);
+}
+
 static void case_ms_fetch(int size)
 {
    GLuint tex, fbo;
@@ -596,6 +645,8 @@ int main(int argc, char **argv)
       case_image(a.size);
    } else if (!strcmp(c, "gather")) {
       case_gather(a.size);
+   } else if (!strcmp(c, "gather-cube")) {
+      case_gather_cube(a.size);
    } else if (!strcmp(c, "builtins")) {
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
@@ -651,7 +702,7 @@ int main(int argc, char **argv)
          check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0), "sample 1 of the edge pixel is red");
       }
    } else {
-      fp_die("--case: compute, shared, image, gather, builtins, ms-fetch or stencil-tex");
+      fp_die("--case: compute, shared, image, gather, gather-cube, builtins, ms-fetch or stencil-tex");
    }
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */
