@@ -158,7 +158,7 @@ static void case_shared(int size)
       "shared uint scount;\n"
       "shared int smin;\n"
       "layout(std430, binding = 0) buffer Out { uvec4 o[]; } outp;\n"
-      "layout(std430, binding = 1) buffer Atom { uint add, mn, mx, an, orr, xr, xch, cas; int imn, imx; } at;\n"
+      "layout(std430, binding = 1) buffer Atom { uint add, mn, mx, an, orr, xr, xch, pad; int imn, imx; uint cas[]; } at;\n"
       "void main() {\n"
       "   uint i = gl_LocalInvocationIndex;\n"
       "   uint g = gl_WorkGroupID.x;\n"
@@ -177,7 +177,9 @@ static void case_shared(int size)
       "   atomicOr(at.orr, 1u << (i % 32u));\n"
       "   atomicXor(at.xr, v);\n"
       "   atomicExchange(at.xch, 7u);\n"
-      "   atomicCompSwap(at.cas, g * 104u + i, g * 104u + i + 1u);\n"
+      "   /* each its own word: one swap that matches, one that does not */\n"
+      "   atomicCompSwap(at.cas[g * 104u + i], g * 104u + i, g * 104u + i + 1000u);\n"
+      "   atomicCompSwap(at.cas[g * 104u + i], 7777u, 1u);\n"
       "   atomicMin(at.imn, int(v) >> 8);\n"
       "   atomicMax(at.imx, int(v) >> 8);\n"
       "   barrier();\n"
@@ -195,8 +197,7 @@ static void case_shared(int size)
    uint32_t *want = calloc(n * 4, 4);
    if (!want)
       fp_die("out of memory");
-   uint32_t w_add = 0, w_mn = 0xffffffffu, w_mx = 0, w_an = 0xffffffffu, w_or = 0, w_xr = 0,
-            w_cas = 0;
+   uint32_t w_add = 0, w_mn = 0xffffffffu, w_mx = 0, w_an = 0xffffffffu, w_or = 0, w_xr = 0;
    int32_t w_imn = 0x7fffffff, w_imx = -0x7fffffff - 1;
    for (unsigned g = 0; g < groups; g++) {
       uint32_t count = 0;
@@ -212,8 +213,6 @@ static void case_shared(int size)
          w_an &= v | 0x0f0f0f0fu;
          w_or |= 1u << (i % 32u);
          w_xr ^= v;
-         if (w_cas == g * 104u + i)
-            w_cas++;
          const int32_t s8 = (int32_t)v >> 8;
          w_imn = s8 < w_imn ? s8 : w_imn;
          w_imx = s8 > w_imx ? s8 : w_imx;
@@ -238,8 +237,11 @@ static void case_shared(int size)
    glGenBuffers(2, buf);
    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[0]);
    glBufferData(GL_SHADER_STORAGE_BUFFER, n * 16, NULL, GL_DYNAMIC_COPY);
-   const uint32_t init[10] = { 0, 0xffffffffu, 0, 0xffffffffu, 0, 0, 0, 0,
-                               0x7fffffff, 0x80000000u };
+   /* the ten words, then one per invocation for the swaps, holding its index */
+   uint32_t init[10 + 104 * 3] = { 0, 0xffffffffu, 0, 0xffffffffu, 0, 0, 0, 0,
+                                   0x7fffffff, 0x80000000u };
+   for (unsigned k = 0; k < n; k++)
+      init[10 + k] = k;
    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buf[1]);
    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(init), init, GL_DYNAMIC_COPY);
    glUseProgram(fp_gl_compute_program(cs));
@@ -267,14 +269,16 @@ static void case_shared(int size)
 
    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[1]);
    const uint32_t *a = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizeof(init), GL_MAP_READ_BIT);
-   const uint32_t want_at[10] = { w_add, w_mn, w_mx, w_an, w_or, w_xr, 7u, w_cas,
+   const uint32_t want_at[10] = { w_add, w_mn, w_mx, w_an, w_or, w_xr, 7u, 0,
                                   (uint32_t)w_imn, (uint32_t)w_imx };
    int bad_at = 0;
-   for (unsigned k = 0; a && k < 10; k++) {
-      if (a[k] != want_at[k])
-         printf("ssbo atomic %u: %#x, want %#x\n", k, a[k], want_at[k]);
-      bad_at += !a || a[k] != want_at[k];
+   for (unsigned k = 0; a && k < 10 + n; k++) {
+      const uint32_t want_k = k < 10 ? want_at[k] : k - 10 + 1000u;
+      if (a[k] != want_k && bad_at < 5)
+         printf("ssbo atomic word %u: %#x, want %#x\n", k, a[k], want_k);
+      bad_at += a[k] != want_k;
    }
+   bad_at += !a;
    printf("stat: wrong_ssbo_atomics=%d\n", bad_at);
    check(a && !bad_at, "SSBO atomics differ from the CPU's");
    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
