@@ -239,8 +239,8 @@ TEX_FAST_INLINE int32_t lod_diffs(const struct tex_unit *u, const enum tex_fk k,
    const int nk = tex_fk_ns(k);
    ns_val rho = u->k_zero;
    for (unsigned a = 0; a < dims; a++) {
-      const ns_val dx = tex_fsub(k, c[1][a], c[0][a], x);
-      const ns_val dy = tex_fsub(k, c[2][a], c[0][a], x);
+      const ns_val dx = tex_fsub(k, c[3][a], c[2][a], x);
+      const ns_val dy = tex_fsub(k, c[0][a], c[2][a], x);
       rho = tex_ns_max(nk, rho, tex_ns_abs(nk, tex_fmul(k, dx, u->axis[0][a].scale, x)));
       rho = tex_ns_max(nk, rho, tex_ns_abs(nk, tex_fmul(k, dy, u->axis[0][a].scale, x)));
    }

@@ -504,8 +504,8 @@ level2(const struct tex_unit *u, const struct quad_kind k, const bool linear, un
 static inline __attribute__((always_inline)) int32_t
 lod2(const struct tex_unit *u, struct dfxl cs, struct dfxl ct, struct dfxl_stats *st)
 {
-   const struct dfxl d1 = { { cs.v[1], cs.v[2], ct.v[1], ct.v[2] } };
-   const struct dfxl d0 = { { cs.v[0], cs.v[0], ct.v[0], ct.v[0] } };
+   const struct dfxl d1 = { { cs.v[3], cs.v[0], ct.v[3], ct.v[0] } };
+   const struct dfxl d0 = { { cs.v[2], cs.v[2], ct.v[2], ct.v[2] } };
    const double ss = u->laxis[0][0][0], st_ = u->laxis[0][1][0];
    const struct dfxl sc = { { ss, ss, st_, st_ } };
    const dfxl_d m = dfxl_abs(dfxl_mul(dfxl_sub(d1, d0, st), sc, st).v);

@@ -48,12 +48,20 @@ static inline ns_val scaled_abs(const struct tex_unit *u, ns_val d, ns_val scale
    return tex_ns_abs(u->kind, u->ns->mul(u->ns, d, scale, u->stats));
 }
 
+/* The quad's differences on the pixels of the shader's coarse derivatives
+ * (tgsi_exec's, softpipe's): x from pixel 2 to 3 (the quad's lower scan
+ * line), y from pixel 2 to 0 (its left column), as the cube LOD takes
+ * them; so textureGrad(c, dFdx(c), dFdy(c)) is texture(c)'s LOD.  Taken
+ * from pixel 0's neighbours instead (the upper scan line), a projected
+ * quad whose LOD grew fast towards its upper right gave its lower-left
+ * pixel a level coarser than the LOD of any of that pixel's neighbours
+ * allows (dEQP-GLES2 texture.mipmap.2d.projected.*, 3 pixels a case). */
 int32_t tex_lod_diffs(const struct tex_unit *u, ns_val c[TEX_QUAD][3], unsigned dims)
 {
    ns_val rho = u->k_zero;
    for (unsigned a = 0; a < dims; a++) {
-      ns_val dx = u->ns->sub(u->ns, c[1][a], c[0][a], u->stats);
-      ns_val dy = u->ns->sub(u->ns, c[2][a], c[0][a], u->stats);
+      ns_val dx = u->ns->sub(u->ns, c[3][a], c[2][a], u->stats);
+      ns_val dy = u->ns->sub(u->ns, c[0][a], c[2][a], u->stats);
       rho = tex_ns_max(u->kind, rho, scaled_abs(u, dx, u->axis[0][a].scale));
       rho = tex_ns_max(u->kind, rho, scaled_abs(u, dy, u->axis[0][a].scale));
    }

@@ -307,21 +307,22 @@ static void lod_quad(struct tex_quad *q, double s0, double t0, const double d[4]
 }
 
 /* The unit's LOD of quad q against log2 of the largest scaled difference
- * of the held coordinates, within 0.02, and GL's nearest level where the
- * LOD is not within 0.02 of a choice (counted in *levels); returns the
- * error. */
+ * of the held coordinates on the pixels of the shader's coarse
+ * derivatives (x from pixel 2 to 3, y from 2 to 0: tgsi_exec's dFdx and
+ * dFdy), within 0.02, and GL's nearest level where the LOD is not within
+ * 0.02 of a choice (counted in *levels); returns the error. */
 static double lod_check(const struct tex_unit *u, const struct numsys *ns,
                         const struct tex_quad *q, unsigned *levels)
 {
-   double h[3][2];
-   for (unsigned p = 0; p < 3; p++) {
+   double h[4][2];
+   for (unsigned p = 0; p < 4; p++) {
       h[p][0] = ns->to_float(ns, tex_ns_coord(ns, u->kind, q->s[p], &st));
       h[p][1] = ns->to_float(ns, tex_ns_coord(ns, u->kind, q->t[p], &st));
    }
    double rho = 0;
    for (unsigned a = 0; a < 2; a++) {
-      rho = fmax(rho, fabs(h[1][a] - h[0][a]) * 256);
-      rho = fmax(rho, fabs(h[2][a] - h[0][a]) * 256);
+      rho = fmax(rho, fabs(h[3][a] - h[2][a]) * 256);
+      rho = fmax(rho, fabs(h[0][a] - h[2][a]) * 256);
    }
    double ref = log2(rho);
    int32_t lod = tex_lod_quad(u, q);
@@ -356,6 +357,13 @@ static void lod_select(void)
       for (unsigned i = 0; i < 4; i++)
          d[i] = ldexp((t_rand() < 0.5 ? -1 : 1) * (0.5 + t_rand()), (int)(t_rand() * 16) - 14);
       lod_quad(&q, s0, t0, d);
+      if (k & 1) {
+         /* not a parallelogram, as a projection makes quads: pixel 3
+          * away from where 0, 1 and 2 put it (the LOD is then not the
+          * same from every pixel's neighbours) */
+         q.s[3] += (float)(d[0] * (t_rand() - 0.5));
+         q.t[3] += (float)(d[3] * (t_rand() - 0.5));
+      }
       worst = fmax(worst, lod_check(&u, ns, &q, &lvl_checked));
    }
    CHECK(lvl_checked > 10000, "levels checked %u", lvl_checked);
