@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the piglit test lists (gles2, gles3, raster, texture, xfb, smoke) from piglit's profiles.
+"""Writes the piglit test lists (gles2, gles3, gles31, raster, texture, xfb, smoke) from piglit's profiles.
 
 usage: make-lists.py [--piglit DIR] [--out DIR] [--check]
 
@@ -310,6 +310,13 @@ def write(path, header, names, check):
     return 0
 
 
+def es31(t):
+    """A GL ES 3.x test that needs GL ES 3.1 (GLSL ES 3.10): the parser tests of that version,
+    the programs asking for an ES 3.1 context, the glsl-es-3.10 group; a subset of gles3."""
+    return es_version(t) == 3 and (parser_version(t) == 3.1 or t.api_version == 3.1
+                                   or t.group == "spec@glsl-es-3.10")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--piglit", default=PIGLIT)
@@ -328,6 +335,9 @@ def main():
                   "# Every piglit test that runs on a GL ES 2.0 context.\n"),
         "gles3": ([t.name for t in tests if es_version(t) == 3],
                   "# Every piglit test that runs on a GL ES 3.x context.\n"),
+        "gles31": ([t.name for t in tests if es31(t)],
+                   "# The GL ES 3.x tests that need GL ES 3.1 (GLSL ES 3.10): compute shaders,\n"
+                   "# storage buffers, images, atomics, gather; a subset of gles3.\n"),
         "raster": ([t.name for t in tests if in_raster(t)],
                    "# Desktop GL tests about rasterization, depth, stencil, blending, scissor,\n"
                    "# points, lines, clipping and viewport (see docs/piglit.md).\n"),
