@@ -105,10 +105,11 @@ static const void *fp_jit_compiler_options(struct pipe_screen *screen, enum pipe
    return &fp_jit_nir_options;
 }
 
-/* llvmpipe_finalize_nir, after tgsi_to_nir's own clean-up */
-static char *fp_jit_finalize_nir(struct pipe_screen *screen, void *shader)
+/* NIR's clean-up loop before llvmpipe's finalisation (lp_build_opt_nir);
+ * with `lower`, nir_opt_algebraic in the loop lowers what the shader's
+ * options ask to be lowered. */
+static void fp_jit_opt_nir(nir_shader *nir, bool lower)
 {
-   nir_shader *nir = shader;
    bool progress;
    do {
       progress = false;
@@ -116,8 +117,18 @@ static char *fp_jit_finalize_nir(struct pipe_screen *screen, void *shader)
       NIR_PASS(progress, nir, nir_opt_dce);
       NIR_PASS(progress, nir, nir_opt_cse);
       NIR_PASS(progress, nir, nir_opt_dead_cf);
+      if (lower) {
+         NIR_PASS(progress, nir, nir_opt_constant_folding);
+         NIR_PASS(progress, nir, nir_opt_algebraic);
+      }
    } while (progress);
    lp_build_opt_nir(nir);
+}
+
+/* llvmpipe_finalize_nir, after tgsi_to_nir's own clean-up */
+static char *fp_jit_finalize_nir(struct pipe_screen *screen, void *shader)
+{
+   fp_jit_opt_nir(shader, false);
    return NULL;
 }
 
@@ -129,17 +140,7 @@ static void fp_jit_prepare_nir(nir_shader *nir)
 {
    nir->options = &fp_jit_nir_options;
    NIR_PASS_V(nir, nir_lower_int64);
-   bool progress;
-   do {
-      progress = false;
-      NIR_PASS(progress, nir, nir_copy_prop);
-      NIR_PASS(progress, nir, nir_opt_dce);
-      NIR_PASS(progress, nir, nir_opt_cse);
-      NIR_PASS(progress, nir, nir_opt_dead_cf);
-      NIR_PASS(progress, nir, nir_opt_constant_folding);
-      NIR_PASS(progress, nir, nir_opt_algebraic);
-   } while (progress);
-   lp_build_opt_nir(nir);
+   fp_jit_opt_nir(nir, true);
 }
 
 /* The output slots gallivm gives a NIR shader's colours and depth: the
