@@ -104,11 +104,12 @@ void fp_context_frame_presented(struct fp_context *fp)
            " skip_w %" PRIu64 " comp_quads %" PRIu64 " skip_comp %" PRIu64 " lod_quads %" PRIu64
            " skip_lod %" PRIu64 " tex_quads %" PRIu64 " skip_axes %" PRIu64
            " skip_fragcoord %" PRIu64 " skip_z %" PRIu64 " skip_early %" PRIu64
-           " skip_shade %" PRIu64 " skip_terms %" PRIu64 "\n", fp->frames,
+           " skip_shade %" PRIu64 " skip_terms %" PRIu64 " skip_footprint %" PRIu64 "\n",
+           fp->frames,
            st->quads, st->persp_quads, st->skip_persp_w, st->persp_comp_quads,
            st->skip_persp_comp, st->tex_lod_quads, st->skip_tex_lod, st->tex_quads,
            st->skip_tex_axes, st->skip_fragcoord, st->skip_z, st->skip_early_quads,
-           st->skip_shade_quads, st->skip_persp_terms);
+           st->skip_shade_quads, st->skip_persp_terms, st->skip_tex_footprint);
 }
 
 /* The cycle model's estimate of the work so far (docs/cycles.md): the line
@@ -170,11 +171,12 @@ static void fp_print_stats(const struct fp_context *fp)
            ", quads rejected whole before shading %" PRIu64
            ", quads not shaded (no visible effect) %" PRIu64
            ", plane terms with a zero difference (per quad) %" PRIu64
-           ", quads divided per column and scan line %" PRIu64 "\n",
+           ", quads divided per column and scan line %" PRIu64
+           ", gather quads whose footprint was addressed before %" PRIu64 "\n",
            fp_env_debug() & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
            st->skip_persp_w, st->skip_persp_comp, st->skip_tex_lod, st->skip_tex_axes,
            st->skip_fragcoord, st->skip_z, st->skip_early_quads, st->skip_shade_quads,
-           st->skip_persp_terms, st->skip_persp_axes);
+           st->skip_persp_terms, st->skip_persp_axes, st->skip_tex_footprint);
    fprintf(stderr, "  datapath work: quads divided %" PRIu64 ", component-quads %" PRIu64
            ", texture quads with a LOD from differences %" PRIu64 ", texture quads %" PRIu64
            ", quads %" PRIu64 "\n", st->persp_quads, st->persp_comp_quads, st->tex_lod_quads,

@@ -77,6 +77,7 @@ static const struct fp_driver_query queries[] = {
    FIELD("fp-skip-axes-planes", FP_GROUP_SKIPS, skip_persp_axes),
    FIELD("fp-skip-texture-lod", FP_GROUP_SKIPS, skip_tex_lod),
    FIELD("fp-skip-texture-axes", FP_GROUP_SKIPS, skip_tex_axes),
+   FIELD("fp-skip-gather-footprints", FP_GROUP_SKIPS, skip_tex_footprint),
    FIELD("fp-skip-fragcoord", FP_GROUP_SKIPS, skip_fragcoord),
    FIELD("fp-skip-z", FP_GROUP_SKIPS, skip_z),
    FIELD("fp-skip-early-quads", FP_GROUP_SKIPS, skip_early_quads),

@@ -35,6 +35,8 @@ struct fp_tex_key {
    struct pipe_sampler_state ss;
 };
 
+#define FP_FOOTPRINTS 4
+
 struct fp_tex_slot {
    bool valid;
    /* the same view and sampler objects, bound in the same epoch, over the
@@ -50,6 +52,17 @@ struct fp_tex_slot {
    const void *sampler, *data;
    struct fp_tex_key key;
    struct tex_unit unit;
+   /* The last gathers' footprints and the coordinates they were addressed
+    * from: a gather of the same coordinates (the other channels of one
+    * footprint, as a shader gathering colour asks for red, green and blue
+    * in turn) reads its texels without addressing them again.  As many as
+    * the quads compiled code hands over an instruction at a time (it
+    * gathers each channel for all of them in turn), replaced in turn.
+    * Valid for the unit they were addressed by; never under
+    * FIXPIPE_DEBUG=noskip. */
+   unsigned footprints, footprint_next;
+   float footprint_key[FP_FOOTPRINTS][3][TGSI_QUAD_SIZE];
+   struct tex_footprint footprint[FP_FOOTPRINTS];
 };
 
 struct fp_tgsi_sampler {
@@ -63,6 +76,7 @@ struct fp_tgsi_sampler {
    uint64_t lod_quads;            /* quads with an implicit or biased LOD */
    uint64_t quads;                /* every quad sampled */
    uint64_t skip_axes;            /* quads addressed per axis (tex_unit.axes_shared) */
+   uint64_t skip_footprint;       /* gather quads that read the slot's footprint */
    uint64_t texels;               /* texel reads of the filters (tex_unit.taps) */
    /* made at the unit's first binding: about 6 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
@@ -306,6 +320,7 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    fp_view_desc(fv, &vd);
    fp_sampler_desc(fv, ss, &sd);
    tex_unit_bind(&slot->unit, ts->ns, &vd, &sd, &ts->stats);
+   slot->footprints = 0;
    tex_unit_set_datapath(&slot->unit, fp_env_debug() & FP_DEBUG_SCALAR,
                          fp_env_debug() & FP_DEBUG_NOSKIP);
    slot->unit.axes_shared = &ts->skip_axes;
@@ -329,9 +344,9 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts, struct rast_context *rc)
 {
    tex_stats_to_rast(rc, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads,
-                     ts->skip_axes, ts->quads, ts->texels);
+                     ts->skip_axes, ts->skip_footprint, ts->quads, ts->texels);
    ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
-   ts->skip_axes = ts->quads = ts->texels = 0;
+   ts->skip_axes = ts->skip_footprint = ts->quads = ts->texels = 0;
 }
 
 /* Range events at once (rare); the LOD counts, one per sample, in batches:
@@ -364,6 +379,62 @@ static const struct tex_unit *fp_unit_of(struct fp_tgsi_sampler *ts, unsigned sv
       return NULL;
    *view = fv;
    return fp_tex_bind(ts, sview_index, sampler_index, fv, ss);
+}
+
+/* A gather through the unit: its address stage, unless one of the slot's
+ * last footprints was addressed from the same coordinates, then the texel
+ * reads of the channel. */
+static void fp_gather(struct fp_tgsi_sampler *ts, unsigned sview_index, const struct tex_unit *u,
+                      const struct tex_quad *q, unsigned comp, float rgba[4][TGSI_QUAD_SIZE])
+{
+   struct fp_tex_slot *slot = ts->slot[sview_index];
+   if (ts->rebind || !u->footprint || u != &slot->unit) {
+      tex_unit_gather(u, q, comp, rgba);
+      return;
+   }
+   float key[3][TGSI_QUAD_SIZE];
+   memcpy(key[0], q->s, sizeof(key[0]));
+   memcpy(key[1], q->t, sizeof(key[1]));
+   memcpy(key[2], q->layer, sizeof(key[2]));
+   for (unsigned i = 0; i < slot->footprints; i++) {
+      if (!memcmp(key, slot->footprint_key[i], sizeof(key))) {
+         ts->skip_footprint++;
+         tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
+         return;
+      }
+   }
+   const unsigned i = slot->footprint_next;
+   slot->footprint_next = (i + 1) % FP_FOOTPRINTS;
+   if (slot->footprints < FP_FOOTPRINTS)
+      slot->footprints++;
+   tex_unit_gather_footprint(u, q, &slot->footprint[i]);
+   memcpy(slot->footprint_key[i], key, sizeof(key));
+   tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
+}
+
+/* A gather of a quad whose operands are in place (fp_tgsi_get_samples, or
+ * laid out by compiled code), and its counts. */
+static void fp_gather_quad(struct fp_tgsi_sampler *ts, unsigned sview_index,
+                           const struct tex_unit *u, struct tex_quad *q, const int8_t offset[3],
+                           unsigned comp, float rgba[4][TGSI_QUAD_SIZE])
+{
+   if (offset && (offset[0] | offset[1] | offset[2])) {
+      /* a gather reads the base level: its offsets as coordinate offsets there */
+      float *co[3] = { q->s, q->t, q->r };
+      for (unsigned a = 0; a < u->dims; a++) {
+         float k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].w : offset[a];
+         if (a == 1)
+            k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].h : offset[a];
+         if (a == 2)
+            k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].d : offset[a];
+         for (unsigned p = 0; p < TGSI_QUAD_SIZE; p++)
+            co[a][p] += k;
+      }
+   }
+   ts->quads++;
+   ts->texels += 4 * 4;
+   fp_gather(ts, sview_index, u, q, comp, rgba);
+   fp_tex_stats(ts);
 }
 
 /* `n` quads through the unit (one, or up to four in one call), and their counts. */
@@ -446,26 +517,10 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
       fp_tex_stats(ts);
       return;
    }
-   if (offsets) {
-      /* a gather reads the base level: its offsets as coordinate offsets there */
-      float *co[3] = { q.s, q.t, q.r };
-      for (unsigned a = 0; a < u->dims; a++) {
-         float k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].w : offset[a];
-         if (a == 1)
-            k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].h : offset[a];
-         if (a == 2)
-            k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].d : offset[a];
-         for (unsigned p = 0; p < TGSI_QUAD_SIZE; p++)
-            co[a][p] += k;
-      }
-   }
    if (control == TGSI_SAMPLER_GATHER) {
       /* tgsi_exec passes the component in the LOD operand's bits */
       union { float f; uint32_t u; } comp = { c1[0] };
-      ts->quads++;
-      ts->texels += 4 * 4;
-      tex_unit_gather(u, &q, comp.u & 3, rgba);
-      fp_tex_stats(ts);
+      fp_gather_quad(ts, sview_index, u, &q, offset, comp.u & 3, rgba);
       return;
    }
    fp_unit_sample(ts, u, &q, 1, control, (float(*)[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])rgba);

@@ -388,6 +388,10 @@ struct rast_stats {
     * of a pair, where the coordinate follows the screen's axis (tex_lanes.c):
     * a share of twice tex_quads */
    uint64_t skip_tex_axes;
+   /* gather quads whose footprint an earlier gather of the same
+    * coordinates had addressed (the driver's memo): their texels read,
+    * their addressing not done again; a share of tex_quads */
+   uint64_t skip_tex_footprint;
    /* quads given to a shader that does not read gl_FragCoord, without its
     * z and w (the Z register as a float, the 1/w walk): a share of quads */
    uint64_t skip_fragcoord;

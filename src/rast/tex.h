@@ -160,8 +160,18 @@ typedef void (*tex_quad2_fn)(const struct tex_unit *u, const struct tex_quad q[2
                              enum tex_lod_control ctl, float rgba[2][4][TEX_QUAD]);
 typedef void (*tex_quad4_fn)(const struct tex_unit *u, const struct tex_quad q[4],
                              enum tex_lod_control ctl, float rgba[4][4][TEX_QUAD]);
-typedef void (*tex_gather_fn)(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
-                              float rgba[4][TEX_QUAD]);
+/* A gather's footprint, what the address unit hands the texel reads: per
+ * pixel the two columns and two rows of the base level's bilinear
+ * footprint (-1: the border) after a mirroring wrap's exchange, so that
+ * GL's four texels are (x[0], y[1]), (x[1], y[1]), (x[1], y[0]),
+ * (x[0], y[0]); the layer; and the range events the addressing raised,
+ * counted by every gather that reads the footprint. */
+struct tex_footprint {
+   int32_t x[2][TEX_QUAD], y[2][TEX_QUAD], layer[TEX_QUAD];
+   struct ns_stats events;
+};
+typedef void (*tex_footprint_fn)(const struct tex_unit *u, const struct tex_quad *q,
+                                 struct tex_footprint *f);
 
 struct tex_unit {
    const struct numsys *ns;
@@ -183,9 +193,10 @@ struct tex_unit {
    tex_quad2_fn quad2;
    /* four quads in one call, two pairs step by step; NULL: quad2 twice */
    tex_quad4_fn quad4;
-   /* textureGather specialised (tex_fast.c: 2-D views, dfx24 and
-    * binary32); NULL: tex_unit_gather_generic */
-   tex_gather_fn gather;
+   /* textureGather's address stage specialised (tex_fast.c: 2-D views,
+    * dfx24 and binary32), the texel reads then tex_unit_gather_read;
+    * NULL: tex_unit_gather_generic */
+   tex_footprint_fn footprint;
    bool lod_skipped;              /* quad leaves out the LOD (tex_unit_lod_unused) */
    uint32_t bind_serial;          /* which binding: RTL vectors dump a binding once */
    /* texel reads a pixel, for the counters: the minification filter's taps
@@ -294,10 +305,19 @@ void tex_unit_sample_offset(const struct tex_unit *u, const struct tex_quad *q,
  * cube views. */
 void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
                      float rgba[4][TEX_QUAD]);
-/* The table path of it: the reference the specialised gather (u->gather)
- * must match bit for bit. */
+/* The table path of it: the reference the specialised gather
+ * (u->footprint, then tex_unit_gather_read) must match bit for bit. */
 void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
                              float rgba[4][TEX_QUAD]);
+/* The two stages of a specialised gather, for a caller that gathers
+ * several channels of one footprint (the driver's memo, docs/datapath.md):
+ * the address stage, false where the unit has none (cube maps, the table
+ * path: tex_unit_gather then), and the texel reads of channel `comp`,
+ * which count the footprint's range events as tex_unit_gather does. */
+bool tex_unit_gather_footprint(const struct tex_unit *u, const struct tex_quad *q,
+                               struct tex_footprint *f);
+void tex_unit_gather_read(const struct tex_unit *u, const struct tex_footprint *f,
+                          const float ref[TEX_QUAD], unsigned comp, float rgba[4][TEX_QUAD]);
 
 /* texelFetch: integer coordinates, level relative to the view; outside
  * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */
@@ -313,10 +333,12 @@ unsigned tex_format_bytes(enum tex_format f);
  * tex_sat / tex_flush, printed by FIXPIPE_STATS), and its quads without a
  * LOD among those with an implicit or biased one (skip_tex_lod,
  * tex_lod_quads), and its quad-axes addressed once per column or row among
- * the two axes of all quads it sampled (skip_tex_axes, tex_quads). */
+ * the two axes of all quads it sampled (skip_tex_axes, tex_quads), and its
+ * gather quads that read a footprint addressed before (skip_tex_footprint). */
 struct rast_context;
 void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
-                       uint64_t lod_quads, uint64_t skip_axes, uint64_t quads, uint64_t texels);
+                       uint64_t lod_quads, uint64_t skip_axes, uint64_t skip_footprint,
+                       uint64_t quads, uint64_t texels);
 
 /* Pieces of the data path, for tests. */
 int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */

@@ -199,5 +199,5 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
 void tex_unit_set_datapath(struct tex_unit *u, bool scalar, bool noskip)
 {
    u->quad = tex_fast_choose(u, scalar, noskip, &u->lod_skipped, &u->quad2, &u->quad4);
-   u->gather = tex_fast_gather_choose(u, scalar);
+   u->footprint = tex_fast_footprint_choose(u, scalar);
 }

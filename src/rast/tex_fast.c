@@ -73,40 +73,60 @@ QUAD_FN(quad_float_1d, TEX_FK_FLOAT, 1)
 QUAD_FN(quad_float_2d, TEX_FK_FLOAT, 2)
 QUAD_FN(quad_float_3d, TEX_FK_FLOAT, 3)
 
-/* tex_gather.c's gather of a 2-D or 2-D array view, the operations
- * inline: the same bits and range events (test_tex_fast.c). */
-TEX_FAST_INLINE void gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
-                            float rgba[4][TEX_QUAD], const enum tex_fk k)
+/* tex_gather.c's address stage of a 2-D or 2-D array view, the operations
+ * inline: the same footprints and range events (test_tex_fast.c). */
+TEX_FAST_INLINE void footprint(const struct tex_unit *u, const struct tex_quad *q,
+                               struct tex_footprint *f, const enum tex_fk k)
 {
    struct tex_fst x = { { 0, 0 }, { 0, 0 } };
-   const struct tex_level *lv = &u->view.level[0];
    const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
    /* tex_addr_mirrored is false but for the mirroring modes */
    const bool mirror0 = u->samp.wrap[0] >= TEX_WRAP_MIRROR_REPEAT;
    const bool mirror1 = u->samp.wrap[1] >= TEX_WRAP_MIRROR_REPEAT;
-   /* a depth view's taps give the comparison in every colour channel */
-   const unsigned sw = u->samp.compare ? 0 : u->view.swizzle[comp & 3];
    for (unsigned p = 0; p < TEX_QUAD; p++) {
       const ns_val s = tex_fcoord(u, k, q->s[p], &x), t = tex_fcoord(u, k, q->t[p], &x);
-      const int layer = array ? layer_of(u, q->layer[p]) : 0;
       struct tex_addr A, B;
       addr(u, k, true, u->samp.wrap[0], &u->axis[0][0], s, &A, &x);
       addr(u, k, true, u->samp.wrap[1], &u->axis[0][1], t, &B, &x);
-      if (mirror0 && tex_addr_mirrored(u, 0, s)) {
-         const int32_t i = A.i0;
-         A.i0 = A.i1;
-         A.i1 = i;
-      }
-      if (mirror1 && tex_addr_mirrored(u, 1, t)) {
-         const int32_t j = B.i0;
-         B.i0 = B.i1;
-         B.i1 = j;
-      }
+      const bool swap_x = mirror0 && tex_addr_mirrored(u, 0, s);
+      const bool swap_y = mirror1 && tex_addr_mirrored(u, 1, t);
+      f->x[0][p] = swap_x ? A.i1 : A.i0;
+      f->x[1][p] = swap_x ? A.i0 : A.i1;
+      f->y[0][p] = swap_y ? B.i1 : B.i0;
+      f->y[1][p] = swap_y ? B.i0 : B.i1;
+      f->layer[p] = array ? layer_of(u, q->layer[p]) : 0;
+   }
+   f->events.sat = x.d.sat + x.n.sat;
+   f->events.flush = x.d.flush + x.n.flush;
+}
+
+static void footprint_dfx19(const struct tex_unit *u, const struct tex_quad *q,
+                            struct tex_footprint *f)
+{
+   footprint(u, q, f, TEX_FK_DFX19);
+}
+
+static void footprint_float(const struct tex_unit *u, const struct tex_quad *q,
+                            struct tex_footprint *f)
+{
+   footprint(u, q, f, TEX_FK_FLOAT);
+}
+
+/* The texel reads of a footprint (tex_gather.c's taps and GL's order),
+ * whatever the number system: they read memory, not coordinates. */
+static void read_taps(const struct tex_unit *u, const struct tex_footprint *f,
+                      const float ref[TEX_QUAD], unsigned comp, float rgba[4][TEX_QUAD])
+{
+   const struct tex_level *lv = &u->view.level[0];
+   /* a depth view's taps give the comparison in every colour channel */
+   const unsigned sw = u->samp.compare ? 0 : u->view.swizzle[comp & 3];
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      const int z = f->layer[p];
       /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
-      const v4f t0 = tap(u, lv, A.i0, B.i1, layer, q->ref[p]);
-      const v4f t1 = tap(u, lv, A.i1, B.i1, layer, q->ref[p]);
-      const v4f t2 = tap(u, lv, A.i1, B.i0, layer, q->ref[p]);
-      const v4f t3 = tap(u, lv, A.i0, B.i0, layer, q->ref[p]);
+      const v4f t0 = tap(u, lv, f->x[0][p], f->y[1][p], z, ref[p]);
+      const v4f t1 = tap(u, lv, f->x[1][p], f->y[1][p], z, ref[p]);
+      const v4f t2 = tap(u, lv, f->x[1][p], f->y[0][p], z, ref[p]);
+      const v4f t3 = tap(u, lv, f->x[0][p], f->y[0][p], z, ref[p]);
       if (sw < 4) {
          rgba[0][p] = t0[sw];
          rgba[1][p] = t1[sw];
@@ -117,30 +137,61 @@ TEX_FAST_INLINE void gather(const struct tex_unit *u, const struct tex_quad *q, 
          rgba[0][p] = rgba[1][p] = rgba[2][p] = rgba[3][p] = c;
       }
    }
-   tex_fst_flush(&x, u->stats);
 }
 
-static void gather_dfx19(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
-                         float rgba[4][TEX_QUAD])
+/* The same for a colour channel of the 4-byte layouts (no comparison):
+ * the channel's byte of each of the sixteen texels, decoded as fetch
+ * decodes it (tex_unorm8: the integer to binary32, times 1/255), the
+ * other channels not decoded. */
+static void read_byte(const struct tex_unit *u, const struct tex_footprint *f, unsigned ch,
+                      float rgba[4][TEX_QUAD])
 {
-   gather(u, q, comp, rgba, TEX_FK_DFX19);
+   const struct tex_level *lv = &u->view.level[0];
+   const enum tex_format fmt = u->view.format;
+   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
+   const unsigned shift = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
+   const float border = u->samp.border[ch];
+   /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
+   static const uint8_t xi[4] = { 0, 1, 1, 0 }, yi[4] = { 1, 1, 0, 0 };
+   for (unsigned k = 0; k < 4; k++) {
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         const int x = f->x[xi[k]][p], y = f->y[yi[k]][p], z = f->layer[p];
+         if ((x | y | z) < 0) {
+            rgba[k][p] = border;
+            continue;
+         }
+         uint32_t w;
+         memcpy(&w, lv->data + (size_t)z * lv->img_stride + (size_t)y * lv->row_stride +
+                       (size_t)x * 4, 4);
+         rgba[k][p] = (float)(int32_t)((w >> shift) & 0xff) * (1.0f / 255.0f);
+      }
+   }
 }
 
-static void gather_float(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
-                         float rgba[4][TEX_QUAD])
+void tex_unit_gather_read(const struct tex_unit *u, const struct tex_footprint *f,
+                          const float ref[TEX_QUAD], unsigned comp, float rgba[4][TEX_QUAD])
 {
-   gather(u, q, comp, rgba, TEX_FK_FLOAT);
+   const enum tex_format fmt = u->view.format;
+   const unsigned sw = u->view.swizzle[comp & 3];
+   const bool x8 = fmt == TEX_FMT_RGBX8 || fmt == TEX_FMT_BGRX8;
+   /* a layout's colour channel, not the 1 of an X layout's fourth */
+   if (fmt >= TEX_FMT_RGBA8 && fmt <= TEX_FMT_BGRX8 && !u->samp.compare && sw < (x8 ? 3u : 4u))
+      read_byte(u, f, sw, rgba);
+   else
+      read_taps(u, f, ref, comp, rgba);
+   u->stats->sat += f->events.sat;
+   u->stats->flush += f->events.flush;
 }
 
-tex_gather_fn tex_fast_gather_choose(const struct tex_unit *u, bool scalar)
+tex_footprint_fn tex_fast_footprint_choose(const struct tex_unit *u, bool scalar)
 {
    if (scalar || (u->view.target != TEX_TARGET_2D && u->view.target != TEX_TARGET_2D_ARRAY &&
                   u->view.target != TEX_TARGET_RECT))
       return NULL;
    if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED)
-      return gather_dfx19;
+      return footprint_dfx19;
    if (u->kind == TEX_NS_FLOAT)
-      return gather_float;
+      return footprint_float;
    return NULL;
 }
 

@@ -6,8 +6,9 @@
  * texels the filter would have blended, and a depth view compares each of
  * them with the reference as the filter's taps do.  A seamless cube map's
  * footprint crosses its face's edges as the filter's does (tex_cube_taps).
- * This is the table path; 2-D views take tex_fast.c's specialised copy
- * (u->gather) unless FIXPIPE_DEBUG=scalar.
+ * This is the table path; 2-D views take tex_fast.c's specialised copy,
+ * its address stage (u->footprint) apart from its texel reads, unless
+ * FIXPIPE_DEBUG=scalar.
  */
 #include "rast/tex_priv.h"
 
@@ -21,10 +22,20 @@ static inline float channel(const struct tex_unit *u, const float t[4], unsigned
 void tex_unit_gather(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,
                      float rgba[4][TEX_QUAD])
 {
-   if (u->gather)
-      u->gather(u, q, comp, rgba);
+   struct tex_footprint f;
+   if (tex_unit_gather_footprint(u, q, &f))
+      tex_unit_gather_read(u, &f, q->ref, comp, rgba);
    else
       tex_unit_gather_generic(u, q, comp, rgba);
+}
+
+bool tex_unit_gather_footprint(const struct tex_unit *u, const struct tex_quad *q,
+                               struct tex_footprint *f)
+{
+   if (!u->footprint)
+      return false;
+   u->footprint(u, q, f);
+   return true;
 }
 
 void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q, unsigned comp,

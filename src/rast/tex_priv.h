@@ -87,9 +87,10 @@ int32_t tex_lod_derivs(const struct tex_unit *u, const float ddx[3], const float
 int32_t tex_lod_grads(const struct tex_unit *u, const ns_val dx[3], const ns_val dy[3],
                       unsigned dims, const ns_val scale[3]);
 
+/* tex_fast.c: the specialised address stage of a gather, or NULL. */
+tex_footprint_fn tex_fast_footprint_choose(const struct tex_unit *u, bool scalar);
 /* tex_fast.c: the specialised quad of the unit's number system, or NULL;
  * the lanes' (lanes.h) where there is one, unless scalar. */
-tex_gather_fn tex_fast_gather_choose(const struct tex_unit *u, bool scalar);
 tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, bool *nolod,
                             tex_quad2_fn *pair, tex_quad4_fn *four);
 

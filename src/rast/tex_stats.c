@@ -6,8 +6,10 @@
 #include "rast/tex.h"
 
 void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
-                       uint64_t lod_quads, uint64_t skip_axes, uint64_t quads, uint64_t texels)
+                       uint64_t lod_quads, uint64_t skip_axes, uint64_t skip_footprint,
+                       uint64_t quads, uint64_t texels)
 {
+   rc->stats.skip_tex_footprint += skip_footprint;
    rc->stats.texels += texels;
    rc->stats.skip_tex_axes += skip_axes;
    rc->stats.tex_quads += quads;

@@ -23,7 +23,7 @@ skips() {
              END { print isa, w + 0, c + 0, l + 0, a + 0, z + 0, e + 0, s + 0 }'
 }
 
-total_w=0 total_c=0 total_l=0 total_a=0 total_z=0 total_e=0 total_s=0
+total_w=0 total_c=0 total_l=0 total_a=0 total_z=0 total_e=0 total_s=0 total_f=0
 check_lanes() { # NAME
     set -- $(skips "$1")
     case ${1:-} in
@@ -46,9 +46,10 @@ work_ok() {
           if (v["divided"] > v["quads"] || v["skip_w"] > v["divided"] ||
               v["skip_comp"] > v["comp_quads"] || v["skip_lod"] > v["lod_quads"] ||
               v["skip_axes"] > 2 * v["tex_quads"] || v["skip_fragcoord"] > v["quads"] ||
-              v["skip_z"] > v["quads"] || v["skip_early"] + v["skip_shade"] > v["quads"]) bad++
+              v["skip_z"] > v["quads"] || v["skip_early"] + v["skip_shade"] > v["quads"] ||
+              v["skip_footprint"] > v["tex_quads"]) bad++
           skipped = v["skip_w"] + v["skip_comp"] + v["skip_lod"] + v["skip_axes"] + v["skip_fragcoord"]
-          skipped += v["skip_z"] + v["skip_early"] + v["skip_shade"]
+          skipped += v["skip_z"] + v["skip_early"] + v["skip_shade"] + v["skip_footprint"]
           if (none == "none" && skipped > 0) bad++
           n++ }
         END { exit !(n > 0 && !bad) }' "$1"
@@ -71,7 +72,11 @@ render() { # NAME PROGRAM ARGS...
             "$out/$name.$m.log" > "$out/$name.$m.skipped"
         sed -n 's/.*datapath work: quads divided \([0-9]*\), component-quads \([0-9]*\), texture quads with a LOD from differences \([0-9]*\), texture quads \([0-9]*\), quads \([0-9]*\).*/divided \1 comp_quads \2 lod_quads \3 tex_quads \4 quads \5/p' \
             "$out/$name.$m.log" > "$out/$name.$m.shares"
-        paste -d' ' "$out/$name.$m.skipped" "$out/$name.$m.shares" > "$out/$name.$m.work"
+        sed -n 's/.*gather quads whose footprint was addressed before \([0-9]*\).*/skip_footprint \1/p' \
+            "$out/$name.$m.log" > "$out/$name.$m.footprints"
+        paste -d' ' "$out/$name.$m.skipped" "$out/$name.$m.shares" "$out/$name.$m.footprints" \
+            > "$out/$name.$m.work"
+        total_f=$((total_f + $(awk '{ n += $2 } END { print n + 0 }' "$out/$name.$m.footprints")))
         if ! work_ok "$out/$name.$m.work" "$([ $m = scalar ] && echo none || echo some)"; then
             fail "$name: the $m run's skipped work is missing or beyond what it is a share of"
             return 1
@@ -119,9 +124,9 @@ for m in $MODES; do
     fi
 done
 
-taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD, $total_a texture quad-axes addressed per column or row, $total_z quads without a Z walk, $total_e quads rejected whole before shading, $total_s quads not shaded"
+taken="$total_w quads with a constant 1/w, $total_c constant component-quads, $total_l texture quads without a LOD, $total_a texture quad-axes addressed per column or row, $total_z quads without a Z walk, $total_e quads rejected whole before shading, $total_s quads not shaded, $total_f gather quads on a footprint addressed before"
 if [ "$total_w" -gt 0 ] && [ "$total_c" -gt 0 ] && [ "$total_l" -gt 0 ] && [ "$total_a" -gt 0 ] &&
-   [ "$total_z" -gt 0 ] && [ "$total_e" -gt 0 ] && [ "$total_s" -gt 0 ]; then
+   [ "$total_z" -gt 0 ] && [ "$total_e" -gt 0 ] && [ "$total_s" -gt 0 ] && [ "$total_f" -gt 0 ]; then
     pass "skips taken: $taken"
 else
     fail "skips taken: $taken"

@@ -547,9 +547,11 @@ static void rows_memo_runs(unsigned units, unsigned calls)
    }
 }
 
-/* The specialised gather (u->gather) against the table path: the same
- * bits and range events on random units, every channel; chosen exactly
- * for the 2-D views of dfx24 and binary32, and not with `scalar`. */
+/* The specialised gather (u->footprint, then the texel reads) against the
+ * table path: the same bits and range events on random units, every
+ * channel; chosen exactly for the 2-D views of dfx24 and binary32, and not
+ * with `scalar`.  One footprint read for all four channels (the driver's
+ * memo) gives each channel's gather and counts each gather's events. */
 static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit)
 {
    const struct numsys *ns = numsys_by_name(name);
@@ -560,12 +562,12 @@ static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsi
       rand_unit(&u, ns, &s_fast);
       const bool two_d = u.view.target == TEX_TARGET_2D || u.view.target == TEX_TARGET_2D_ARRAY ||
                          u.view.target == TEX_TARGET_RECT;
-      CHECK(!!u.gather == (fast && two_d), "%s: specialised gather %s for target %d", name,
-            u.gather ? "chosen" : "missing", u.view.target);
+      CHECK(!!u.footprint == (fast && two_d), "%s: specialised gather %s for target %d", name,
+            u.footprint ? "chosen" : "missing", u.view.target);
       tex_unit_set_datapath(&u, true, false);
-      CHECK(!u.gather, "%s: specialised gather chosen on the scalar datapath", name);
+      CHECK(!u.footprint, "%s: specialised gather chosen on the scalar datapath", name);
       tex_unit_set_datapath(&u, false, false);
-      fast_units += u.gather != NULL;
+      fast_units += u.footprint != NULL;
       for (unsigned j = 0; j < per_unit; j++) {
          struct tex_quad q;
          rand_quad(&q, &u);
@@ -575,8 +577,19 @@ static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsi
          tex_unit_gather_generic(&u, &q, comp, r0);
          u.stats = &s_fast;
          tex_unit_gather(&u, &q, comp, r1);
-         const bool ok = !memcmp(r0, r1, sizeof(r0)) && s_gen.sat == s_fast.sat &&
-                         s_gen.flush == s_fast.flush;
+         bool ok = !memcmp(r0, r1, sizeof(r0)) && s_gen.sat == s_fast.sat &&
+                   s_gen.flush == s_fast.flush;
+         struct tex_footprint f;
+         if (ok && tex_unit_gather_footprint(&u, &q, &f)) {
+            for (unsigned c = 0; c < 4; c++) {
+               u.stats = &s_gen;
+               tex_unit_gather_generic(&u, &q, c, r0);
+               u.stats = &s_fast;
+               tex_unit_gather_read(&u, &f, q.ref, c, r1);
+               ok &= !memcmp(r0, r1, sizeof(r0));
+            }
+            ok &= s_gen.sat == s_fast.sat && s_gen.flush == s_fast.flush;
+         }
          if (!ok && bad++ < 5)
             CHECK(ok, "%s unit %u gather %u: target %d fmt %d wrap %d/%d comp %u compare %d: "
                   "r %a vs %a, sat %llu vs %llu, flush %llu vs %llu", name, i, j,
