@@ -268,6 +268,11 @@ struct tex_quad;
 void fp_tgsi_sample_quads(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
                           uint32_t control, uint32_t quads, uint32_t max,
                           const struct tex_quad *q, float rgba[][4][4]);
+/* Gathers of channel `comp` with the offsets (s, t) on `max` quads laid out
+ * so by compiled code, `quads` of them real. */
+void fp_tgsi_gather_quads(struct tgsi_sampler *s, uint32_t sview_index, uint32_t sampler_index,
+                          uint32_t comp, int32_t offset_s, int32_t offset_t, uint32_t quads,
+                          uint32_t max, const struct tex_quad *q, float rgba[][4][4]);
 /* What it counted so far, into rc's counters (not while rc's thread draws). */
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s, struct rast_context *rc);
 void fp_init_sampler_view(struct fp_sampler_view *view);

@@ -45,6 +45,11 @@ struct fp_jit_context {
    void (*sample_quads)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
                         uint32_t control, uint32_t quads, uint32_t max,
                         const struct tex_quad *q, float rgba[][4][RAST_QUAD_SIZE]);
+   /* gathers of a 2-D view with constant offsets, the same way
+    * (fp_tgsi_gather_quads) */
+   void (*gather_quads)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
+                        uint32_t comp, int32_t offset_s, int32_t offset_t, uint32_t quads,
+                        uint32_t max, const struct tex_quad *q, float rgba[][4][RAST_QUAD_SIZE]);
    /* the quads a call of the function shades: up to its quads a call, the
     * lanes of the others repeating the first quad's (a quad alone, the
     * last of a primitive) */

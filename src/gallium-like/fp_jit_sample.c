@@ -153,6 +153,7 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
    ctx->sample = fp_jit_sample;
    ctx->size = fp_jit_size;
    ctx->sample_quads = fp_tgsi_sample_quads;
+   ctx->gather_quads = fp_tgsi_gather_quads;
    ctx->quads = 2;
 }
 
@@ -309,6 +310,79 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
    fp_load_texels(gallivm, type4, rgba, nq, params);
 }
 
+/* Whether an instruction is a gather the code can lay out itself: a
+ * non-shadow 2-D, 2-D array or rectangle view named by a constant index,
+ * with no offsets or constant ones (the same in every lane, as
+ * fp_jit_sample takes each quad's first).  tgsi_exec's operands for it are
+ * s, t, and for an array the layer in r and the layer operand, the
+ * reference zero. */
+static bool fp_gather_2d(enum tgsi_texture_type target, const struct lp_sampler_params *params)
+{
+   const unsigned key = params->sample_key;
+   const unsigned op = (key & LP_SAMPLER_OP_TYPE_MASK) >> LP_SAMPLER_OP_TYPE_SHIFT;
+   if (op != LP_SAMPLER_OP_GATHER || (key & LP_SAMPLER_SHADOW) || params->texture_index_offset)
+      return false;
+   if (target != TGSI_TEXTURE_2D && target != TGSI_TEXTURE_2D_ARRAY &&
+       target != TGSI_TEXTURE_RECT)
+      return false;
+   if (key & LP_SAMPLER_OFFSETS)
+      for (unsigned a = 0; a < 2; a++)
+         if (!params->offsets[a] || !LLVMIsConstant(params->offsets[a]))
+            return false;
+   return true;
+}
+
+/* Such a gather on the quads of a call: their struct tex_quad stored by
+ * the code, and one call into the unit's glue. */
+static void fp_emit_gather_quads(struct gallivm_state *gallivm,
+                                 const struct lp_sampler_params *params,
+                                 enum tgsi_texture_type target)
+{
+   LLVMContextRef lc = gallivm->context;
+   LLVMBuilderRef b = gallivm->builder;
+   const unsigned nq = fp_quads(params);
+   struct lp_type type4 = params->type;
+   type4.length = RAST_QUAD_SIZE;
+   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
+   LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
+   LLVMTypeRef vp = LLVMPointerType(fvec, 0);
+   LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   const bool array = target == TGSI_TEXTURE_2D_ARRAY;
+#define FP_Q(member) (unsigned)(offsetof(struct tex_quad, member) / sizeof(float[RAST_QUAD_SIZE]))
+   const unsigned per = sizeof(struct tex_quad) / sizeof(float[RAST_QUAD_SIZE]);
+   LLVMValueRef q = fp_vec_array(gallivm, fvec, per * nq, "gather_quad");
+   for (unsigned k = 0; k < nq; k++) {
+      LLVMValueRef layer = array ? fp_jit_quad_part(gallivm, params->coords[2], k, nq) : NULL;
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_jit_quad_part(gallivm, params->coords[0], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_jit_quad_part(gallivm, params->coords[1], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(r), layer);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(layer), layer);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(ref), NULL);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(lod), NULL);
+   }
+#undef FP_Q
+   LLVMValueRef off[2] = { lp_build_const_int32(gallivm, 0), lp_build_const_int32(gallivm, 0) };
+   if (params->sample_key & LP_SAMPLER_OFFSETS)
+      for (unsigned a = 0; a < 2; a++)
+         off[a] = LLVMGetTypeKind(LLVMTypeOf(params->offsets[a])) == LLVMVectorTypeKind
+                     ? LLVMBuildExtractElement(b, params->offsets[a],
+                                               lp_build_const_int32(gallivm, 0), "")
+                     : params->offsets[a];
+   const unsigned comp =
+      (params->sample_key & LP_SAMPLER_GATHER_COMP_MASK) >> LP_SAMPLER_GATHER_COMP_SHIFT;
+   LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
+   LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                        offsetof(struct fp_jit_context, quads), i32);
+   LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, i32, i32, i32, vp, vp };
+   LLVMValueRef args[] = { NULL, lp_build_const_int32(gallivm, params->texture_index),
+                           lp_build_const_int32(gallivm, params->sampler_index),
+                           lp_build_const_int32(gallivm, comp), off[0], off[1], quads,
+                           lp_build_const_int32(gallivm, nq), q, rgba };
+   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, gather_quads),
+                    arg_types, args, ARRAY_SIZE(args));
+   fp_load_texels(gallivm, type4, rgba, nq, params);
+}
+
 /* Any other texture instruction, quad k of nq: its operands where tgsi_exec
  * has them (fp_jit_sample()), the texels to `rgba` (4 vectors). */
 static void fp_emit_tex_general(const struct fp_jit_sampler *js, struct gallivm_state *gallivm,
@@ -390,6 +464,10 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
     * quads, takes the call per quad below */
    if (nq >= 2 && fp_plain_2d(target, params->sample_key) && !params->texture_index_offset) {
       fp_emit_tex_quad(gallivm, params);
+      return;
+   }
+   if (nq >= 2 && fp_gather_2d(target, params)) {
+      fp_emit_gather_quads(gallivm, params, target);
       return;
    }
 

@@ -548,6 +548,29 @@ void fp_tgsi_sample_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_inde
 }
 
 
+/* Gathers of channel `comp` with constant offsets on the quads compiled
+ * code laid out itself (fp_jit_sample.c: a non-shadow 2-D, 2-D array or
+ * rectangle view, the operands fp_tgsi_get_samples would have built), in
+ * one call: `quads` of them real, `max` laid out, the others' texels zero. */
+void fp_tgsi_gather_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_index,
+                          uint32_t sampler_index, uint32_t comp, int32_t offset_s,
+                          int32_t offset_t, uint32_t quads, uint32_t max,
+                          const struct tex_quad *q, float rgba[][4][TGSI_QUAD_SIZE])
+{
+   struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
+   const struct fp_sampler_view *fv;
+   const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
+   const unsigned n = quads < 1 ? 1 : quads > max ? max : quads;
+   const unsigned gathered = u ? n : 0;
+   if (gathered < max)
+      memset(rgba[gathered], 0, sizeof(float) * (max - gathered) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
+   const int8_t offset[3] = { (int8_t)offset_s, (int8_t)offset_t, 0 };
+   for (unsigned k = 0; k < gathered; k++) {
+      struct tex_quad qk = q[k];
+      fp_gather_quad(ts, sview_index, u, &qk, offset, comp & 3, rgba[k]);
+   }
+}
+
 static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                              int level, int dims[4])
 {

@@ -14,7 +14,8 @@
  *                (imageLoad, imageStore, imageAtomicAdd), drawn as above
  *   gather       textureGather of a 16x16 random texture (green, then
  *                alpha with a texel offset, then a depth texture with a
- *                comparison), a band each, through the modeled unit
+ *                comparison, then blue of a 2-D array's layer with an
+ *                offset), a band each, through the modeled unit
  *   gather-cube  textureGather on an 8x8 cube map across the corner of
  *                three faces, a view with a swizzle, green then alpha
  *   ms-fetch     random flat triangles into a 4-sample texture, then each
@@ -360,13 +361,15 @@ static void case_gather(int size)
       "precision highp float;\n"
       "uniform highp sampler2D u_tex;\n"
       "uniform highp sampler2DShadow u_depth;\n"
+      "uniform highp sampler2DArray u_arr;\n"
       "uniform int u_band;\n"
       "in vec2 v_uv;\n"
       "out vec4 o_color;\n"
       "void main() {\n"
       "   if (u_band == 0) o_color = textureGather(u_tex, v_uv, 1);\n"
       "   else if (u_band == 1) o_color = textureGatherOffset(u_tex, v_uv, ivec2(-3, 2), 3);\n"
-      "   else o_color = textureGather(u_depth, v_uv, 0.5);\n"
+      "   else if (u_band == 2) o_color = textureGather(u_depth, v_uv, 0.5);\n"
+      "   else o_color = textureGatherOffset(u_arr, vec3(v_uv, 1.3), ivec2(2, -1), 2);\n"
       "}\n";
    enum { W = 16 };
    uint32_t texels[W * W];
@@ -376,8 +379,22 @@ static void case_gather(int size)
       texels[k] = e2e_rand(&rng);
       depth[k] = (float)e2e_rand_range(&rng, 0, 1000) / 1000.0f;
    }
-   GLuint tex[2];
-   glGenTextures(2, tex);
+   GLuint tex[3];
+   glGenTextures(3, tex);
+   /* a 2-D array: its second layer gathered with an offset */
+   glActiveTexture(GL_TEXTURE2);
+   glBindTexture(GL_TEXTURE_2D_ARRAY, tex[2]);
+   glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, W, W, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+   for (int l = 0; l < 3; l++) {
+      uint32_t layer[W * W];
+      for (int k = 0; k < W * W; k++)
+         layer[k] = e2e_rand(&rng);
+      glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, l, W, W, 1, GL_RGBA, GL_UNSIGNED_BYTE, layer);
+   }
+   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
    glActiveTexture(GL_TEXTURE1);
    glBindTexture(GL_TEXTURE_2D, tex[1]);
    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, W, W, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
@@ -399,17 +416,18 @@ static void case_gather(int size)
    glUseProgram(p);
    glUniform1i(glGetUniformLocation(p, "u_tex"), 0);
    glUniform1i(glGetUniformLocation(p, "u_depth"), 1);
+   glUniform1i(glGetUniformLocation(p, "u_arr"), 2);
    GLint band = glGetUniformLocation(p, "u_band");
-   /* bands of a third each, edges on the sub-pixel grid (both drivers
+   /* bands of a quarter each, edges on the sub-pixel grid (both drivers
     * hold the vertices exactly); coordinates over more than the texture
     * so that the wrap modes act, not on texel boundaries at pixel centres */
-   const int edge[4] = { 0, size / 3, 2 * size / 3, size };
-   for (int b = 0; b < 3; b++) {
+   const int edge[5] = { 0, size / 4, size / 2, 3 * size / 4, size };
+   for (int b = 0; b < 4; b++) {
       glUniform1i(band, b);
       draw_rect(-1, e2e_ndc(edge[b] * E2E_SUB, size), 1, e2e_ndc(edge[b + 1] * E2E_SUB, size),
                 -0.31f, -0.27f, 1.43f, 1.38f);
    }
-   glDeleteTextures(2, tex);
+   glDeleteTextures(3, tex);
 }
 
 /* A triangle with vertices on the sub-pixel grid inside the target. */
