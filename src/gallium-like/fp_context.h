@@ -103,6 +103,11 @@ struct fp_fs_thread {
 struct fp_velems {
    unsigned count;
    struct pipe_vertex_element elem[PIPE_MAX_ATTRIBS];
+   /* an element of a signed normalized format: GL ES 3.0 (2.1.6.1) clamps
+    * its most negative value to -1, which draw's compiled fetch (gallivm)
+    * does and its interpreted one (translate, util_format's unpack) does
+    * not: the 2-bit alpha of GL_INT_2_10_10_10_REV reads -2 there */
+   bool snorm;
 };
 
 struct fp_sampler_view {

@@ -312,6 +312,12 @@ static void *fp_create_velems(struct pipe_context *pipe, unsigned count,
       return NULL;
    v->count = MIN2(count, PIPE_MAX_ATTRIBS);
    memcpy(v->elem, elems, v->count * sizeof(elems[0]));
+   for (unsigned i = 0; i < v->count; i++) {
+      const struct util_format_description *d = util_format_description(elems[i].src_format);
+      const int c = d ? util_format_get_first_non_void_channel(elems[i].src_format) : -1;
+      v->snorm |= c >= 0 && d->channel[c].type == UTIL_FORMAT_TYPE_SIGNED &&
+                  d->channel[c].normalized;
+   }
    return v;
 }
 

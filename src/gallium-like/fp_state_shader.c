@@ -166,7 +166,11 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
    /* hot as a fragment shader is (fp_fs_hot): past the threshold, or past
     * the loop threshold once the process presents frames */
    const bool loop = vs->vertices >= FP_JIT_LOOP_VERTICES && fp_jit_hot_loop(fp);
-   if (vs->vertices < FP_JIT_HOT_VERTICES && !loop && !(fp_env_debug() & FP_DEBUG_JITALL))
+   /* signed normalized vertex data: draw's compiled fetch at once, the one
+    * that reads it as GL does (fp_velems.snorm) */
+   const bool snorm = fp->velems && fp->velems->snorm;
+   if (vs->vertices < FP_JIT_HOT_VERTICES && !loop && !snorm &&
+       !(fp_env_debug() & FP_DEBUG_JITALL))
       return;
    vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
    if (!vs->draw_vs_llvm) {
