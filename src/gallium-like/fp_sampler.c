@@ -412,23 +412,36 @@ static void fp_gather(struct fp_tgsi_sampler *ts, unsigned sview_index, const st
    tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
 }
 
+/* A gather reads the base level: its texel offsets as coordinate offsets
+ * there, per axis; false where there are none. */
+static bool fp_gather_offsets(const struct tex_unit *u, const int8_t offset[3], float k[3])
+{
+   if (!offset || !(offset[0] | offset[1] | offset[2]))
+      return false;
+   const int size[3] = { u->view.level[0].w, u->view.level[0].h, u->view.level[0].d };
+   for (unsigned a = 0; a < 3; a++)
+      k[a] = a >= u->dims ? 0.0f : u->samp.normalized ? (float)offset[a] / (float)size[a]
+                                                      : offset[a];
+   return true;
+}
+
 /* A gather of a quad whose operands are in place (fp_tgsi_get_samples, or
- * laid out by compiled code), and its counts. */
+ * laid out by compiled code), its coordinates moved by `k` (NULL: no
+ * offsets), and its counts. */
 static void fp_gather_quad(struct fp_tgsi_sampler *ts, unsigned sview_index,
-                           const struct tex_unit *u, struct tex_quad *q, const int8_t offset[3],
+                           const struct tex_unit *u, struct tex_quad *q, const float *k,
                            unsigned comp, float rgba[4][TGSI_QUAD_SIZE])
 {
-   if (offset && (offset[0] | offset[1] | offset[2])) {
-      /* a gather reads the base level: its offsets as coordinate offsets there */
+   if (k) {
+      /* a vector each: the memo's key reads the four coordinates as one,
+       * which a store of four floats one by one would hold up */
+      typedef float v4f __attribute__((vector_size(16)));
       float *co[3] = { q->s, q->t, q->r };
       for (unsigned a = 0; a < u->dims; a++) {
-         float k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].w : offset[a];
-         if (a == 1)
-            k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].h : offset[a];
-         if (a == 2)
-            k = u->samp.normalized ? (float)offset[a] / (float)u->view.level[0].d : offset[a];
-         for (unsigned p = 0; p < TGSI_QUAD_SIZE; p++)
-            co[a][p] += k;
+         v4f c;
+         memcpy(&c, co[a], sizeof(c));
+         c += k[a];
+         memcpy(co[a], &c, sizeof(c));
       }
    }
    ts->quads++;
@@ -520,7 +533,9 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
    if (control == TGSI_SAMPLER_GATHER) {
       /* tgsi_exec passes the component in the LOD operand's bits */
       union { float f; uint32_t u; } comp = { c1[0] };
-      fp_gather_quad(ts, sview_index, u, &q, offset, comp.u & 3, rgba);
+      float k[3];
+      fp_gather_quad(ts, sview_index, u, &q, fp_gather_offsets(u, offset, k) ? k : NULL,
+                     comp.u & 3, rgba);
       return;
    }
    fp_unit_sample(ts, u, &q, 1, control, (float(*)[TGSI_NUM_CHANNELS][TGSI_QUAD_SIZE])rgba);
@@ -565,9 +580,16 @@ void fp_tgsi_gather_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_inde
    if (gathered < max)
       memset(rgba[gathered], 0, sizeof(float) * (max - gathered) * TGSI_NUM_CHANNELS * TGSI_QUAD_SIZE);
    const int8_t offset[3] = { (int8_t)offset_s, (int8_t)offset_t, 0 };
-   for (unsigned k = 0; k < gathered; k++) {
-      struct tex_quad qk = q[k];
-      fp_gather_quad(ts, sview_index, u, &qk, offset, comp & 3, rgba[k]);
+   float k[3];
+   const bool moved = gathered && fp_gather_offsets(u, offset, k);
+   for (unsigned i = 0; i < gathered; i++) {
+      struct tex_quad qi;
+      memcpy(qi.s, q[i].s, sizeof(qi.s));
+      memcpy(qi.t, q[i].t, sizeof(qi.t));
+      memcpy(qi.r, q[i].r, sizeof(qi.r));
+      memcpy(qi.layer, q[i].layer, sizeof(qi.layer));
+      memcpy(qi.ref, q[i].ref, sizeof(qi.ref));
+      fp_gather_quad(ts, sview_index, u, &qi, moved ? k : NULL, comp & 3, rgba[i]);
    }
 }
 

@@ -142,29 +142,43 @@ static void read_taps(const struct tex_unit *u, const struct tex_footprint *f,
 /* The same for a colour channel of the 4-byte layouts (no comparison):
  * the channel's byte of each of the sixteen texels, decoded as fetch
  * decodes it (tex_unorm8: the integer to binary32, times 1/255), the
- * other channels not decoded. */
+ * other channels not decoded.  A tap at a time for the four pixels, with
+ * no branch: a border tap reads the level's first texel and takes the
+ * border colour instead. */
 static void read_byte(const struct tex_unit *u, const struct tex_footprint *f, unsigned ch,
                       float rgba[4][TEX_QUAD])
 {
+   typedef int32_t v4i __attribute__((vector_size(16)));
+   typedef uint32_t v4u __attribute__((vector_size(16)));
    const struct tex_level *lv = &u->view.level[0];
    const enum tex_format fmt = u->view.format;
    const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
    const unsigned shift = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
-   const float border = u->samp.border[ch];
+   const v4f border = { u->samp.border[ch], u->samp.border[ch], u->samp.border[ch],
+                        u->samp.border[ch] };
+   v4i z;
+   memcpy(&z, f->layer, sizeof(z));
    /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
    static const uint8_t xi[4] = { 0, 1, 1, 0 }, yi[4] = { 1, 1, 0, 0 };
    for (unsigned k = 0; k < 4; k++) {
+      v4i x, y;
+      memcpy(&x, f->x[xi[k]], sizeof(x));
+      memcpy(&y, f->y[yi[k]], sizeof(y));
+      const v4i in = (x | y | z) >= 0;
+      x &= in;
+      y &= in;
+      const v4i zz = z & in;
+      v4u w;
       for (unsigned p = 0; p < TEX_QUAD; p++) {
-         const int x = f->x[xi[k]][p], y = f->y[yi[k]][p], z = f->layer[p];
-         if ((x | y | z) < 0) {
-            rgba[k][p] = border;
-            continue;
-         }
-         uint32_t w;
-         memcpy(&w, lv->data + (size_t)z * lv->img_stride + (size_t)y * lv->row_stride +
-                       (size_t)x * 4, 4);
-         rgba[k][p] = (float)(int32_t)((w >> shift) & 0xff) * (1.0f / 255.0f);
+         uint32_t t;
+         memcpy(&t, lv->data + (size_t)zz[p] * lv->img_stride + (size_t)y[p] * lv->row_stride +
+                       (size_t)x[p] * 4, 4);
+         w[p] = t;
       }
+      const v4i b = (v4i)((w >> shift) & 0xff);
+      const v4f v = __builtin_convertvector(b, v4f) * (1.0f / 255.0f);
+      const v4i o = ((v4i)v & in) | ((v4i)border & ~in);
+      memcpy(rgba[k], &o, sizeof(o));
    }
 }
 
