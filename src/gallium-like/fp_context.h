@@ -266,6 +266,9 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
                                                struct rast_context *rc);
 void fp_tgsi_sampler_destroy(struct fp_tgsi_sampler *s);
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s);
+/* A run of the fragment shader begins (a quad interpreted, or a call of
+ * compiled code): what the sampler remembers of the last run goes. */
+void fp_tgsi_sampler_begin(struct fp_tgsi_sampler *s);
 /* `max` quads (2 or 4) whose operands compiled code laid out as
  * tgsi_exec's get_samples would have (fp_jit_sample.c), `quads` of them
  * real; control is an enum tgsi_sampler_control. */

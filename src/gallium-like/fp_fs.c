@@ -46,6 +46,7 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
    struct tgsi_exec_machine *mach = th->mach;
 
    th->quads_interp++;   /* counted to the shader after the batch: fp_fs_batch_done */
+   fp_tgsi_sampler_begin(th->sampler);
    const struct tgsi_shader_info *info = &fs->info;
    const float c = fs->pixel_center_integer ? 0.0f : 0.5f;
 
@@ -148,6 +149,7 @@ static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
       memcpy(lanes[k], fp_quad_lanes[k < n ? q[k]->mask & 15 : 0], sizeof(lanes[k]));
    }
    th->jit_ctx.quads = n;
+   fp_tgsi_sampler_begin(th->sampler);
    v->func(&th->jit_ctx, qs, outs, &lanes[0][0]);
    th->quads_jit += n;
    unsigned kept = 0;

@@ -58,9 +58,12 @@ struct fp_tex_slot {
     * in turn) reads its texels without addressing them again.  As many as
     * the quads compiled code hands over an instruction at a time (it
     * gathers each channel for all of them in turn), replaced in turn.
-    * Valid for the unit they were addressed by; never under
-    * FIXPIPE_DEBUG=noskip. */
+    * Valid for the unit they were addressed by and within one run of the
+    * shader (fp_tgsi_sampler_begin): which quads one thread shades after
+    * which depends on the thread count, and the counters must not.
+    * Never under FIXPIPE_DEBUG=noskip. */
    unsigned footprints, footprint_next;
+   uint64_t footprint_run;
    float footprint_key[FP_FOOTPRINTS][3][TGSI_QUAD_SIZE];
    struct tex_footprint footprint[FP_FOOTPRINTS];
 };
@@ -77,6 +80,7 @@ struct fp_tgsi_sampler {
    uint64_t quads;                /* every quad sampled */
    uint64_t skip_axes;            /* quads addressed per axis (tex_unit.axes_shared) */
    uint64_t skip_footprint;       /* gather quads that read the slot's footprint */
+   uint64_t run;                  /* runs of the shader begun (fp_tgsi_sampler_begin) */
    uint64_t texels;               /* texel reads of the filters (tex_unit.taps) */
    /* made at the unit's first binding: about 6 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
@@ -87,6 +91,11 @@ struct fp_tgsi_sampler {
 struct tgsi_sampler *fp_tgsi_sampler_base(struct fp_tgsi_sampler *s)
 {
    return &s->base;
+}
+
+void fp_tgsi_sampler_begin(struct fp_tgsi_sampler *s)
+{
+   s->run++;
 }
 
 void fp_init_sampler_view(struct fp_sampler_view *v)
@@ -391,6 +400,10 @@ static void fp_gather(struct fp_tgsi_sampler *ts, unsigned sview_index, const st
    if (ts->rebind || !u->footprint || u != &slot->unit) {
       tex_unit_gather(u, q, comp, rgba);
       return;
+   }
+   if (slot->footprint_run != ts->run) {   /* another run of the shader: forget */
+      slot->footprint_run = ts->run;
+      slot->footprints = slot->footprint_next = 0;
    }
    float key[3][TGSI_QUAD_SIZE];
    memcpy(key[0], q->s, sizeof(key[0]));
