@@ -27,6 +27,7 @@
 #include "rast/lanes.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
+#include "util/disk_cache.h"
 
 /* FIXPIPE_STATS=frames:N: the work counters so far, one line every N frames
  * presented (tools/replay-bench.sh takes each scene's shares of skipped
@@ -256,6 +257,14 @@ static void fp_stats_track(struct fp_context *fp, bool live)
 static void fp_destroy(struct pipe_context *pipe)
 {
    struct fp_context *fp = fp_context(pipe);
+
+   /* Compiled shaders still queued for the disk cache are written before
+    * the context goes: a program that exits once its context is destroyed,
+    * its screen never (OSMesa's), lost them with the cache's thread at
+    * exit, and its next run compiled them again. */
+   struct disk_cache *cache = fp_screen(pipe->screen)->disk_cache;
+   if (cache)
+      disk_cache_wait_for_idle(cache);
 
    if (fp->rast && fp->print_stats) {
       fp_stats_track(fp, false);
