@@ -66,6 +66,8 @@ struct fp_tex_slot {
    uint64_t footprint_run;
    float footprint_key[FP_FOOTPRINTS][3][TGSI_QUAD_SIZE];
    struct tex_footprint footprint[FP_FOOTPRINTS];
+   /* and, for the 4-byte layouts, every channel of their texels */
+   float footprint_texels[FP_FOOTPRINTS][4][4][TGSI_QUAD_SIZE];
 };
 
 struct fp_tgsi_sampler {
@@ -80,7 +82,7 @@ struct fp_tgsi_sampler {
    uint64_t quads;                /* every quad sampled */
    uint64_t skip_axes;            /* quads addressed per axis (tex_unit.axes_shared) */
    uint64_t skip_footprint;       /* gather quads that read the slot's footprint */
-   uint64_t run;                  /* runs of the shader begun (fp_tgsi_sampler_begin) */
+   uint64_t run;                  /* runs of the fragment shader begun (fp_tgsi_sampler_begin) */
    uint64_t texels;               /* texel reads of the filters (tex_unit.taps) */
    /* made at the unit's first binding: about 6 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
@@ -409,10 +411,19 @@ static void fp_gather(struct fp_tgsi_sampler *ts, unsigned sview_index, const st
    memcpy(key[0], q->s, sizeof(key[0]));
    memcpy(key[1], q->t, sizeof(key[1]));
    memcpy(key[2], q->layer, sizeof(key[2]));
+   /* the 4-byte layouts: every channel's texels kept with the footprint,
+    * where a run is a fragment shader's (the texture does not change
+    * within it; the other stages begin no runs); others read a channel */
+   const bool words = ts->stage == PIPE_SHADER_FRAGMENT && tex_unit_gather_reads_words(u);
    for (unsigned i = 0; i < slot->footprints; i++) {
       if (!memcmp(key, slot->footprint_key[i], sizeof(key))) {
          ts->skip_footprint++;
-         tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
+         if (words) {
+            memcpy(rgba, slot->footprint_texels[i][comp & 3], sizeof(float[4][TGSI_QUAD_SIZE]));
+            tex_unit_gather_count(u, &slot->footprint[i]);
+         } else {
+            tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
+         }
          return;
       }
    }
@@ -422,7 +433,13 @@ static void fp_gather(struct fp_tgsi_sampler *ts, unsigned sview_index, const st
       slot->footprints++;
    tex_unit_gather_footprint(u, q, &slot->footprint[i]);
    memcpy(slot->footprint_key[i], key, sizeof(key));
-   tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
+   if (words) {
+      tex_unit_gather_read_all(u, &slot->footprint[i], q->ref, slot->footprint_texels[i]);
+      memcpy(rgba, slot->footprint_texels[i][comp & 3], sizeof(float[4][TGSI_QUAD_SIZE]));
+      tex_unit_gather_count(u, &slot->footprint[i]);
+   } else {
+      tex_unit_gather_read(u, &slot->footprint[i], q->ref, comp, rgba);
+   }
 }
 
 /* A gather reads the base level: its texel offsets as coordinate offsets

@@ -318,6 +318,16 @@ bool tex_unit_gather_footprint(const struct tex_unit *u, const struct tex_quad *
                                struct tex_footprint *f);
 void tex_unit_gather_read(const struct tex_unit *u, const struct tex_footprint *f,
                           const float ref[TEX_QUAD], unsigned comp, float rgba[4][TEX_QUAD]);
+/* Every channel of a footprint at once, rgba[c] what tex_unit_gather_read
+ * gives for channel c, counting no event: the 4-byte layouts' sixteen
+ * words read once for all their channels (where tex_unit_gather_reads_words,
+ * the unit's layout is one of them with no comparison), for a caller
+ * that keeps them for the run's other gathers of the footprint; and the
+ * events one gather of the footprint counts. */
+bool tex_unit_gather_reads_words(const struct tex_unit *u);
+void tex_unit_gather_read_all(const struct tex_unit *u, const struct tex_footprint *f,
+                              const float ref[TEX_QUAD], float rgba[4][4][TEX_QUAD]);
+void tex_unit_gather_count(const struct tex_unit *u, const struct tex_footprint *f);
 
 /* texelFetch: integer coordinates, level relative to the view; outside
  * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */

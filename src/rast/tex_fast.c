@@ -139,23 +139,16 @@ static void read_taps(const struct tex_unit *u, const struct tex_footprint *f,
    }
 }
 
-/* The same for a colour channel of the 4-byte layouts (no comparison):
- * the channel's byte of each of the sixteen texels, decoded as fetch
- * decodes it (tex_unorm8: the integer to binary32, times 1/255), the
- * other channels not decoded.  A tap at a time for the four pixels, with
- * no branch: a border tap reads the level's first texel and takes the
- * border colour instead. */
-static void read_byte(const struct tex_unit *u, const struct tex_footprint *f, unsigned ch,
-                      float rgba[4][TEX_QUAD])
+/* The 4-byte layouts' sixteen texel words of a footprint, a tap of the
+ * four pixels a vector, with no branch: a border tap (`in` 0) reads the
+ * level's first texel instead. */
+typedef int32_t v4i __attribute__((vector_size(16)));
+typedef uint32_t v4u __attribute__((vector_size(16)));
+
+static void read_words(const struct tex_unit *u, const struct tex_footprint *f, v4u w[4],
+                       v4i in[4])
 {
-   typedef int32_t v4i __attribute__((vector_size(16)));
-   typedef uint32_t v4u __attribute__((vector_size(16)));
    const struct tex_level *lv = &u->view.level[0];
-   const enum tex_format fmt = u->view.format;
-   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
-   const unsigned shift = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
-   const v4f border = { u->samp.border[ch], u->samp.border[ch], u->samp.border[ch],
-                        u->samp.border[ch] };
    v4i z;
    memcpy(&z, f->layer, sizeof(z));
    /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) */
@@ -164,37 +157,94 @@ static void read_byte(const struct tex_unit *u, const struct tex_footprint *f, u
       v4i x, y;
       memcpy(&x, f->x[xi[k]], sizeof(x));
       memcpy(&y, f->y[yi[k]], sizeof(y));
-      const v4i in = (x | y | z) >= 0;
-      x &= in;
-      y &= in;
-      const v4i zz = z & in;
-      v4u w;
+      in[k] = (x | y | z) >= 0;
+      x &= in[k];
+      y &= in[k];
+      const v4i zz = z & in[k];
       for (unsigned p = 0; p < TEX_QUAD; p++) {
          uint32_t t;
          memcpy(&t, lv->data + (size_t)zz[p] * lv->img_stride + (size_t)y[p] * lv->row_stride +
                        (size_t)x[p] * 4, 4);
-         w[p] = t;
+         w[k][p] = t;
       }
-      const v4i b = (v4i)((w >> shift) & 0xff);
+   }
+}
+
+/* A colour channel of those words, decoded as fetch decodes it
+ * (tex_unorm8: the integer to binary32, times 1/255), the border colour's
+ * where the tap is outside. */
+static void decode_byte(const struct tex_unit *u, const v4u w[4], const v4i in[4], unsigned ch,
+                        float rgba[4][TEX_QUAD])
+{
+   const enum tex_format fmt = u->view.format;
+   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
+   const unsigned shift = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
+   const float bc = u->samp.border[ch];
+   const v4f border = { bc, bc, bc, bc };
+   for (unsigned k = 0; k < 4; k++) {
+      const v4i b = (v4i)((w[k] >> shift) & 0xff);
       const v4f v = __builtin_convertvector(b, v4f) * (1.0f / 255.0f);
-      const v4i o = ((v4i)v & in) | ((v4i)border & ~in);
+      const v4i o = ((v4i)v & in[k]) | ((v4i)border & ~in[k]);
       memcpy(rgba[k], &o, sizeof(o));
    }
+}
+
+/* The swizzled channel `comp` comes from a byte of the 4-byte layouts (no
+ * comparison; not the 1 of an X layout's fourth): its byte, or none. */
+static bool byte_channel(const struct tex_unit *u, unsigned comp, unsigned *ch)
+{
+   const enum tex_format fmt = u->view.format;
+   const unsigned sw = u->view.swizzle[comp & 3];
+   const bool x8 = fmt == TEX_FMT_RGBX8 || fmt == TEX_FMT_BGRX8;
+   *ch = sw;
+   return fmt >= TEX_FMT_RGBA8 && fmt <= TEX_FMT_BGRX8 && !u->samp.compare &&
+          sw < (x8 ? 3u : 4u);
+}
+
+void tex_unit_gather_count(const struct tex_unit *u, const struct tex_footprint *f)
+{
+   u->stats->sat += f->events.sat;
+   u->stats->flush += f->events.flush;
 }
 
 void tex_unit_gather_read(const struct tex_unit *u, const struct tex_footprint *f,
                           const float ref[TEX_QUAD], unsigned comp, float rgba[4][TEX_QUAD])
 {
-   const enum tex_format fmt = u->view.format;
-   const unsigned sw = u->view.swizzle[comp & 3];
-   const bool x8 = fmt == TEX_FMT_RGBX8 || fmt == TEX_FMT_BGRX8;
-   /* a layout's colour channel, not the 1 of an X layout's fourth */
-   if (fmt >= TEX_FMT_RGBA8 && fmt <= TEX_FMT_BGRX8 && !u->samp.compare && sw < (x8 ? 3u : 4u))
-      read_byte(u, f, sw, rgba);
-   else
+   unsigned ch;
+   if (byte_channel(u, comp, &ch)) {
+      v4u w[4];
+      v4i in[4];
+      read_words(u, f, w, in);
+      decode_byte(u, w, in, ch, rgba);
+   } else {
       read_taps(u, f, ref, comp, rgba);
-   u->stats->sat += f->events.sat;
-   u->stats->flush += f->events.flush;
+   }
+   tex_unit_gather_count(u, f);
+}
+
+bool tex_unit_gather_reads_words(const struct tex_unit *u)
+{
+   const enum tex_format fmt = u->view.format;
+   return fmt >= TEX_FMT_RGBA8 && fmt <= TEX_FMT_BGRX8 && !u->samp.compare;
+}
+
+void tex_unit_gather_read_all(const struct tex_unit *u, const struct tex_footprint *f,
+                              const float ref[TEX_QUAD], float rgba[4][4][TEX_QUAD])
+{
+   v4u w[4];
+   v4i in[4];
+   bool loaded = false;
+   for (unsigned c = 0; c < 4; c++) {
+      unsigned ch;
+      if (byte_channel(u, c, &ch)) {
+         if (!loaded)
+            read_words(u, f, w, in);
+         loaded = true;
+         decode_byte(u, w, in, ch, rgba[c]);
+      } else {
+         read_taps(u, f, ref, c, rgba[c]);
+      }
+   }
 }
 
 tex_footprint_fn tex_fast_footprint_choose(const struct tex_unit *u, bool scalar)

@@ -551,7 +551,8 @@ static void rows_memo_runs(unsigned units, unsigned calls)
  * table path: the same bits and range events on random units, every
  * channel; chosen exactly for the 2-D views of dfx24 and binary32, and not
  * with `scalar`.  One footprint read for all four channels (the driver's
- * memo) gives each channel's gather and counts each gather's events. */
+ * memo), channel by channel and all at once, gives each channel's gather
+ * and counts each gather's events. */
 static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsigned per_unit)
 {
    const struct numsys *ns = numsys_by_name(name);
@@ -581,12 +582,18 @@ static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsi
                    s_gen.flush == s_fast.flush;
          struct tex_footprint f;
          if (ok && tex_unit_gather_footprint(&u, &q, &f)) {
+            /* every channel of one footprint read channel by channel, and
+             * all at once (with one gather's events counted a channel) */
+            float all[4][4][TEX_QUAD];
+            tex_unit_gather_read_all(&u, &f, q.ref, all);
             for (unsigned c = 0; c < 4; c++) {
                u.stats = &s_gen;
                tex_unit_gather_generic(&u, &q, c, r0);
+               tex_unit_gather_generic(&u, &q, c, r0);
                u.stats = &s_fast;
                tex_unit_gather_read(&u, &f, q.ref, c, r1);
-               ok &= !memcmp(r0, r1, sizeof(r0));
+               ok &= !memcmp(r0, r1, sizeof(r0)) && !memcmp(r0, all[c], sizeof(r0));
+               tex_unit_gather_count(&u, &f);
             }
             ok &= s_gen.sat == s_fast.sat && s_gen.flush == s_fast.flush;
          }
