@@ -269,6 +269,30 @@ static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
           fp_control(key) != TGSI_SAMPLER_DERIVS_EXPLICIT;
 }
 
+/* The quads of a call laid out by the code as struct tex_quad, the operands
+ * fp_tgsi_get_samples would build: s and t; `layer` (NULL: zero) in r and
+ * the layer; the reference zero; `lod` (NULL: zero). */
+#define FP_Q(member) (unsigned)(offsetof(struct tex_quad, member) / sizeof(float[RAST_QUAD_SIZE]))
+static LLVMValueRef fp_emit_tex_quads(struct gallivm_state *gallivm,
+                                      const struct lp_sampler_params *params, LLVMTypeRef fvec,
+                                      LLVMValueRef layer, LLVMValueRef lod, const char *name)
+{
+   const unsigned nq = fp_quads(params);
+   const unsigned per = sizeof(struct tex_quad) / sizeof(float[RAST_QUAD_SIZE]);
+   LLVMValueRef q = fp_vec_array(gallivm, fvec, per * nq, name);
+   for (unsigned k = 0; k < nq; k++) {
+      LLVMValueRef l = fp_jit_quad_part(gallivm, layer, k, nq);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_jit_quad_part(gallivm, params->coords[0], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_jit_quad_part(gallivm, params->coords[1], k, nq));
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(r), l);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(layer), l);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(ref), NULL);
+      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(lod), fp_jit_quad_part(gallivm, lod, k, nq));
+   }
+   return q;
+}
+#undef FP_Q
+
 /* A plain 2-D sample on the quads of a call: the struct tex_quad
  * fp_tgsi_get_samples would build, one a quad, stored by the code, and one
  * call into the unit's glue. */
@@ -283,19 +307,9 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
    LLVMTypeRef vp = LLVMPointerType(fvec, 0);
    LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
    const enum tgsi_sampler_control control = fp_control(params->sample_key);
-#define FP_Q(member) (unsigned)(offsetof(struct tex_quad, member) / sizeof(float[RAST_QUAD_SIZE]))
-   const unsigned per = sizeof(struct tex_quad) / sizeof(float[RAST_QUAD_SIZE]);
-   LLVMValueRef q = fp_vec_array(gallivm, fvec, per * nq, "tex_quad");
-   for (unsigned k = 0; k < nq; k++) {
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_jit_quad_part(gallivm, params->coords[0], k, nq));
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_jit_quad_part(gallivm, params->coords[1], k, nq));
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(r), NULL);
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(layer), NULL);
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(ref), NULL);
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(lod),
-                   control == TGSI_SAMPLER_LOD_NONE ? NULL : fp_jit_quad_part(gallivm, params->lod, k, nq));
-   }
-#undef FP_Q
+   LLVMValueRef q = fp_emit_tex_quads(gallivm, params, fvec, NULL,
+                                      control == TGSI_SAMPLER_LOD_NONE ? NULL : params->lod,
+                                      "tex_quad");
    LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
    LLVMValueRef texture = lp_build_const_int32(gallivm, params->texture_index);
    LLVMValueRef sampler = lp_build_const_int32(gallivm, params->sampler_index);
@@ -348,19 +362,8 @@ static void fp_emit_gather_quads(struct gallivm_state *gallivm,
    LLVMTypeRef vp = LLVMPointerType(fvec, 0);
    LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
    const bool array = target == TGSI_TEXTURE_2D_ARRAY;
-#define FP_Q(member) (unsigned)(offsetof(struct tex_quad, member) / sizeof(float[RAST_QUAD_SIZE]))
-   const unsigned per = sizeof(struct tex_quad) / sizeof(float[RAST_QUAD_SIZE]);
-   LLVMValueRef q = fp_vec_array(gallivm, fvec, per * nq, "gather_quad");
-   for (unsigned k = 0; k < nq; k++) {
-      LLVMValueRef layer = array ? fp_jit_quad_part(gallivm, params->coords[2], k, nq) : NULL;
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(s), fp_jit_quad_part(gallivm, params->coords[0], k, nq));
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(t), fp_jit_quad_part(gallivm, params->coords[1], k, nq));
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(r), layer);
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(layer), layer);
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(ref), NULL);
-      fp_store_vec(gallivm, q, fvec, k * per + FP_Q(lod), NULL);
-   }
-#undef FP_Q
+   LLVMValueRef q = fp_emit_tex_quads(gallivm, params, fvec,
+                                      array ? params->coords[2] : NULL, NULL, "gather_quad");
    LLVMValueRef off[2] = { lp_build_const_int32(gallivm, 0), lp_build_const_int32(gallivm, 0) };
    if (params->sample_key & LP_SAMPLER_OFFSETS)
       for (unsigned a = 0; a < 2; a++)
