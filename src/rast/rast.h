@@ -392,6 +392,10 @@ struct rast_stats {
     * coordinates had addressed (the driver's memo): their texels read,
     * their addressing not done again; a share of tex_quads */
    uint64_t skip_tex_footprint;
+   /* gather quads addressed and read by the unit's copy in compiled code
+    * (src/gallium-like/fp_jit_gather.c), not its C functions: a share of
+    * tex_quads */
+   uint64_t tex_gather_jit;
    /* quads given to a shader that does not read gl_FragCoord, without its
     * z and w (the Z register as a float, the 1/w walk): a share of quads */
    uint64_t skip_fragcoord;

@@ -329,6 +329,34 @@ void tex_unit_gather_read_all(const struct tex_unit *u, const struct tex_footpri
                               const float ref[TEX_QUAD], float rgba[4][4][TEX_QUAD]);
 void tex_unit_gather_count(const struct tex_unit *u, const struct tex_footprint *f);
 
+/* The registers a compiled copy of the specialised gather reads
+ * (src/gallium-like/fp_jit_gather.c): the dfx24 address stage of a 2-D or
+ * rectangle view clamped to its edges on both axes and the texel reads of
+ * the 4-byte layouts, for the gathers that raise no range event (the copy
+ * hands every other call to u->footprint and tex_unit_gather_read, which
+ * count them).  A dfx24 value is three words: sign, location, mantissa. */
+struct tex_gather_regs {
+   const uint8_t *data;            /* the base level's first texel */
+   int32_t row_stride;             /* bytes */
+   int32_t size[2];                /* texels per axis */
+   float offset_unit[2];           /* a texel offset in coordinate units is offset / this */
+   int32_t scale[2][3];            /* the coordinate's scale to texels */
+   int32_t lo[2][3], hi[2][3];     /* the clamp's bounds */
+   /* and their order as one signed word: +-(L << W | M), 0 for zero */
+   int32_t lo_key[2], hi_key[2];
+   int32_t neg_half[3];            /* -k_texel_offset: the footprint's corner */
+   /* per gathered component, after the swizzle: the byte's shift in the
+    * texel word, or -1 for the constant */
+   int32_t shift[4];
+   float constant[4];
+};
+/* Fills `r` and returns true where the unit's gathers can take the
+ * compiled copy: dfx24 at the seed's width, a 2-D or rectangle view of a
+ * 4-byte layout without comparison, CLAMP_TO_EDGE on both axes, 2 to 2^20
+ * columns (the copy reads a row's two texels as one 8-byte word) and up
+ * to 2^20 rows, every texel within 2^31 bytes of the first. */
+bool tex_unit_gather_regs(const struct tex_unit *u, struct tex_gather_regs *r);
+
 /* texelFetch: integer coordinates, level relative to the view; outside
  * the level gives (0, 0, 0, 0) before swizzle.  z is the layer or slice. */
 void tex_view_texel(const struct tex_view_desc *v, const int x[TEX_QUAD], const int y[TEX_QUAD],
@@ -349,6 +377,9 @@ struct rast_context;
 void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, uint64_t skip_lod,
                        uint64_t lod_quads, uint64_t skip_axes, uint64_t skip_footprint,
                        uint64_t quads, uint64_t texels);
+
+/* Adds gather quads the unit's copy in compiled code did (tex_gather_jit). */
+void tex_stats_jit_gathers(struct rast_context *rc, uint64_t quads);
 
 /* Pieces of the data path, for tests. */
 int32_t tex_lod_from_rho(const struct tex_unit *u, ns_val rho);       /* log2 */

@@ -247,6 +247,70 @@ void tex_unit_gather_read_all(const struct tex_unit *u, const struct tex_footpri
    }
 }
 
+static void dfx_words(ns_val v, int32_t w[3])
+{
+   w[0] = v.d.s;
+   w[1] = v.d.l;
+   w[2] = (int32_t)v.d.m;
+}
+
+/* tex_ns_cmp's order for normalized values: location, then mantissa. */
+static int32_t dfx_key(ns_val v)
+{
+   const int32_t mag = (int32_t)((uint32_t)v.d.l << DFX_MANT_BITS_SEED | v.d.m);
+   return !v.d.m ? 0 : v.d.s ? -mag : mag;
+}
+
+bool tex_unit_gather_regs(const struct tex_unit *u, struct tex_gather_regs *r)
+{
+   const struct tex_level *lv = &u->view.level[0];
+   const enum tex_format fmt = u->view.format;
+   if (u->footprint != footprint_dfx19 || !tex_unit_gather_reads_words(u) ||
+       (u->view.target != TEX_TARGET_2D && u->view.target != TEX_TARGET_RECT) ||
+       u->samp.wrap[0] != TEX_WRAP_CLAMP_TO_EDGE || u->samp.wrap[1] != TEX_WRAP_CLAMP_TO_EDGE ||
+       lv->w < 2 || lv->h < 1 || lv->w > (1 << 20) || lv->h > (1 << 20) ||
+       (uint64_t)lv->h * lv->row_stride > INT32_MAX)
+      return false;
+   memset(r, 0, sizeof(*r));
+   r->data = lv->data;
+   r->row_stride = (int32_t)lv->row_stride;
+   const int32_t size[2] = { lv->w, lv->h };
+   for (unsigned a = 0; a < 2; a++) {
+      r->size[a] = u->axis[0][a].size;
+      /* fp_gather_offsets: offsets move normalized coordinates by texels */
+      r->offset_unit[a] = u->samp.normalized ? (float)size[a] : 1.0f;
+      dfx_words(u->axis[0][a].scale, r->scale[a]);
+      dfx_words(u->axis[0][a].lo, r->lo[a]);
+      dfx_words(u->axis[0][a].hi, r->hi[a]);
+      r->lo_key[a] = dfx_key(u->axis[0][a].lo);
+      r->hi_key[a] = dfx_key(u->axis[0][a].hi);
+   }
+   dfx_words(u->k_texel_offset, r->neg_half);
+   r->neg_half[0] ^= 1;
+   const bool x8 = fmt == TEX_FMT_RGBX8 || fmt == TEX_FMT_BGRX8;
+   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
+   for (unsigned c = 0; c < 4; c++) {
+      unsigned ch;
+      if (byte_channel(u, c, &ch)) {
+         /* decode_byte's byte */
+         r->shift[c] = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
+         continue;
+      }
+      /* read_taps: the swizzle's constant, or an X layout's fourth (fetch's 1) */
+      const unsigned sw = u->view.swizzle[c];
+      r->shift[c] = -1;
+      if (sw == TEX_SWZ_0)
+         r->constant[c] = 0.0f;
+      else if (sw == TEX_SWZ_1)
+         r->constant[c] = tex_one(&u->view);
+      else if (x8 && sw == 3)
+         r->constant[c] = 1.0f;
+      else
+         return false;
+   }
+   return true;
+}
+
 tex_footprint_fn tex_fast_footprint_choose(const struct tex_unit *u, bool scalar)
 {
    if (scalar || (u->view.target != TEX_TARGET_2D && u->view.target != TEX_TARGET_2D_ARRAY &&

@@ -18,3 +18,8 @@ void tex_stats_to_rast(struct rast_context *rc, uint64_t sat, uint64_t flush, ui
    rc->stats.skip_tex_lod += skip_lod;
    rc->stats.tex_lod_quads += lod_quads;
 }
+
+void tex_stats_jit_gathers(struct rast_context *rc, uint64_t quads)
+{
+   rc->stats.tex_gather_jit += quads;
+}

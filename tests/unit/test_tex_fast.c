@@ -613,6 +613,75 @@ static void gathers_vs_generic(const char *name, bool fast, unsigned units, unsi
           fast_units, per_unit, bad);
 }
 
+/* The registers of the compiled gather (tex_unit_gather_regs): given
+ * exactly to the units it covers, their clamp bounds' keys in
+ * tex_ns_cmp's order, and each component's byte (or constant) what the
+ * unit's texel reads give for a footprint of one texel. */
+static void gather_regs(unsigned units)
+{
+   const struct numsys *ns = numsys_by_name("dfx24");
+   unsigned bad = 0, covered = 0;
+   for (unsigned i = 0; i < units; i++) {
+      struct tex_unit u;
+      struct ns_stats st = { 0, 0 };
+      rand_unit(&u, ns, &st);
+      if (rndn(2)) {   /* more of the covered kind than rand_unit makes */
+         struct tex_view_desc v = u.view;
+         struct tex_sampler_desc smp = u.samp;
+         smp.wrap[0] = smp.wrap[1] = TEX_WRAP_CLAMP_TO_EDGE;
+         smp.compare = false;
+         v.depth = false;
+         v.format = (enum tex_format)(TEX_FMT_RGBA8 + rndn(4));   /* the 4-byte layouts */
+         tex_unit_bind(&u, ns, &v, &smp, &st);
+      }
+      struct tex_gather_regs r;
+      const bool ok = tex_unit_gather_regs(&u, &r);
+      const enum tex_format f = u.view.format;
+      const bool want = u.footprint && !u.samp.compare && f >= TEX_FMT_RGBA8 &&
+                        f <= TEX_FMT_BGRX8 &&
+                        (u.view.target == TEX_TARGET_2D || u.view.target == TEX_TARGET_RECT) &&
+                        u.samp.wrap[0] == TEX_WRAP_CLAMP_TO_EDGE &&
+                        u.samp.wrap[1] == TEX_WRAP_CLAMP_TO_EDGE && u.view.level[0].w >= 2;
+      if (ok != want && bad++ < 5)
+         CHECK(0, "unit %u: registers %s (target %d fmt %d wrap %d/%d compare %d w %d)", i,
+               ok ? "given" : "refused", u.view.target, f, u.samp.wrap[0], u.samp.wrap[1],
+               u.samp.compare, u.view.level[0].w);
+      if (!ok)
+         continue;
+      covered++;
+      for (unsigned a = 0; a < 2; a++) {
+         const int c = tex_ns_cmp(TEX_NS_DFX, u.axis[0][a].lo, u.axis[0][a].hi);
+         if ((c > 0) != (r.lo_key[a] > r.hi_key[a]) || (c == 0) != (r.lo_key[a] == r.hi_key[a]))
+            bad++;
+      }
+      /* a footprint of one texel, every tap on it */
+      struct tex_footprint fp;
+      memset(&fp, 0, sizeof(fp));
+      const int x = (int)rndn((unsigned)u.view.level[0].w), y = (int)rndn((unsigned)u.view.level[0].h);
+      for (unsigned p = 0; p < TEX_QUAD; p++) {
+         fp.x[0][p] = fp.x[1][p] = x;
+         fp.y[0][p] = fp.y[1][p] = y;
+      }
+      uint32_t word;
+      memcpy(&word, u.view.level[0].data + (size_t)y * u.view.level[0].row_stride + (size_t)x * 4, 4);
+      const float ref[TEX_QUAD] = { 0, 0, 0, 0 };
+      for (unsigned c = 0; c < 4; c++) {
+         float rgba[4][TEX_QUAD];
+         tex_unit_gather_read(&u, &fp, ref, c, rgba);
+         const float want_c = r.shift[c] < 0 ? r.constant[c]
+                                             : (float)(int32_t)((word >> r.shift[c]) & 0xff) *
+                                                  (1.0f / 255.0f);
+         if (memcmp(&want_c, &rgba[0][0], sizeof(float)) && bad++ < 5)
+            CHECK(0, "unit %u component %u (swizzle %u, fmt %d): %a from the registers, %a read",
+                  i, c, u.view.swizzle[c], f, (double)want_c, (double)rgba[0][0]);
+      }
+   }
+   CHECK(bad == 0, "compiled gather registers: %u of %u units wrong", bad, units);
+   CHECK(covered > units / 10, "only %u of %u units covered by the compiled gather", covered,
+         units);
+   printf("  %u units, %u covered by the compiled gather: %u wrong\n", units, covered, bad);
+}
+
 int main(void)
 {
    for (unsigned l = 0; l < MAXL; l++)
@@ -637,6 +706,8 @@ int main(void)
    gathers_vs_generic("dfx24", true, 2000, 200);
    gathers_vs_generic("float", true, 2000, 200);
    gathers_vs_generic("dfx23", false, 100, 50);
+   printf("compiled gather's registers:\n");
+   gather_regs(4000);
    printf("  %llu quads on lanes, %llu of them without a LOD\n", (unsigned long long)lanes_quads,
           (unsigned long long)nolod_quads);
    CHECK(nolod_quads > 10000, "only %llu quads left the LOD out", (unsigned long long)nolod_quads);
