@@ -202,6 +202,8 @@ static void fp_print_stats(const struct fp_context *fp)
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
            quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead,
            fp->jit_stats.hot_loop);
+   fprintf(stderr, "  gathers in compiled code: quads %" PRIu64 " addressed and read there, the "
+           "rest through the texture unit's C functions\n", st->tex_gather_jit);
    fprintf(stderr, "  threads %u: primitives drawn on one thread %" PRIu64 ", on all %" PRIu64
            "; large clears filled by one thread %" PRIu64 ", divided %" PRIu64,
            rast_get_threads(fp->rast), serial, parallel, jobs_serial, jobs_parallel);

@@ -283,6 +283,15 @@ void fp_tgsi_gather_quads(struct tgsi_sampler *s, uint32_t sview_index, uint32_t
                           uint32_t max, const struct tex_quad *q, float rgba[][4][4]);
 /* What it counted so far, into rc's counters (not while rc's thread draws). */
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *s, struct rast_context *rc);
+/* What compiled gathers read and count (fp_jit_context): the sampler's
+ * table of units' registers, its context's binding epoch, its counter. */
+struct fp_jit_gather;
+void fp_tgsi_sampler_jit_gathers(struct tgsi_sampler *s, const struct fp_jit_gather **gathers,
+                                 const uint64_t **epoch, uint64_t **gathered);
+/* The registers of the (texture, sampler) pairs compiled gathers read,
+ * filled where the binding epoch has changed. */
+void fp_tgsi_sampler_jit_prepare(struct fp_tgsi_sampler *s, const uint8_t (*units)[2],
+                                 unsigned n);
 void fp_init_sampler_view(struct fp_sampler_view *view);
 
 /* fp_query.c: false when conditional rendering says skip. */

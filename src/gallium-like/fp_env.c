@@ -45,6 +45,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "large clears filled by the calling thread alone, not divided between the threads" },
    { "nof32", FP_DEBUG_NOF32,
      "the perspective division on binary64 lanes only, not four quads on binary32 lanes (same bits)" },
+   { "nojitgather", FP_DEBUG_NOJITGATHER,
+     "compiled shaders' gathers call the texture unit's C functions, not its copy in the compiled code (same bits)" },
    DEBUG_NAMED_VALUE_END
 };
 

@@ -150,6 +150,8 @@ static unsigned fp_fs_shade_n_jit(void *ctx, const struct rast_quad *const q[],
    }
    th->jit_ctx.quads = n;
    fp_tgsi_sampler_begin(th->sampler);
+   if (v->num_gather_units)
+      fp_tgsi_sampler_jit_prepare(th->sampler, v->gather_units, v->num_gather_units);
    v->func(&th->jit_ctx, qs, outs, &lanes[0][0]);
    th->quads_jit += n;
    unsigned kept = 0;

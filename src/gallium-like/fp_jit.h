@@ -21,6 +21,7 @@ struct gallivm_state;   /* lp_bld_jit_types.h does not declare it */
 #include "gallivm/lp_bld_jit_types.h"
 #include "gallivm/lp_bld_limits.h"
 #include "rast/rast.h"
+#include "rast/tex.h"
 
 struct tgsi_sampler;
 struct lp_type;
@@ -50,14 +51,34 @@ struct fp_jit_context {
    void (*gather_quads)(struct tgsi_sampler *s, uint32_t texture, uint32_t sampler,
                         uint32_t comp, int32_t offset_s, int32_t offset_t, uint32_t quads,
                         uint32_t max, const struct tex_quad *q, float rgba[][4][RAST_QUAD_SIZE]);
+   /* gathers in the code itself (fp_jit_gather.c): the units' registers
+    * by texture index, valid in the binding epoch the context is in; and
+    * the quads gathered so, counted with the unit's (fp_sampler.c) */
+   const struct fp_jit_gather *gathers;
+   const uint64_t *tex_epoch;
+   uint64_t *gathered;
    /* the quads a call of the function shades: up to its quads a call, the
     * lanes of the others repeating the first quad's (a quad alone, the
     * last of a primitive) */
    uint32_t quads;
 };
 
+/* A texture unit's registers for compiled gathers, filled before the
+ * compiled code's first call in a binding epoch (fp_tgsi_sampler_jit_prepare):
+ * valid where `valid` is set, `epoch` is the context's and `sampler` the
+ * instruction's sampler index; the C glue gathers otherwise. */
+struct fp_jit_gather {
+   uint64_t epoch;
+   uint32_t sampler;
+   uint32_t valid;
+   struct tex_gather_regs regs;
+};
+
 /* Quads a call of the compiled code at most: sixteen lanes. */
 #define FP_JIT_MAX_QUADS 4
+/* (texture, sampler) pairs of gathers in the code a shader at most; a
+ * gather beyond them goes through the C glue */
+#define FP_JIT_GATHER_UNITS 8
 
 /* The compiled function on its quads a call (their lanes one after the
  * other, quad i from q[i], its outputs to out[i]).  mask: in, the covered
@@ -68,6 +89,12 @@ typedef void (*fp_jit_fs_func)(const struct fp_jit_context *ctx, const struct ra
 struct fp_jit_variant {
    struct gallivm_state *gallivm;
    fp_jit_fs_func func;
+   /* the texture and sampler indices of the gathers the code does itself:
+    * their registers are filled before a call (fp_fs_shade_n_jit), so that
+    * which calls gather in the code depends on the coordinates alone, not
+    * on which thread shades a call first */
+   uint8_t gather_units[FP_JIT_GATHER_UNITS][2];
+   unsigned num_gather_units;
    /* quads a call: 4 (sixteen lanes) for a shader that samples a texture
     * where the texture unit has its four-quad functions, else 2; 1 with
     * noskip */
@@ -94,10 +121,28 @@ struct lp_build_sampler_soa;
 struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
                                                   void *nir_shader);
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);
+/* The (texture, sampler) pairs the code built so far gathers from itself. */
+unsigned fp_jit_sampler_gather_units(const struct lp_build_sampler_soa *sampler,
+                                     uint8_t units[FP_JIT_GATHER_UNITS][2]);
 /* Quad k's four lanes of a vector of nq quads' lanes (NULL stays NULL),
  * and the vector of nq quads' lanes from each quad's four. */
 LLVMValueRef fp_jit_quad_part(struct gallivm_state *gallivm, LLVMValueRef v, unsigned k,
                               unsigned nq);
+/* fp_jit_gather.c: the unit's gather on n lanes from the registers at
+ * `regs` (an i8 pointer to struct tex_gather_regs): axis a's two texels
+ * (the footprint's columns, or rows) from its coordinate moved by a
+ * constant texel offset, returning the lanes that raised no range event
+ * nor need the C path; whether every lane of both axes did; then channel
+ * comp's four texels from the columns xy[0] and rows xy[1], reading their
+ * four texel words (to words[4]) unless an earlier gather read them
+ * (words_in). */
+LLVMValueRef fp_jit_gather_axis(struct gallivm_state *gallivm, LLVMValueRef regs, unsigned n,
+                                unsigned a, LLVMValueRef coord, int offset, LLVMValueRef i[2]);
+LLVMValueRef fp_jit_gather_all(struct gallivm_state *gallivm, unsigned n, LLVMValueRef a,
+                               LLVMValueRef b);
+void fp_jit_gather_read(struct gallivm_state *gallivm, LLVMValueRef regs, unsigned n,
+                        unsigned comp, LLVMValueRef xy[2][2], const LLVMValueRef *words_in,
+                        LLVMValueRef words[4], LLVMValueRef texel[4]);
 LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[],
                                struct lp_type type4, unsigned nq);
 

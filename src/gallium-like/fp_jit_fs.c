@@ -549,8 +549,9 @@ static void fp_jit_cache_key(const struct tgsi_token *tokens, const nir_shader *
    unsigned char sha1[20];
    /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad;
     * 4: two quads a call; 5: the quads by pointer arrays, four a call for
-    * texturing shaders; 6: st's NIR, gathers and multisample fetches */
-   static const char version[] = "fixpipe fs quad 6";
+    * texturing shaders; 6: st's NIR, gathers and multisample fetches;
+    * 7: gathers of 2-D views in the code */
+   static const char version[] = "fixpipe fs quad 7";
    /* the quads a call (noskip: one, which also leaves the quads laid out
     * by the code out: fp_jit_sample.c) */
    _mesa_sha1_init(&ctx);
@@ -643,6 +644,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    }
    LLVMValueRef func = fp_build_fs(v->gallivm, nir, info, sampler, depth_output, color_output,
                                    num_color_outputs, v->quads);
+   v->num_gather_units = fp_jit_sampler_gather_units(sampler, v->gather_units);
    gallivm_compile_module(v->gallivm);
    v->func = (fp_jit_fs_func)gallivm_jit_function(v->gallivm, func);
    if (cache && v->func && !v->cache_hit && cached.data_size && !cached.dont_cache)

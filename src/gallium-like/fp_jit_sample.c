@@ -34,10 +34,38 @@
 /* the TGSI target of a texture instruction, carried above the gallivm sample key */
 #define FP_KEY_TARGET_SHIFT 16
 
+/* What compiled gathers have computed, for the gathers after them (a
+ * shader gathering colour asks for red, green and blue of one footprint
+ * in turn; a filter gathers blocks side by side from one coordinate and
+ * constant offsets, which share their columns and rows): per texture and
+ * sampler the decision to gather in the code (registers valid, every lane
+ * of its axes within the copy), per axis its coordinate's two texels, per
+ * footprint its texel words (undefined where the decision was not to). */
+enum fp_jit_memo_kind { FP_MEMO_VALID, FP_MEMO_AXIS, FP_MEMO_FOOTPRINT };
+struct fp_jit_memo {
+   enum fp_jit_memo_kind kind;
+   unsigned texture, sampler, axis;
+   LLVMValueRef coord[2];
+   int offset[2];
+   LLVMValueRef v[4];     /* valid: v[0]; axis: i0, i1, the lanes' ok; footprint: its words */
+   LLVMValueRef fast, xy[2][2];   /* footprint: the decision, its columns and rows */
+};
+#define FP_JIT_MEMOS 32
+
 struct fp_jit_sampler {
    struct lp_build_sampler_soa base;
    /* per texture index, from the shader's texture instructions */
    uint8_t tgsi_target[PIPE_MAX_SHADER_SAMPLER_VIEWS];
+   /* the memo of the last gathers, valid in block `memo_block` alone: the
+    * merge block of the last gather, which every block its values were
+    * computed in dominates (gathers one after the other, nothing branching
+    * between them) */
+   LLVMBasicBlockRef memo_block;
+   /* the (texture, sampler) pairs of the gathers done in the code */
+   uint8_t units[FP_JIT_GATHER_UNITS][2];
+   unsigned num_units;
+   unsigned memos, memo_next;
+   struct fp_jit_memo memo[FP_JIT_MEMOS];
 };
 
 static enum tgsi_texture_type fp_tgsi_target(const nir_tex_instr *tex)
@@ -149,6 +177,7 @@ static void fp_jit_size(struct tgsi_sampler *s, uint32_t texture, int32_t lod, i
 
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s)
 {
+   fp_tgsi_sampler_jit_gathers(s, &ctx->gathers, &ctx->tex_epoch, &ctx->gathered);
    ctx->sampler = s;
    ctx->sample = fp_jit_sample;
    ctx->size = fp_jit_size;
@@ -243,7 +272,7 @@ LLVMValueRef fp_jit_join_quads(struct gallivm_state *gallivm, LLVMValueRef v[],
 
 /* The texel vectors of nq quads' result arrays, each 4 vectors. */
 static void fp_load_texels(struct gallivm_state *gallivm, struct lp_type type4,
-                           LLVMValueRef rgba, unsigned nq, const struct lp_sampler_params *params)
+                           LLVMValueRef rgba, unsigned nq, LLVMValueRef texel[4])
 {
    LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
    for (unsigned c = 0; c < 4; c++) {
@@ -253,7 +282,7 @@ static void fp_load_texels(struct gallivm_state *gallivm, struct lp_type type4,
          v[k] = LLVMBuildLoad2(gallivm->builder, fvec,
                                LLVMBuildGEP2(gallivm->builder, fvec, rgba, &idx, 1, ""), "");
       }
-      params->texel[c] = fp_jit_join_quads(gallivm, v, type4, nq);
+      texel[c] = fp_jit_join_quads(gallivm, v, type4, nq);
    }
 }
 
@@ -321,7 +350,7 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
                            q, rgba };
    fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quads),
                     arg_types, args, ARRAY_SIZE(args));
-   fp_load_texels(gallivm, type4, rgba, nq, params);
+   fp_load_texels(gallivm, type4, rgba, nq, params->texel);
 }
 
 /* Whether an instruction is a gather the code can lay out itself: a
@@ -347,10 +376,10 @@ static bool fp_gather_2d(enum tgsi_texture_type target, const struct lp_sampler_
 }
 
 /* Such a gather on the quads of a call: their struct tex_quad stored by
- * the code, and one call into the unit's glue. */
-static void fp_emit_gather_quads(struct gallivm_state *gallivm,
-                                 const struct lp_sampler_params *params,
-                                 enum tgsi_texture_type target)
+ * the code, and one call into the unit's glue; the texels to texel[4]. */
+static void fp_emit_gather_call(struct gallivm_state *gallivm,
+                                const struct lp_sampler_params *params,
+                                enum tgsi_texture_type target, LLVMValueRef texel[4])
 {
    LLVMContextRef lc = gallivm->context;
    LLVMBuilderRef b = gallivm->builder;
@@ -383,7 +412,199 @@ static void fp_emit_gather_quads(struct gallivm_state *gallivm,
                            lp_build_const_int32(gallivm, nq), q, rgba };
    fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, gather_quads),
                     arg_types, args, ARRAY_SIZE(args));
-   fp_load_texels(gallivm, type4, rgba, nq, params);
+   fp_load_texels(gallivm, type4, rgba, nq, texel);
+}
+
+/* The same value: one, or elements taken from one aggregate alike (gallivm
+ * takes a NIR value's channel anew for each instruction that reads it). */
+static bool fp_same_value(LLVMValueRef a, LLVMValueRef b)
+{
+   if (a == b)
+      return true;
+   if (!a || !b || !LLVMIsAExtractValueInst(a) || !LLVMIsAExtractValueInst(b) ||
+       LLVMGetOperand(a, 0) != LLVMGetOperand(b, 0) || LLVMGetNumIndices(a) != LLVMGetNumIndices(b))
+      return false;
+   return !memcmp(LLVMGetIndices(a), LLVMGetIndices(b), LLVMGetNumIndices(a) * sizeof(unsigned));
+}
+
+/* The memo's entry of a kind for these operands: the one there, or a new
+ * one, empty (its values NULL), in place of the oldest. */
+static struct fp_jit_memo *fp_jit_memo(struct fp_jit_sampler *js, enum fp_jit_memo_kind kind,
+                                       const struct lp_sampler_params *params, unsigned axis,
+                                       const LLVMValueRef coord[2], const int offset[2])
+{
+   for (unsigned i = 0; i < js->memos; i++) {
+      struct fp_jit_memo *e = &js->memo[i];
+      if (e->kind == kind && e->texture == params->texture_index &&
+          e->sampler == params->sampler_index && e->axis == axis &&
+          fp_same_value(e->coord[0], coord[0]) && fp_same_value(e->coord[1], coord[1]) &&
+          e->offset[0] == offset[0] && e->offset[1] == offset[1])
+         return e;
+   }
+   struct fp_jit_memo *e = &js->memo[js->memo_next];
+   js->memo_next = (js->memo_next + 1) % FP_JIT_MEMOS;
+   if (js->memos < FP_JIT_MEMOS)
+      js->memos++;
+   memset(e, 0, sizeof(*e));
+   e->kind = kind;
+   e->texture = params->texture_index;
+   e->sampler = params->sampler_index;
+   e->axis = axis;
+   e->coord[0] = coord[0];
+   e->coord[1] = coord[1];
+   e->offset[0] = offset[0];
+   e->offset[1] = offset[1];
+   return e;
+}
+
+/* A 2-D or rectangle gather: in the code (fp_jit_gather.c) where the
+ * unit's registers are valid and no lane needs the C glue, else the call
+ * of fp_emit_gather_call; one branch on a value common to the call and a
+ * phi of the texels.  A gather of the footprint a gather just before it
+ * addressed takes its decision, addressing and texel words. */
+static void fp_emit_gather_quads(struct fp_jit_sampler *js, struct gallivm_state *gallivm,
+                                 const struct lp_sampler_params *params,
+                                 enum tgsi_texture_type target)
+{
+   LLVMBuilderRef b = gallivm->builder;
+   LLVMContextRef lc = gallivm->context;
+   int offset[2] = { 0, 0 };
+   bool compiled = target != TGSI_TEXTURE_2D_ARRAY;
+   if (compiled && (params->sample_key & LP_SAMPLER_OFFSETS))
+      for (unsigned a = 0; a < 2; a++) {
+         LLVMValueRef o = params->offsets[a];
+         if (LLVMGetTypeKind(LLVMTypeOf(o)) == LLVMVectorTypeKind)
+            o = LLVMBuildExtractElement(b, o, lp_build_const_int32(gallivm, 0), "");
+         if (!LLVMIsAConstantInt(o))
+            compiled = false;
+         else
+            offset[a] = (int)LLVMConstIntGetSExtValue(o);
+      }
+   /* the pair among the variant's (its registers filled before a call) */
+   unsigned u = 0;
+   while (compiled && u < js->num_units &&
+          (js->units[u][0] != params->texture_index || js->units[u][1] != params->sampler_index))
+      u++;
+   if (compiled && u == js->num_units) {
+      if (u == FP_JIT_GATHER_UNITS || params->texture_index >= PIPE_MAX_SAMPLERS ||
+          params->sampler_index >= PIPE_MAX_SAMPLERS) {
+         compiled = false;
+      } else {
+         js->units[u][0] = (uint8_t)params->texture_index;
+         js->units[u][1] = (uint8_t)params->sampler_index;
+         js->num_units++;
+      }
+   }
+   if (!compiled) {
+      fp_emit_gather_call(gallivm, params, target, params->texel);
+      return;
+   }
+   LLVMTypeRef i8 = LLVMInt8TypeInContext(lc), i32 = LLVMInt32TypeInContext(lc);
+   LLVMTypeRef i64 = LLVMInt64TypeInContext(lc);
+   LLVMTypeRef i8p = LLVMPointerType(i8, 0);
+   const unsigned n = params->type.length, nq = fp_quads(params);
+   const unsigned comp =
+      (params->sample_key & LP_SAMPLER_GATHER_COMP_MASK) >> LP_SAMPLER_GATHER_COMP_SHIFT;
+
+   /* the registers of this texture's entry */
+   LLVMValueRef gathers = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                          offsetof(struct fp_jit_context, gathers), i8p);
+   LLVMValueRef at = lp_build_const_int32(gallivm, (int)(params->texture_index *
+                                                         sizeof(struct fp_jit_gather)));
+   LLVMValueRef entry = LLVMBuildGEP2(b, i8, gathers, &at, 1, "");
+   at = lp_build_const_int32(gallivm, (int)offsetof(struct fp_jit_gather, regs));
+   LLVMValueRef regs = LLVMBuildGEP2(b, i8, entry, &at, 1, "");
+
+   if (LLVMGetInsertBlock(b) != js->memo_block)
+      js->memos = js->memo_next = 0;
+   const LLVMValueRef none[2] = { NULL, NULL };
+   const int zero[2] = { 0, 0 };
+   struct fp_jit_memo *f = fp_jit_memo(js, FP_MEMO_FOOTPRINT, params, 0, params->coords, offset);
+   const bool again = f->fast != NULL;
+   if (!again) {
+      struct fp_jit_memo *v = fp_jit_memo(js, FP_MEMO_VALID, params, 0, none, zero);
+      if (!v->v[0]) {
+         /* this texture's registers valid in this epoch for this sampler */
+         LLVMValueRef epoch_p = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                                offsetof(struct fp_jit_context, tex_epoch),
+                                                LLVMPointerType(i64, 0));
+         LLVMValueRef epoch = LLVMBuildLoad2(b, i64, epoch_p, "");
+#define FIELD(type, member) \
+   LLVMBuildLoad2(b, type, \
+                  LLVMBuildBitCast(b, LLVMBuildGEP2(b, i8, entry, \
+                                                    (LLVMValueRef[]){ lp_build_const_int32(gallivm, \
+                                                       (int)offsetof(struct fp_jit_gather, member)) }, \
+                                                    1, ""), \
+                                   LLVMPointerType(type, 0), ""), "")
+         v->v[0] = LLVMBuildAnd(b,
+            LLVMBuildICmp(b, LLVMIntEQ, FIELD(i64, epoch), epoch, ""),
+            LLVMBuildAnd(b, LLVMBuildICmp(b, LLVMIntEQ, FIELD(i32, sampler),
+                                          lp_build_const_int32(gallivm, params->sampler_index), ""),
+                         LLVMBuildICmp(b, LLVMIntNE, FIELD(i32, valid),
+                                       lp_build_const_int32(gallivm, 0), ""), ""), "");
+#undef FIELD
+      }
+      /* the addressing does not wait for the decision: it reads no texel,
+       * and where the registers are not valid its values are unused */
+      LLVMValueRef ok[2];
+      for (unsigned a = 0; a < 2; a++) {
+         const LLVMValueRef co[2] = { params->coords[a], NULL };
+         const int off[2] = { offset[a], 0 };
+         struct fp_jit_memo *x = fp_jit_memo(js, FP_MEMO_AXIS, params, a, co, off);
+         if (!x->v[2])
+            x->v[2] = fp_jit_gather_axis(gallivm, regs, n, a, params->coords[a], offset[a], x->v);
+         f->xy[a][0] = x->v[0];
+         f->xy[a][1] = x->v[1];
+         ok[a] = x->v[2];
+      }
+      f->fast = LLVMBuildAnd(b, v->v[0], fp_jit_gather_all(gallivm, n, ok[0], ok[1]), "");
+   }
+   LLVMValueRef func = LLVMGetBasicBlockParent(LLVMGetInsertBlock(b));
+   LLVMBasicBlockRef read_bb = LLVMAppendBasicBlockInContext(lc, func, "gather_read");
+   LLVMBasicBlockRef call_bb = LLVMAppendBasicBlockInContext(lc, func, "gather_call");
+   LLVMBasicBlockRef merge_bb = LLVMAppendBasicBlockInContext(lc, func, "gather_merge");
+   LLVMBuildCondBr(b, f->fast, read_bb, call_bb);
+
+   LLVMPositionBuilderAtEnd(b, read_bb);
+   LLVMValueRef fast[4], words[4];
+   fp_jit_gather_read(gallivm, regs, n, comp, f->xy, again ? f->v : NULL, words, fast);
+   /* the quads counted as the glue counts them: the real ones */
+   LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                        offsetof(struct fp_jit_context, quads), i32);
+   LLVMValueRef one = lp_build_const_int32(gallivm, 1), max = lp_build_const_int32(gallivm, nq);
+   quads = LLVMBuildSelect(b, LLVMBuildICmp(b, LLVMIntULT, quads, one, ""), one, quads, "");
+   quads = LLVMBuildSelect(b, LLVMBuildICmp(b, LLVMIntUGT, quads, max, ""), max, quads, "");
+   LLVMValueRef count_p = fp_ctx_load_ptr(gallivm, params->context_ptr,
+                                          offsetof(struct fp_jit_context, gathered),
+                                          LLVMPointerType(i64, 0));
+   LLVMBuildStore(b, LLVMBuildAdd(b, LLVMBuildLoad2(b, i64, count_p, ""),
+                                  LLVMBuildZExt(b, quads, i64, ""), ""), count_p);
+   LLVMBasicBlockRef read_end = LLVMGetInsertBlock(b);
+   LLVMBuildBr(b, merge_bb);
+
+   LLVMPositionBuilderAtEnd(b, call_bb);
+   LLVMValueRef slow[4];
+   fp_emit_gather_call(gallivm, params, target, slow);
+   LLVMBasicBlockRef call_end = LLVMGetInsertBlock(b);
+   LLVMBuildBr(b, merge_bb);
+
+   LLVMPositionBuilderAtEnd(b, merge_bb);
+   LLVMBasicBlockRef from[2] = { read_end, call_end };
+   for (unsigned c = 0; c < 4; c++) {
+      LLVMValueRef phi = LLVMBuildPhi(b, LLVMTypeOf(fast[c]), "");
+      LLVMValueRef in[2] = { fast[c], slow[c] };
+      LLVMAddIncoming(phi, in, from, 2);
+      params->texel[c] = phi;
+      /* the words for the gathers after it, which read them only where
+       * this one read them (the same decision) */
+      if (!again) {
+         LLVMValueRef w = LLVMBuildPhi(b, LLVMTypeOf(words[c]), "");
+         LLVMValueRef win[2] = { words[c], LLVMGetUndef(LLVMTypeOf(words[c])) };
+         LLVMAddIncoming(w, win, from, 2);
+         f->v[c] = w;
+      }
+   }
+   js->memo_block = merge_bb;
 }
 
 /* Any other texture instruction, quad k of nq: its operands where tgsi_exec
@@ -470,7 +691,7 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
       return;
    }
    if (nq >= 2 && fp_gather_2d(target, params)) {
-      fp_emit_gather_quads(gallivm, params, target);
+      fp_emit_gather_quads((struct fp_jit_sampler *)js, gallivm, params, target);
       return;
    }
 
@@ -498,7 +719,7 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
          lp_build_endif(&ifs);
       }
    }
-   fp_load_texels(gallivm, type4, rgba, nq, params);
+   fp_load_texels(gallivm, type4, rgba, nq, params->texel);
 }
 
 static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
@@ -539,6 +760,14 @@ static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
       LLVMValueRef v = LLVMBuildLoad2(b, i32, LLVMBuildGEP2(b, i32, dims, &idx, 1, ""), "");
       params->sizes_out[c] = lp_build_broadcast_scalar(&int_bld, v);
    }
+}
+
+unsigned fp_jit_sampler_gather_units(const struct lp_build_sampler_soa *sampler,
+                                     uint8_t units[FP_JIT_GATHER_UNITS][2])
+{
+   const struct fp_jit_sampler *js = (const struct fp_jit_sampler *)sampler;
+   memcpy(units, js->units, sizeof(js->units));
+   return js->num_units;
 }
 
 struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,

@@ -19,6 +19,7 @@
 #include "tgsi/tgsi_exec.h"
 
 #include "fp_context.h"
+#include "fp_jit.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
 #include "rast/tex.h"
@@ -84,6 +85,11 @@ struct fp_tgsi_sampler {
    uint64_t skip_footprint;       /* gather quads that read the slot's footprint */
    uint64_t run;                  /* runs of the fragment shader begun (fp_tgsi_sampler_begin) */
    uint64_t texels;               /* texel reads of the filters (tex_unit.taps) */
+   /* the units' registers for compiled gathers (fp_jit_gather.c), filled
+    * before the compiled code's first call in a binding epoch; and the
+    * quads compiled code gathered from them */
+   struct fp_jit_gather gather[PIPE_MAX_SAMPLERS];
+   uint64_t gathered_jit;
    /* made at the unit's first binding: about 6 KB each, 32 a stage, and most
     * programs sample from a few units of one or two stages */
    struct fp_tex_slot *slot[PIPE_MAX_SAMPLERS];
@@ -352,8 +358,23 @@ static enum tex_lod_control fp_lod_control(enum tgsi_sampler_control c)
 }
 
 /* The sampler's counts into the model's counters (FIXPIPE_STATS). */
+void fp_tgsi_sampler_jit_gathers(struct tgsi_sampler *s, const struct fp_jit_gather **gathers,
+                                 const uint64_t **epoch, uint64_t **gathered)
+{
+   struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)s;
+   *gathers = ts->gather;
+   *epoch = &ts->fp->tex_epoch;
+   *gathered = &ts->gathered_jit;
+}
+
 void fp_tgsi_sampler_flush_stats(struct fp_tgsi_sampler *ts, struct rast_context *rc)
 {
+   /* compiled gathers: the counts fp_gather_quad keeps, and none of its
+    * range events (such calls take the glue) */
+   ts->quads += ts->gathered_jit;
+   ts->texels += 4 * 4 * ts->gathered_jit;
+   tex_stats_jit_gathers(rc, ts->gathered_jit);
+   ts->gathered_jit = 0;
    tex_stats_to_rast(rc, ts->stats.sat, ts->stats.flush, ts->skip_lod, ts->lod_quads,
                      ts->skip_axes, ts->skip_footprint, ts->quads, ts->texels);
    ts->stats.sat = ts->stats.flush = ts->skip_lod = ts->lod_quads = 0;
@@ -592,6 +613,44 @@ void fp_tgsi_sample_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_inde
       fp_unit_sample(ts, u, q, n, (enum tgsi_sampler_control)control, rgba);
 }
 
+
+/* The unit's registers for compiled gathers, once a binding epoch, before
+ * the compiled code's first call in it (fp_tgsi_sampler_jit_prepare): not
+ * valid under noskip (every request binds) or FIXPIPE_DEBUG=nojitgather,
+ * nor for a unit the compiled copy does not cover (tex_unit_gather_regs). */
+static void fp_jit_gather_fill(struct fp_tgsi_sampler *ts, unsigned sview_index,
+                               unsigned sampler_index, const struct tex_unit *u)
+{
+   struct fp_jit_gather *g = &ts->gather[sview_index];
+   const uint64_t epoch = ts->fp->tex_epoch;
+   if (g->epoch == epoch && g->sampler == sampler_index)
+      return;
+   g->epoch = epoch;
+   g->sampler = sampler_index;
+   g->valid = !ts->rebind && !(fp_env_debug() & FP_DEBUG_NOJITGATHER) &&
+              ts->stage == PIPE_SHADER_FRAGMENT && tex_unit_gather_regs(u, &g->regs);
+}
+
+void fp_tgsi_sampler_jit_prepare(struct fp_tgsi_sampler *ts, const uint8_t (*units)[2],
+                                 unsigned n)
+{
+   const uint64_t epoch = ts->fp->tex_epoch;
+   for (unsigned i = 0; i < n; i++) {
+      const unsigned t = units[i][0], smp = units[i][1];
+      struct fp_jit_gather *g = &ts->gather[t];
+      if (g->epoch == epoch && g->sampler == smp)
+         continue;
+      const struct fp_sampler_view *fv;
+      const struct tex_unit *u = fp_unit_of(ts, t, smp, &fv);
+      if (u) {
+         fp_jit_gather_fill(ts, t, smp, u);
+      } else {   /* nothing bound: the glue's zeros */
+         g->epoch = epoch;
+         g->sampler = smp;
+         g->valid = 0;
+      }
+   }
+}
 
 /* Gathers of channel `comp` with constant offsets on the quads compiled
  * code laid out itself (fp_jit_sample.c: a non-shadow 2-D, 2-D array or

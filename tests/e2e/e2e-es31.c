@@ -18,6 +18,17 @@
  *                offset), a band each, through the modeled unit
  *   gather-cube  textureGather on an 8x8 cube map across the corner of
  *                three faces, a view with a swizzle, green then alpha
+ *   gather-clamp textureGather(Offset) of 13x7 textures clamped to their
+ *                edges, the compiled unit's own case (fp_jit_gather.c):
+ *                coordinates across and beyond the texture, on its texel
+ *                grid (zero among them), with the extreme offsets, a view
+ *                with constant swizzles, lanes out of the register's range
+ *                beside lanes within it, and a one-texel-wide texture the
+ *                C unit gathers, a band each
+ *   gather-ties  as gather-clamp, random coordinates at every distance
+ *                from a texel boundary (ties among them, which drivers
+ *                decide differently): for the identity of the compiled
+ *                and the C unit's gathers, not for comparing drivers
  *   ms-fetch     random flat triangles into a 4-sample texture, then each
  *                pixel shows texelFetch of sample (x + y) % 4
  *   stencil-tex  overlapping triangles counted in a depth/stencil texture,
@@ -60,6 +71,17 @@ static GLuint program(const char *fs)
 {
    static const char *const attr[] = { "a_pos", "a_uv", NULL };
    return fp_gl_program(vs, fs, attr);
+}
+
+/* A program drawn in bands (uniform u_band, whose location it returns),
+ * its three samplers on texture units 0, 1, 2; in use. */
+static GLint band_program(const char *fs, const char *const samplers[3])
+{
+   GLuint p = program(fs);
+   glUseProgram(p);
+   for (int i = 0; i < 3; i++)
+      glUniform1i(glGetUniformLocation(p, samplers[i]), i);
+   return glGetUniformLocation(p, "u_band");
 }
 
 /* A rectangle of clip space, texture coordinates u0..u1 over it. */
@@ -412,12 +434,8 @@ static void case_gather(int size)
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
-   GLuint p = program(fs);
-   glUseProgram(p);
-   glUniform1i(glGetUniformLocation(p, "u_tex"), 0);
-   glUniform1i(glGetUniformLocation(p, "u_depth"), 1);
-   glUniform1i(glGetUniformLocation(p, "u_arr"), 2);
-   GLint band = glGetUniformLocation(p, "u_band");
+   static const char *const units[] = { "u_tex", "u_depth", "u_arr" };
+   const GLint band = band_program(fs, units);
    /* bands of a quarter each, edges on the sub-pixel grid (both drivers
     * hold the vertices exactly); coordinates over more than the texture
     * so that the wrap modes act, not on texel boundaries at pixel centres */
@@ -426,6 +444,82 @@ static void case_gather(int size)
       glUniform1i(band, b);
       draw_rect(-1, e2e_ndc(edge[b] * E2E_SUB, size), 1, e2e_ndc(edge[b + 1] * E2E_SUB, size),
                 -0.31f, -0.27f, 1.43f, 1.38f);
+   }
+   glDeleteTextures(3, tex);
+}
+
+/* gather-clamp's bands, or (ties) its last band, alone over the target. */
+static void case_gather_clamp(int size, bool ties)
+{
+   static const char *fs =
+      "#version 310 es\n"
+      "precision highp float;\n"
+      "uniform highp sampler2D u_a, u_swz, u_narrow;\n"
+      "uniform int u_band;\n"
+      "in vec2 v_uv;\n"
+      "out vec4 o_color;\n"
+      "void main() {\n"
+      "   vec2 grid = floor(v_uv * vec2(13.0, 7.0) + 0.5) / vec2(13.0, 7.0);\n"
+      "   bool right = gl_FragCoord.x > 40.0;\n"
+      "   if (u_band == 0) o_color = textureGatherOffset(u_a, v_uv, ivec2(-8, 7), 0);\n"
+      "   else if (u_band == 1) o_color = textureGatherOffset(u_a, grid, ivec2(1, -1), 1);\n"
+      "   else if (u_band == 2) o_color = textureGather(u_a, grid, 2)\n"
+      "                                 + textureGatherOffset(u_a, grid, ivec2(7, -8), 3);\n"
+      "   else if (u_band == 3) o_color = right ? textureGather(u_swz, v_uv, 1)\n"
+      "                                         : textureGather(u_swz, v_uv, 2)\n"
+      "                                 + textureGather(u_swz, v_uv, 3) * 0.5;\n"
+      "   else if (u_band == 4) o_color = textureGather(u_a, v_uv * (right ? 1e30 : 1.0), 0)\n"
+      "                                 + textureGather(u_a, v_uv * (right ? 1e-30 : 1.0), 1);\n"
+      "   else if (u_band == 5) o_color = textureGather(u_narrow, v_uv, 0);\n"
+      "   else {\n"
+      "      /* a texel boundary k / size moved by +-2^-e, e random: the\n"
+      "       * footprint's decision at every scale of the register */\n"
+      "      uvec2 p = uvec2(gl_FragCoord.xy);\n"
+      "      uint h = (p.x * 73856093u) ^ (p.y * 19349663u);\n"
+      "      h = (h ^ (h >> 13)) * 1274126177u;\n"
+      "      vec2 k = vec2(float(h % 23u), float((h >> 5) % 15u)) - vec2(5.0, 4.0);\n"
+      "      vec2 e = uintBitsToFloat((uvec2(127u) - uvec2((h >> 9) % 28u, (h >> 14) % 28u)) << 23);\n"
+      "      e *= vec2((h & 1u) != 0u ? -1.0 : 1.0, (h & 2u) != 0u ? -1.0 : 1.0);\n"
+      "      vec2 c = (k + 0.5 * float((h >> 20) & 1u) + e) / vec2(13.0, 7.0);\n"
+      "      o_color = textureGather(u_a, c, 1);\n"
+      "   }\n"
+      "}\n";
+   enum { W = 13, H = 7 };
+   uint32_t texels[W * H];
+   uint32_t rng = 0x9a7c1a3bu;
+   for (int k = 0; k < W * H; k++)
+      texels[k] = e2e_rand(&rng);
+   GLuint tex[3];
+   glGenTextures(3, tex);
+   for (int t = 0; t < 3; t++) {
+      glActiveTexture(GL_TEXTURE0 + t);
+      glBindTexture(GL_TEXTURE_2D, tex[t]);
+      if (t == 2)
+         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, H, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      else
+         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, W, H, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+   }
+   /* the swizzled view: blue, one, zero, red */
+   glActiveTexture(GL_TEXTURE1);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R, GL_BLUE);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, GL_ONE);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_B, GL_ZERO);
+   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_A, GL_RED);
+   glActiveTexture(GL_TEXTURE0);
+   static const char *const units[] = { "u_a", "u_swz", "u_narrow" };
+   const GLint band = band_program(fs, units);
+   enum { BANDS = 6 };
+   for (int b = ties ? BANDS : 0; b < (ties ? BANDS + 1 : BANDS); b++) {
+      glUniform1i(band, b);
+      /* edges on the sub-pixel grid; coordinates from below zero to past
+       * one, so that both clamps act */
+      const int y0 = ties ? 0 : size * b / BANDS, y1 = ties ? size : size * (b + 1) / BANDS;
+      draw_rect(-1, e2e_ndc(y0 * E2E_SUB, size), 1, e2e_ndc(y1 * E2E_SUB, size), -0.37f, -0.29f,
+                1.41f, 1.33f);
    }
    glDeleteTextures(3, tex);
 }
@@ -669,6 +763,8 @@ int main(int argc, char **argv)
       case_gather(a.size);
    } else if (!strcmp(c, "gather-cube")) {
       case_gather_cube(a.size);
+   } else if (!strcmp(c, "gather-clamp") || !strcmp(c, "gather-ties")) {
+      case_gather_clamp(a.size, !strcmp(c, "gather-ties"));
    } else if (!strcmp(c, "builtins")) {
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
@@ -724,7 +820,8 @@ int main(int argc, char **argv)
          check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0), "sample 1 of the edge pixel is red");
       }
    } else {
-      fp_die("--case: compute, shared, image, gather, gather-cube, builtins, ms-fetch or stencil-tex");
+      fp_die("--case: compute, shared, image, gather, gather-cube, gather-clamp, gather-ties, "
+             "builtins, ms-fetch or stencil-tex");
    }
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */

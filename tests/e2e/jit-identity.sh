@@ -11,7 +11,12 @@
 # threshold's 16,384 quads on average, which compiling only after the crossing
 # cannot give, and a small frame compiles nothing.  The model (coverage, interpolation, depth, stencil,
 # texture unit, back end) is the same code either way, so the e2e programs must
-# match byte for byte.  The demo's lighting is float shader arithmetic, which
+# match byte for byte.  The programs that gather from 2-D views clamped to
+# their edges run a fourth time,
+# FIXPIPE_DEBUG=jitall,nojitgather, their gathers through the texture unit's C
+# functions instead of its copy in the compiled code (fp_jit_gather.c): the
+# same bytes, the same work and range events counted, and the copy must have
+# gathered under jitall (none under nojitgather).  The demo's lighting is float shader arithmetic, which
 # LLVM may contract or reorder: it may differ by 1 LSB, nothing more.  Cached
 # and compiled code must match byte for byte everywhere.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
@@ -75,6 +80,55 @@ while IFS= read -r line; do
     same "$name" nojit jitall
     same "$name" jitall cached
 done < "$out/list"
+
+# gathered NAME PROGRAM ARGS...: jitall against jitall,nojitgather
+gathered() {
+    name=$1 prog=$2
+    shift 2
+    if ! FIXPIPE_DEBUG=jitall,nojitgather FIXPIPE_STATS=1 "$root/fixpipe" run --no-xvfb \
+         --driver fixpipe -- "$prog" -o "$out/$name.nojitgather.png" "$@" \
+         > "$out/$name.nojitgather.log" 2>&1; then
+        fail "$name: the nojitgather run failed ($(tail -n 1 "$out/$name.nojitgather.log"))"
+        return 1
+    fi
+    same "$name" jitall nojitgather
+    # the counters the unit keeps: work, texels, range events
+    for log in jitall nojitgather; do
+        grep -E "texels read|texture path|datapath work" "$out/$name.$log.log" > "$out/$name.$log.work"
+    done
+    if [ -s "$out/$name.jitall.work" ] && cmp -s "$out/$name.jitall.work" "$out/$name.nojitgather.work"; then
+        pass "$name: jitall and nojitgather count the same texture work and range events"
+    else
+        fail "$name: the texture counters differ between jitall and nojitgather (see $out/$name.*.work)"
+    fi
+    set -- $(sed -n 's/.*gathers in compiled code: quads \([0-9]*\) .*/\1/p' "$out/$name.jitall.log")
+    jit=${1:-0}
+    set -- $(sed -n 's/.*gathers in compiled code: quads \([0-9]*\) .*/\1/p' "$out/$name.nojitgather.log")
+    if [ "$jit" -gt 0 ] && [ "${1:-x}" = 0 ]; then
+        pass "$name: $jit gather quads in compiled code under jitall, none under nojitgather"
+    else
+        fail "$name: gather quads in compiled code: jitall $jit (want some), nojitgather ${1:-?} (want 0)"
+    fi
+}
+# the programs whose gathers the copy covers (2-D views clamped to their
+# edges), and gather-ties, random coordinates at every distance from a texel
+# boundary: not in tolerances.txt (drivers decide ties differently), here
+# for the identity of the two units alone
+{ grep -E '^(es31-gather-clamp|upscale) ' "$out/list"
+  echo "es31-gather-ties e2e-es31 --case gather-ties"; } > "$out/gathering"
+while IFS= read -r line; do
+    spec=${line%%|*}
+    # shellcheck disable=SC2086
+    set -- $spec
+    gname=$1 gprog=$build/tests/e2e/$2
+    shift 2
+    if [ ! -f "$out/$gname.jitall.log" ]; then
+        render "$gname" "$gprog" "$@" || continue
+        same "$gname" nojit jitall
+        same "$gname" jitall cached
+    fi
+    gathered "$gname" "$gprog" "$@"
+done < "$out/gathering"
 
 if render demo "$build/tools/fp-demo" --scene all --frames 3; then
     if "$build/tools/fp-compare" "$out/demo.nojit.png" "$out/demo.jitall.png" \
