@@ -20,10 +20,12 @@
  *            (anti-ringing)
  *
  * Writes -o (the last frame, --size x --size) and prints
- *   stat: frames=N ms_per_frame=T
- * with T the mean over the frames after the first (glFinish after each), so
- * the first frame's shader compilation is left out.  --frames N (default
- * 2), --src S (default --size / 4).  Errors (a GL error, no ES 3.1) fail the
+ *   stat: frames=N src=S ms_per_frame=T warmup_ms=U
+ * with T the mean over the frames after the first W (--warmup W, default
+ * 1; glFinish after each), the steady state a player runs in, and U the
+ * time of those first W frames: shader compilation, and the frames a
+ * driver that tiers its shaders still interprets.  --frames N (default 2),
+ * --src S (default --size / 4).  Errors (a GL error, no ES 3.1) fail the
  * program on any driver.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -213,9 +215,10 @@ int main(int argc, char **argv)
    struct e2e_args a;
    e2e_parse(&a, argc, argv, 128);
    const int frames = atoi(e2e_opt(&a, "frames", "2"));
+   const int warmup = atoi(e2e_opt(&a, "warmup", "1"));
    const int n = atoi(e2e_opt(&a, "src", "0")) > 0 ? atoi(e2e_opt(&a, "src", "0")) : a.size / 4;
-   if (frames < 1 || n < 4)
-      fp_die("--frames must be at least 1 and --src at least 4");
+   if (frames < 1 || n < 4 || warmup < 1 || warmup > frames)
+      fp_die("--frames must be at least 1, --warmup from 1 to --frames, --src at least 4");
    struct fp_gl g;
    e2e_begin(&g, &a);
    GLint major = 0, minor = 0;
@@ -245,9 +248,10 @@ int main(int argc, char **argv)
    glUniform1i(glGetUniformLocation(ewa, "u_src"), 0);
    glUniform2f(glGetUniformLocation(ewa, "u_size"), (float)n, (float)n);
 
+   const double start = now_ms();
    double t0 = 0;
    for (int f = 0; f < frames; f++) {
-      if (f == 1)
+      if (f == warmup)
          t0 = now_ms();
       make_frame(px, n, f, 0x5ca1e000u + (uint32_t)f);
       glBindTexture(GL_TEXTURE_2D, src);
@@ -264,8 +268,10 @@ int main(int argc, char **argv)
       draw_rect();
       glFinish();
    }
-   const double ms = frames > 1 ? (now_ms() - t0) / (frames - 1) : 0;
-   printf("stat: frames=%d src=%d ms_per_frame=%.1f\n", frames, n, ms);
+   const double end = now_ms();
+   const double ms = frames > warmup ? (end - t0) / (frames - warmup) : 0;
+   printf("stat: frames=%d src=%d ms_per_frame=%.1f warmup_ms=%.1f\n", frames, n, ms,
+          (frames > warmup ? t0 : end) - start);
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glDeleteFramebuffers(1, &fbo);
    glDeleteTextures(1, &src);
