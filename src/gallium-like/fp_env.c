@@ -45,6 +45,8 @@ static const struct debug_named_value fp_debug_flags[] = {
      "large clears filled by the calling thread alone, not divided between the threads" },
    { "nof32", FP_DEBUG_NOF32,
      "the perspective division on binary64 lanes only, not four quads on binary32 lanes (same bits)" },
+   { "divideall", FP_DEBUG_DIVIDEALL,
+     "every batch of primitives divided between the threads, however small (same bits; the thread identity test)" },
    { "nojitgather", FP_DEBUG_NOJITGATHER,
      "compiled shaders' gathers call the texture unit's C functions, not its copy in the compiled code (same bits)" },
    DEBUG_NAMED_VALUE_END
@@ -260,7 +262,8 @@ unsigned fp_env_rast_options(void)
 {
    const unsigned d = fp_env_debug();
    return (d & FP_DEBUG_SCALAR ? RAST_OPT_SCALAR : 0u) | (d & FP_DEBUG_NOSKIP ? RAST_OPT_NOSKIP : 0u) |
-          (d & FP_DEBUG_NOF32 ? RAST_OPT_NOF32 : 0u);
+          (d & FP_DEBUG_NOF32 ? RAST_OPT_NOF32 : 0u) |
+          (d & FP_DEBUG_DIVIDEALL ? RAST_OPT_DIVIDE : 0u);
 }
 
 /* The interpolator of Z and colour, and whether it is measured

@@ -58,6 +58,7 @@ const struct rast_cycle_params *fp_env_cycles(void);   /* FIXPIPE_CYCLES */
 #define FP_DEBUG_SERIALCLEAR (1u << 7) /* large clears filled by the calling thread alone */
 #define FP_DEBUG_NOF32   (1u << 8)   /* the division's four quads on binary64 lanes, not binary32 */
 #define FP_DEBUG_NOJITGATHER (1u << 9) /* compiled gathers call the texture unit's C functions */
+#define FP_DEBUG_DIVIDEALL (1u << 10)  /* every batch divided between the threads */
 unsigned fp_env_debug(void);
 unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
 unsigned fp_env_interp(void);                /* FIXPIPE_INTERP: rast_set_interp's mode */

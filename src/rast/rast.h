@@ -464,12 +464,19 @@ void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs);
  * selects the default, dfx24. */
 struct numsys;
 void rast_set_texfmt(struct rast_context *rc, const struct numsys *ns);
-/* The datapath (FIXPIPE_DEBUG=scalar,noskip,nof32): RAST_OPT_SCALAR runs the
- * scalar reference functions instead of the lanes (lanes.h), RAST_OPT_NOSKIP
- * computes what the skips leave out, RAST_OPT_NOF32 keeps the division on
- * binary64 lanes where the 512-bit set would take four quads on binary32
- * lanes (fixed/dfx_lanes32.h).  Every choice gives the same bits. */
-enum { RAST_OPT_SCALAR = 1u << 0, RAST_OPT_NOSKIP = 1u << 1, RAST_OPT_NOF32 = 1u << 2 };
+/* The datapath (FIXPIPE_DEBUG=scalar,noskip,nof32,divideall): RAST_OPT_SCALAR
+ * runs the scalar reference functions instead of the lanes (lanes.h),
+ * RAST_OPT_NOSKIP computes what the skips leave out, RAST_OPT_NOF32 keeps
+ * the division on binary64 lanes where the 512-bit set would take four
+ * quads on binary32 lanes (fixed/dfx_lanes32.h), RAST_OPT_DIVIDE divides
+ * every batch between the threads, however small (threads.c draws a batch
+ * of fewer than 4096 pixels on the calling thread alone), so that a small
+ * image proves the threads' identity too.  Every choice gives the same
+ * bits. */
+enum {
+   RAST_OPT_SCALAR = 1u << 0, RAST_OPT_NOSKIP = 1u << 1, RAST_OPT_NOF32 = 1u << 2,
+   RAST_OPT_DIVIDE = 1u << 3,
+};
 void rast_set_options(struct rast_context *rc, unsigned opts);
 /* How Z and the colour registers get each pixel's value (FIXPIPE_INTERP,
  * docs/interp-modes.md): seed 000's incremental walk, seed 001's areas or

@@ -543,7 +543,8 @@ void rast_flush(struct rast_context *rc)
       return;
 
    const double t0 = work_begins(pool);
-   if (pool->pixels < RAST_PARALLEL_MIN_PIXELS || !pool_start(pool)) {
+   const bool small = pool->pixels < RAST_PARALLEL_MIN_PIXELS && !(rc->opts & RAST_OPT_DIVIDE);
+   if (small || !pool_start(pool)) {
       draw_share(rc, pool);
       work_ends(pool, t0, &pool->times.alone);
       pool->drawn_serial += pool->nprim;
