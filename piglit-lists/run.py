@@ -3,6 +3,8 @@
 
 usage: run.py LIST [--driver D] [--shard I/N] [--jobs J] [options]
        run.py --merge DIR...      combine the summary.json files of the shards of one run
+       run.py --skips DIR...      the '<name>,Skip' lines, grouped under their reason, of the
+                                  run-time skips of runs (their results directories)
 
 The `piglit` command of ./fixpipe calls this; docs/piglit.md describes the lists, the
 expectation files, sharding, the exit status and summary.json.
@@ -16,6 +18,7 @@ import gzip
 import json
 import os
 import re
+import shlex
 import subprocess
 import sys
 import time
@@ -37,18 +40,15 @@ COUNT_KEYS = ("pass", "warn", "fail", "crash", "timeout", "skip", "notrun", "exc
 
 # ------------------------------------------------------------------ inputs
 def read_list(path):
-    """Test names (piglit strips everything after '#' the same way) and the header directives."""
-    names, directives = [], set()
+    """Test names (piglit strips everything after '#' the same way)."""
+    names = []
     with open(path, encoding="utf-8") as f:
         for line in f:
-            m = re.match(r"\s*#\s*(require-run)\s*$", line)
-            if m:
-                directives.add(m.group(1))
             name = line.split("#")[0].strip()
             if name:
                 names.append(name)
     seen = set()
-    return [n for n in names if not (n in seen or seen.add(n))], directives
+    return [n for n in names if not (n in seen or seen.add(n))]
 
 
 def profile_index(names):
@@ -157,8 +157,11 @@ def _output(res):
 
 
 # ------------------------------------------------------------------ comparing
-def classify(name, res, fails, flakes, require_run):
-    """(result, expected, status, reason) of one test."""
+def classify(name, res, fails, flakes):
+    """(result, expected, status, reason) of one test.  status: ok (a pass), expected (a
+    listed failure), skipped (a run-time skip listed as Skip, for the feature it names),
+    flake, unexpected (anything else not listed: a new failure, crash or skip) or
+    unexpected_pass (a listed test that passes: its line must go)."""
     actual = res["result"] if res else "notrun"
     actual = ALIASES.get(actual, actual)
     if actual == "notrun" and res and res.get("returncode") not in (None, 0):
@@ -173,10 +176,8 @@ def classify(name, res, fails, flakes, require_run):
     expected, reason = fails.get(name.lower(), ("pass", ""))
     if actual in ("pass", "warn"):
         return actual, expected, "ok" if expected == "pass" else "unexpected_pass", reason
-    if actual == "skip" and not require_run:
-        return actual, expected, "skip", reason
     if actual == expected:
-        return actual, expected, "expected", reason
+        return actual, expected, "skipped" if actual == "skip" else "expected", reason
     return actual, expected, "unexpected", reason
 
 
@@ -186,7 +187,7 @@ def report(summary, label, fails_file, raw=None):
     for name, t in sorted(summary["tests"].items()):
         st = t["status"]
         if st == "unexpected_pass":
-            print(f"  UnexpectedPass {name} (expected {t['expected']}: remove it from "
+            print(f"  UnexpectedPass {name} (expected {t['expected']}: remove its line from "
                   f"{fails_file})")
         elif st == "unexpected":
             print(f"  {t['result'].upper():<12} {name} (expected {t['expected']})")
@@ -200,21 +201,28 @@ def report(summary, label, fails_file, raw=None):
     print(f"{label}: " + ", ".join(f"{c[k]} {k}" for k in COUNT_KEYS
                                    if c[k] or k in ("pass", "fail", "crash", "skip")))
     e = summary["expected"]
-    print(f"{label}: {e['met']} passed, {e['unexpected']} failed")
+    print(f"{label}: apart from the passes: {e['expected_fail']} listed failures, "
+          f"{e['skipped']} listed skips, {e['flake']} flakes, {e['excluded']} not run")
+    print(f"{label}: {e['passed']} passed, {e['unexpected']} failed")
     return 1 if e["unexpected"] else 0
 
 
 def tally(tests):
+    """The counts of the results, and of the statuses: passed counts passes alone; a
+    listed failure or skip, a flake and an excluded test are counted apart; failed is
+    every test not as listed, an unexpected pass among them."""
     counts = dict.fromkeys(COUNT_KEYS, 0)
-    expected = {"met": 0, "unexpected": 0, "unexpected_pass": 0}
+    expected = {"passed": 0, "unexpected": 0, "unexpected_pass": 0, "expected_fail": 0,
+                "skipped": 0, "flake": 0, "excluded": 0}
+    key = {"ok": "passed", "expected": "expected_fail", "skipped": "skipped",
+           "flake": "flake", "excluded": "excluded"}
     for t in tests.values():
         counts[t["result"]] += 1
-        if t["status"] == "unexpected":
+        if t["status"] in ("unexpected", "unexpected_pass"):
             expected["unexpected"] += 1
+            expected["unexpected_pass"] += t["status"] == "unexpected_pass"
         else:
-            expected["met"] += 1
-            if t["status"] == "unexpected_pass":
-                expected["unexpected_pass"] += 1
+            expected[key[t["status"]]] += 1
     return counts, expected
 
 
@@ -230,8 +238,7 @@ def cmd_run(args):
         avail = sorted(f[:-4] for f in os.listdir(HERE) if f.endswith(".txt"))
         print(f"fixpipe: no list {list_file} (lists: {', '.join(avail)})", file=sys.stderr)
         return 2
-    names, directives = read_list(list_file)
-    require_run = "require-run" in directives
+    names = read_list(list_file)
     exp = args.expectations
     fails_file = os.path.join(exp, f"{args.driver}-fails.txt")
     fails = read_fails(fails_file)
@@ -305,7 +312,7 @@ def cmd_run(args):
                         "reason": excluded[n]}
             continue
         res = raw.get(n.lower())
-        result, expected, status, reason = classify(n, res, fails, flakes, require_run)
+        result, expected, status, reason = classify(n, res, fails, flakes)
         t = {"result": result, "expected": expected, "status": status,
              "platform": platform_of[n]}
         if res and isinstance(res.get("time"), dict):
@@ -320,7 +327,7 @@ def cmd_run(args):
         "profile": os.environ.get("FIXPIPE_PROFILE") or "seed",
         "shard": [si, sn], "started": started.strftime("%Y-%m-%dT%H:%M:%SZ"),
         "seconds": round(time.time() - t0, 1), "jobs": args.jobs,
-        "piglit_profiles": sorted(profiles_used), "require_run": require_run,
+        "piglit_profiles": sorted(profiles_used),
         "total": len(tests), "counts": counts, "expected": expected, "tests": tests,
     }
     label = f"piglit-{args.label}-{args.driver}" + (f"-s{si}of{sn}" if sn > 1 else "")
@@ -347,7 +354,49 @@ def cmd_merge(dirs):
     return status
 
 
+def skip_reason(res):
+    """The missing feature a skipped test names (piglit's 'Test requires ...' line)."""
+    lines = [ln.strip() for ln in _output(res).splitlines() if ln.strip()]
+    said = [ln for ln in lines if re.search(r"requir|support|not available", ln, re.I)]
+    if said:
+        return said[-1]
+    # a parser test piglit skips before it runs: its requirements are its command's last
+    # words (GLSL version, 'es', extensions; '!EXT' for one the driver must not have)
+    words = shlex.split((res or {}).get("command") or "")
+    samples = [w.split("=", 1)[1] for w in words if w.startswith("-samples=")]
+    if samples:
+        return (f"a default framebuffer of {samples[0]} samples, which the driver's visuals "
+                "do not offer (skipped before it ran)")
+    if len(words) > 3 and "glslparsertest" in os.path.basename(words[0]):
+        return ("piglit runs this parser test only for GLSL " + " ".join(words[3:])
+                + " (skipped before it ran)")
+    return ("piglit skipped it before it ran: the GL version or extensions it needs are not "
+            "exposed (wflinfo)")
+
+
+def cmd_skips(dirs):
+    """Prints Skip lines for fails.txt: every run-time skip of the runs, under its reason."""
+    by_reason = {}
+    for d in dirs:
+        with open(os.path.join(d, "summary.json"), encoding="utf-8") as f:
+            tests = json.load(f)["tests"]
+        raw = {}
+        for platform in ("surfaceless", "x11", "surfaceless-again", "x11-again"):
+            raw.update(read_results(os.path.join(d, platform)))
+        for name, t in tests.items():
+            if t["result"] == "skip":
+                by_reason.setdefault(skip_reason(raw.get(name.lower())), set()).add(name)
+    for reason in sorted(by_reason):
+        print(f"# skips: {reason}")
+        for name in sorted(by_reason[reason]):
+            print(f"{name},Skip")
+        print()
+    return 0
+
+
 def main(argv):
+    if argv[:1] == ["--skips"]:
+        return cmd_skips(argv[1:])
     if argv[:1] == ["--merge"]:
         if len(argv) < 2:
             print("usage: run.py --merge DIR...", file=sys.stderr)

@@ -80,9 +80,10 @@ def piglit_section():
         return out
     out += ["Counts over the tests of each list (`./fixpipe piglit LIST --driver D`, "
             "docs/piglit.md): *excluded* are tests a driver's `skips.txt` keeps out of the "
-            "run; *skip* are tests that ran and reported skip (a missing extension or version: "
-            "a missing extension or version). All runs on the same machine; the date is when "
-            "each run started.", "",
+            "run; *skip* are tests that ran and reported skip, each listed in the driver's "
+            "`fails.txt` as `Skip` under the extension or version it lacks (an unlisted skip "
+            "fails the list). All runs on the same machine; the date is when each run "
+            "started.", "",
             "| list | driver | tests | pass | fail | crash | timeout | skip | excluded | run |",
             "|---|---|---:|---:|---:|---:|---:|---:|---:|---|"]
     gaps = []

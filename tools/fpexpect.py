@@ -1,18 +1,20 @@
 """Expectation files in Mesa CI's format, shared by the piglit and dEQP runners.
 
-DRIVER-fails.txt   '<test name>,Fail|Crash|Timeout' a line
+DRIVER-fails.txt   '<test name>,Fail|Crash|Timeout|Skip' a line (Skip: a test that skips at run
+                   time, for the feature the driver does not have that its reason names)
 DRIVER-flakes.txt  a regular expression a line: any result of a matching test is accepted
 DRIVER-skips.txt   a regular expression a line: matching tests are not run
 
-Every entry has its reason in the '#' comment line(s) just above it; a blank line ends a
-comment.  A malformed line is an input error (exit status 2), never a silent pass.
+Every entry has its reason in the '#' comment line(s) above it: a comment is the reason of
+the entries that follow it up to a blank line or the next comment.  A malformed line is an
+input error (exit status 2), never a silent pass.
 """
 import argparse
 import json
 import re
 import sys
 
-EXPECT = {"Fail": "fail", "Crash": "crash", "Timeout": "timeout"}
+EXPECT = {"Fail": "fail", "Crash": "crash", "Timeout": "timeout", "Skip": "skip"}
 
 
 def bad_input(msg):
@@ -22,8 +24,9 @@ def bad_input(msg):
 
 
 def read_entries(path):
-    """(entry, reason, line number) for each non-comment line; reason is the '#' lines above."""
-    entries, comment = [], []
+    """(entry, reason, line number) for each non-comment line; reason is the '#' lines above
+    it (a run of entries shares the comment before the run)."""
+    entries, comment, after_entry = [], [], False
     try:
         f = open(path, encoding="utf-8")
     except FileNotFoundError:
@@ -32,12 +35,14 @@ def read_entries(path):
         for n, line in enumerate(f, 1):
             s = line.strip()
             if not s:
-                comment = []
+                comment, after_entry = [], False
             elif s.startswith("#"):
+                if after_entry:
+                    comment, after_entry = [], False
                 comment.append(s.lstrip("#").strip())
             else:
                 entries.append((s, " ".join(comment), n))
-                comment = []
+                after_entry = True
     return entries
 
 
@@ -47,7 +52,7 @@ def read_fails(path, fold_case=True):
     for line, reason, n in read_entries(path):
         name, sep, status = line.rpartition(",")
         if not sep or status not in EXPECT:
-            bad_input(f"{path}:{n}: expected '<test name>,Fail|Crash|Timeout', got {line!r}")
+            bad_input(f"{path}:{n}: expected '<test name>,Fail|Crash|Timeout|Skip', got {line!r}")
         if not reason:
             bad_input(f"{path}:{n}: {name} has no '# reason' line above it")
         fails[name.lower() if fold_case else name] = (EXPECT[status], reason)
