@@ -234,6 +234,8 @@ static void fp_blit(struct pipe_context *pipe, const struct pipe_blit_info *info
    if (!info->src.resource || !info->dst.resource ||
        !fp_resource(info->src.resource)->data || !fp_resource(info->dst.resource)->data)
       return;
+   fp_resource_sync_front(info->src.resource);
+   fp_resource_sync_front(info->dst.resource);
 
    if (fp_blit_is_copy(info)) {
       util_resource_copy_region(pipe, info->dst.resource, info->dst.level, info->dst.box.x,

@@ -67,7 +67,45 @@ static bool fp_dt_layout(struct fp_screen *s, struct fp_resource *r,
       r->dt = NULL;
       return false;
    }
+   if (map_front_private) {
+      r->front_private = map_front_private;
+      simple_mtx_lock(&s->fronts_lock);
+      for (unsigned i = 0; i < FP_MAX_FRONTS; i++)
+         if (!s->fronts[i]) {
+            s->fronts[i] = r;
+            break;
+         }
+      simple_mtx_unlock(&s->fronts_lock);
+   }
    return true;
+}
+
+void fp_resource_sync_front(struct pipe_resource *pt)
+{
+   struct fp_resource *r = fp_resource(pt);
+   if (!r || !r->front_private || !p_atomic_read(&r->front_stale))
+      return;
+   /* The DRI winsys reads the window into the buffer when it is mapped
+    * for reading (X GetImage: the window is mapped, a buffer was shown in
+    * it); mapped again without flags, as the model keeps it. */
+   struct sw_winsys *ws = fp_screen(pt->screen)->winsys;
+   ws->displaytarget_map(ws, r->dt, PIPE_MAP_READ);
+   ws->displaytarget_map(ws, r->dt, 0);
+   p_atomic_set(&r->front_stale, false);
+}
+
+void fp_resource_presented(struct fp_screen *s, struct pipe_resource *shown,
+                           const void *front_private)
+{
+   if (!front_private)
+      return;
+   simple_mtx_lock(&s->fronts_lock);
+   for (unsigned i = 0; i < FP_MAX_FRONTS; i++) {
+      struct fp_resource *f = s->fronts[i];
+      if (f && f->front_private == front_private && &f->base != shown)
+         p_atomic_set(&f->front_stale, true);
+   }
+   simple_mtx_unlock(&s->fronts_lock);
 }
 
 static struct pipe_resource *fp_resource_create_front(struct pipe_screen *screen,
@@ -112,7 +150,15 @@ static bool fp_can_create_resource(struct pipe_screen *screen,
 static void fp_resource_destroy(struct pipe_screen *screen, struct pipe_resource *pt)
 {
    struct fp_resource *r = fp_resource(pt);
-   struct sw_winsys *ws = fp_screen(screen)->winsys;
+   struct fp_screen *s = fp_screen(screen);
+   struct sw_winsys *ws = s->winsys;
+   if (r->front_private) {
+      simple_mtx_lock(&s->fronts_lock);
+      for (unsigned i = 0; i < FP_MAX_FRONTS; i++)
+         if (s->fronts[i] == r)
+            s->fronts[i] = NULL;
+      simple_mtx_unlock(&s->fronts_lock);
+   }
    if (r->dt) {
       ws->displaytarget_unmap(ws, r->dt);
       ws->displaytarget_destroy(ws, r->dt);
@@ -171,6 +217,7 @@ static void *fp_transfer_map(struct pipe_context *pipe, struct pipe_resource *re
    enum pipe_format format = resource->format;
    struct pipe_transfer *pt = CALLOC_STRUCT(pipe_transfer);
    (void)pipe;
+   fp_resource_sync_front(resource);
    if (!pt || !r->data) {
       FREE(pt);
       return NULL;

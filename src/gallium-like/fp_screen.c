@@ -403,6 +403,7 @@ static void fp_destroy_screen(struct pipe_screen *screen)
 {
    struct fp_screen *s = fp_screen(screen);
    disk_cache_destroy(s->disk_cache);
+   simple_mtx_destroy(&s->fronts_lock);
    if (s->winsys->destroy)
       s->winsys->destroy(s->winsys);
    FREE(s);
@@ -419,8 +420,10 @@ static void fp_flush_frontbuffer(struct pipe_screen *screen, struct pipe_context
    p_atomic_inc(&s->frames_presented);
    if (pipe)
       fp_context_frame_presented(fp_context(pipe));
-   if (r->dt)
+   if (r->dt) {
       s->winsys->displaytarget_display(s->winsys, r->dt, context_private, sub_box);
+      fp_resource_presented(s, resource, context_private);
+   }
 }
 
 /* Rendering is synchronous: every fence is signalled when it is made. */
@@ -452,6 +455,7 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
 
    s->winsys = winsys;
    s->disk_cache_once = (util_once_flag)UTIL_ONCE_FLAG_INIT;
+   simple_mtx_init(&s->fronts_lock, mtx_plain);
    s->profile = fp_env_profile();
    if (!s->profile) {
       FREE(s);

@@ -3,11 +3,13 @@
 
 #include "pipe/p_screen.h"
 #include "util/u_call_once.h"
+#include "util/simple_mtx.h"
 #include "rast/rast.h"
 
 struct sw_winsys;
 struct disk_cache;
 
+#define FP_MAX_FRONTS 16
 struct fp_screen {
    struct pipe_screen base;
    struct sw_winsys *winsys;
@@ -21,6 +23,9 @@ struct fp_screen {
     * presents is a real-time program, whose shaders are hot sooner
     * (fp_jit_hot_loop) */
    uint64_t frames_presented;
+   /* the windows' front buffers (fp_resource_presented) */
+   simple_mtx_t fronts_lock;
+   struct fp_resource *fronts[FP_MAX_FRONTS];
 };
 
 static inline struct fp_screen *fp_screen(struct pipe_screen *s)

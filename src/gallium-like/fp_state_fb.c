@@ -57,6 +57,10 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
 
    draw_flush(fp->draw);
    util_copy_framebuffer_state(&fp->framebuffer, fb);
+   /* drawing into a window's front after a swap draws over what it shows */
+   for (unsigned i = 0; i < fb->nr_cbufs; i++)
+      if (fb->cbufs[i])
+         fp_resource_sync_front(fb->cbufs[i]->texture);
 
    memset(&rfb, 0, sizeof(rfb));
    /* Any size: beyond the profile's X_out range the model draws in tiles. */
