@@ -121,6 +121,10 @@ struct lp_build_sampler_soa;
 struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
                                                   void *nir_shader);
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);
+/* A member at byte `offset` of the struct `base` points to, loaded in
+ * compiled code as `type` (fp_jit_context's, a unit's registers). */
+LLVMValueRef fp_jit_load(struct gallivm_state *gallivm, LLVMValueRef base, size_t offset,
+                         LLVMTypeRef type);
 /* The (texture, sampler) pairs the code built so far gathers from itself. */
 unsigned fp_jit_sampler_gather_units(const struct lp_build_sampler_soa *sampler,
                                      uint8_t units[FP_JIT_GATHER_UNITS][2]);

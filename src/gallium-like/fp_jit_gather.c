@@ -32,6 +32,7 @@
 #include "gallivm/lp_bld_init.h"
 #include "gallivm/lp_bld_intr.h"
 #include "gallivm/lp_bld_pack.h"
+#include "gallivm/lp_bld_swizzle.h"
 #include "gallivm/lp_bld_type.h"
 
 #include "fp_jit.h"
@@ -59,21 +60,13 @@ static LLVMValueRef K(const struct fpg *c, int64_t v)
 
 static LLVMValueRef splat(const struct fpg *c, LLVMValueRef scalar)
 {
-   LLVMValueRef v = LLVMBuildInsertElement(c->b, LLVMGetUndef(LLVMTypeOf(K(c, 0))), scalar,
-                                           lp_build_const_int32(c->g, 0), "");
-   LLVMTypeRef mask_type = LLVMVectorType(c->i32, c->n);
-   return LLVMBuildShuffleVector(c->b, v, LLVMGetUndef(LLVMTypeOf(v)), LLVMConstNull(mask_type),
-                                 "");
+   return lp_build_broadcast(c->g, LLVMVectorType(LLVMTypeOf(scalar), c->n), scalar);
 }
 
-/* A 32-bit word of the registers, at byte `off`, as a scalar. */
+/* A word of the registers, at byte `off`, as a scalar. */
 static LLVMValueRef word(const struct fpg *c, size_t off, LLVMTypeRef type)
 {
-   LLVMTypeRef i8 = LLVMInt8TypeInContext(c->g->context);
-   LLVMValueRef o = lp_build_const_int32(c->g, (int)off);
-   LLVMValueRef p = LLVMBuildGEP2(c->b, i8, c->regs, &o, 1, "");
-   p = LLVMBuildBitCast(c->b, p, LLVMPointerType(type, 0), "");
-   return LLVMBuildLoad2(c->b, type, p, "");
+   return fp_jit_load(c->g, c->regs, off, type);
 }
 
 static LLVMValueRef reg(const struct fpg *c, size_t off)
@@ -310,11 +303,7 @@ LLVMValueRef fp_jit_gather_axis(struct gallivm_state *gallivm, LLVMValueRef regs
       LLVMTypeRef f32 = LLVMFloatTypeInContext(gallivm->context);
       LLVMValueRef k = LLVMBuildFDiv(c.b, LLVMConstReal(f32, (double)offset),
                                      word(&c, R(offset_unit[a]), f32), "");
-      LLVMValueRef kv = LLVMBuildInsertElement(c.b, LLVMGetUndef(LLVMTypeOf(coord)), k,
-                                               lp_build_const_int32(gallivm, 0), "");
-      kv = LLVMBuildShuffleVector(c.b, kv, LLVMGetUndef(LLVMTypeOf(kv)),
-                                  LLVMConstNull(LLVMVectorType(c.i32, n)), "");
-      coord = LLVMBuildFAdd(c.b, coord, kv, "");
+      coord = LLVMBuildFAdd(c.b, coord, splat(&c, k), "");
    }
    LLVMValueRef ok = NULL;
    axis(&c, a, coord, &i[0], &i[1], &ok);
@@ -369,9 +358,7 @@ void fp_jit_gather_read(struct gallivm_state *gallivm, LLVMValueRef regs, unsign
    LLVMValueRef constant = word(&c, R(constant[0]) + 4 * (comp & 3), f32);
    LLVMValueRef is_const = LLVMBuildICmp(b, LLVMIntSLT, shift, lp_build_const_int32(gallivm, 0), "");
    LLVMValueRef shv = splat(&c, LLVMBuildAnd(b, shift, lp_build_const_int32(gallivm, 31), ""));
-   LLVMValueRef kv = LLVMBuildInsertElement(b, LLVMGetUndef(fvec), constant,
-                                            lp_build_const_int32(gallivm, 0), "");
-   kv = LLVMBuildShuffleVector(b, kv, LLVMGetUndef(fvec), LLVMConstNull(LLVMVectorType(c.i32, n)), "");
+   LLVMValueRef kv = splat(&c, constant);
    /* GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).  Each row's two
     * texels are the two words at the column xl = min(x0, w - 2) (views of
     * two columns or more, tex_unit_gather_regs): x0 and x1 are xl or the

@@ -188,14 +188,13 @@ void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler
 
 /* ---------------------------------------------------------------- code */
 
-/* A pointer member of fp_jit_context, loaded in compiled code. */
-static LLVMValueRef fp_ctx_load_ptr(struct gallivm_state *gallivm, LLVMValueRef ctx,
-                                    size_t offset, LLVMTypeRef type)
+LLVMValueRef fp_jit_load(struct gallivm_state *gallivm, LLVMValueRef base, size_t offset,
+                         LLVMTypeRef type)
 {
    LLVMBuilderRef b = gallivm->builder;
    LLVMTypeRef i8 = LLVMInt8TypeInContext(gallivm->context);
    LLVMValueRef off = lp_build_const_int32(gallivm, (int)offset);
-   LLVMValueRef p = LLVMBuildBitCast(b, ctx, LLVMPointerType(i8, 0), "");
+   LLVMValueRef p = LLVMBuildBitCast(b, base, LLVMPointerType(i8, 0), "");
    p = LLVMBuildGEP2(b, i8, p, &off, 1, "");
    p = LLVMBuildBitCast(b, p, LLVMPointerType(type, 0), "");
    return LLVMBuildLoad2(b, type, p, "");
@@ -243,10 +242,10 @@ static void fp_emit_ctx_call(struct gallivm_state *gallivm, LLVMValueRef context
 {
    LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(gallivm->context), arg_types,
                                           n, 0);
-   LLVMValueRef fn = fp_ctx_load_ptr(gallivm, context_ptr, fn_offset,
-                                     LLVMPointerType(fn_type, 0));
-   args[0] = fp_ctx_load_ptr(gallivm, context_ptr, offsetof(struct fp_jit_context, sampler),
-                             arg_types[0]);
+   LLVMValueRef fn = fp_jit_load(gallivm, context_ptr, fn_offset,
+                                 LLVMPointerType(fn_type, 0));
+   args[0] = fp_jit_load(gallivm, context_ptr, offsetof(struct fp_jit_context, sampler),
+                         arg_types[0]);
    LLVMBuildCall2(gallivm->builder, fn_type, fn, args, n, "");
 }
 
@@ -343,8 +342,8 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
    LLVMValueRef texture = lp_build_const_int32(gallivm, params->texture_index);
    LLVMValueRef sampler = lp_build_const_int32(gallivm, params->sampler_index);
    LLVMValueRef ctl = lp_build_const_int32(gallivm, control);
-   LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                        offsetof(struct fp_jit_context, quads), i32);
+   LLVMValueRef quads = fp_jit_load(gallivm, params->context_ptr,
+                                    offsetof(struct fp_jit_context, quads), i32);
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, i32, vp, vp };
    LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, lp_build_const_int32(gallivm, nq),
                            q, rgba };
@@ -403,8 +402,8 @@ static void fp_emit_gather_call(struct gallivm_state *gallivm,
    const unsigned comp =
       (params->sample_key & LP_SAMPLER_GATHER_COMP_MASK) >> LP_SAMPLER_GATHER_COMP_SHIFT;
    LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
-   LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                        offsetof(struct fp_jit_context, quads), i32);
+   LLVMValueRef quads = fp_jit_load(gallivm, params->context_ptr,
+                                    offsetof(struct fp_jit_context, quads), i32);
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, i32, i32, i32, vp, vp };
    LLVMValueRef args[] = { NULL, lp_build_const_int32(gallivm, params->texture_index),
                            lp_build_const_int32(gallivm, params->sampler_index),
@@ -507,8 +506,8 @@ static void fp_emit_gather_quads(struct fp_jit_sampler *js, struct gallivm_state
       (params->sample_key & LP_SAMPLER_GATHER_COMP_MASK) >> LP_SAMPLER_GATHER_COMP_SHIFT;
 
    /* the registers of this texture's entry */
-   LLVMValueRef gathers = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                          offsetof(struct fp_jit_context, gathers), i8p);
+   LLVMValueRef gathers = fp_jit_load(gallivm, params->context_ptr,
+                                      offsetof(struct fp_jit_context, gathers), i8p);
    LLVMValueRef at = lp_build_const_int32(gallivm, (int)(params->texture_index *
                                                          sizeof(struct fp_jit_gather)));
    LLVMValueRef entry = LLVMBuildGEP2(b, i8, gathers, &at, 1, "");
@@ -525,17 +524,12 @@ static void fp_emit_gather_quads(struct fp_jit_sampler *js, struct gallivm_state
       struct fp_jit_memo *v = fp_jit_memo(js, FP_MEMO_VALID, params, 0, none, zero);
       if (!v->v[0]) {
          /* this texture's registers valid in this epoch for this sampler */
-         LLVMValueRef epoch_p = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                                offsetof(struct fp_jit_context, tex_epoch),
-                                                LLVMPointerType(i64, 0));
+         LLVMValueRef epoch_p = fp_jit_load(gallivm, params->context_ptr,
+                                            offsetof(struct fp_jit_context, tex_epoch),
+                                            LLVMPointerType(i64, 0));
          LLVMValueRef epoch = LLVMBuildLoad2(b, i64, epoch_p, "");
 #define FIELD(type, member) \
-   LLVMBuildLoad2(b, type, \
-                  LLVMBuildBitCast(b, LLVMBuildGEP2(b, i8, entry, \
-                                                    (LLVMValueRef[]){ lp_build_const_int32(gallivm, \
-                                                       (int)offsetof(struct fp_jit_gather, member)) }, \
-                                                    1, ""), \
-                                   LLVMPointerType(type, 0), ""), "")
+   fp_jit_load(gallivm, entry, offsetof(struct fp_jit_gather, member), type)
          v->v[0] = LLVMBuildAnd(b,
             LLVMBuildICmp(b, LLVMIntEQ, FIELD(i64, epoch), epoch, ""),
             LLVMBuildAnd(b, LLVMBuildICmp(b, LLVMIntEQ, FIELD(i32, sampler),
@@ -569,14 +563,14 @@ static void fp_emit_gather_quads(struct fp_jit_sampler *js, struct gallivm_state
    LLVMValueRef fast[4], words[4];
    fp_jit_gather_read(gallivm, regs, n, comp, f->xy, again ? f->v : NULL, words, fast);
    /* the quads counted as the glue counts them: the real ones */
-   LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                        offsetof(struct fp_jit_context, quads), i32);
+   LLVMValueRef quads = fp_jit_load(gallivm, params->context_ptr,
+                                    offsetof(struct fp_jit_context, quads), i32);
    LLVMValueRef one = lp_build_const_int32(gallivm, 1), max = lp_build_const_int32(gallivm, nq);
    quads = LLVMBuildSelect(b, LLVMBuildICmp(b, LLVMIntULT, quads, one, ""), one, quads, "");
    quads = LLVMBuildSelect(b, LLVMBuildICmp(b, LLVMIntUGT, quads, max, ""), max, quads, "");
-   LLVMValueRef count_p = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                          offsetof(struct fp_jit_context, gathered),
-                                          LLVMPointerType(i64, 0));
+   LLVMValueRef count_p = fp_jit_load(gallivm, params->context_ptr,
+                                      offsetof(struct fp_jit_context, gathered),
+                                      LLVMPointerType(i64, 0));
    LLVMBuildStore(b, LLVMBuildAdd(b, LLVMBuildLoad2(b, i64, count_p, ""),
                                   LLVMBuildZExt(b, quads, i64, ""), ""), count_p);
    LLVMBasicBlockRef read_end = LLVMGetInsertBlock(b);
@@ -707,8 +701,8 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
       LLVMTypeRef i32 = LLVMInt32TypeInContext(gallivm->context);
       for (unsigned i = 4; i < 4 * nq; i++)
          fp_store_vec(gallivm, rgba, fvec, i, NULL);
-      LLVMValueRef quads = fp_ctx_load_ptr(gallivm, params->context_ptr,
-                                           offsetof(struct fp_jit_context, quads), i32);
+      LLVMValueRef quads = fp_jit_load(gallivm, params->context_ptr,
+                                       offsetof(struct fp_jit_context, quads), i32);
       for (unsigned k = 1; k < nq; k++) {
          struct lp_build_if_state ifs;
          lp_build_if(&ifs, gallivm, LLVMBuildICmp(b, LLVMIntUGT, quads,

@@ -173,12 +173,16 @@ static void read_words(const struct tex_unit *u, const struct tex_footprint *f, 
 /* A colour channel of those words, decoded as fetch decodes it
  * (tex_unorm8: the integer to binary32, times 1/255), the border colour's
  * where the tap is outside. */
+static unsigned byte_shift(enum tex_format fmt, unsigned ch)
+{
+   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
+   return ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
+}
+
 static void decode_byte(const struct tex_unit *u, const v4u w[4], const v4i in[4], unsigned ch,
                         float rgba[4][TEX_QUAD])
 {
-   const enum tex_format fmt = u->view.format;
-   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
-   const unsigned shift = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
+   const unsigned shift = byte_shift(u->view.format, ch);
    const float bc = u->samp.border[ch];
    const v4f border = { bc, bc, bc, bc };
    for (unsigned k = 0; k < 4; k++) {
@@ -288,12 +292,11 @@ bool tex_unit_gather_regs(const struct tex_unit *u, struct tex_gather_regs *r)
    dfx_words(u->k_texel_offset, r->neg_half);
    r->neg_half[0] ^= 1;
    const bool x8 = fmt == TEX_FMT_RGBX8 || fmt == TEX_FMT_BGRX8;
-   const bool bgr = fmt == TEX_FMT_BGRA8 || fmt == TEX_FMT_BGRX8;
    for (unsigned c = 0; c < 4; c++) {
       unsigned ch;
       if (byte_channel(u, c, &ch)) {
          /* decode_byte's byte */
-         r->shift[c] = ch == 3 ? 24 : ch == 1 ? 8 : (ch == 0) != bgr ? 0 : 16;
+         r->shift[c] = (int32_t)byte_shift(fmt, ch);
          continue;
       }
       /* read_taps: the swizzle's constant, or an X layout's fourth (fetch's 1) */
