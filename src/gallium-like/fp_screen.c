@@ -129,6 +129,13 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_BUFFER_MAP_PERSISTENT_COHERENT:   /* maps are the storage itself */
    case PIPE_CAP_CLEAR_TEXTURE:
       return 1;
+   /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
+    * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled
+    * fragment shaders), so st lays out shared and packed blocks as std430,
+    * as llvmpipe does, not in std140's vec4 slots.  The default uniforms
+    * stay vec4 CONST registers. */
+   case PIPE_CAP_LOAD_CONSTBUF:
+      return 1;
    case PIPE_CAP_ESSL_FEATURE_LEVEL:
       return 310;   /* GL ES 3.1 (docs/compute.md) */
    case PIPE_CAP_MAX_TEXTURE_GATHER_COMPONENTS:

@@ -33,6 +33,11 @@
  *                pixel shows texelFetch of sample (x + y) % 4
  *   stencil-tex  overlapping triangles counted in a depth/stencil texture,
  *                then sampled as GL_STENCIL_INDEX (usampler2D)
+ *   ubo          a uniform block without a layout qualifier (shared:
+ *                laid out as the driver chooses, filled by the offsets and
+ *                strides it reports) read by dynamic indices in the vertex
+ *                shader (per instance) and the fragment shader (per
+ *                pixel); every pixel is checked against the CPU's values
  *   builtins     a fragment shader and a compute shader calling GLSL ES
  *                3.10's built-ins on each pixel's (invocation's) own numbers (ldexp and frexp, the packing functions,
  *                the bit operations, the extended arithmetic), each checked
@@ -722,6 +727,93 @@ static const char *cs_builtins =
    "}\n";
 
 /* The compute shader's results: the invocations whose identities broke. */
+/* case ubo: int w[67], vec3 v[5], float f[3] in a shared block, both
+ * stages reading it; 8x8 cells of 8x8 pixels, one instance a cell. */
+static const char *ubo_block =
+   "uniform Words { highp int w[67]; highp vec3 v[5]; highp float f[3]; };\n";
+
+static int ubo_w(int i) { return (i * 37 + 11) % 256; }
+static int ubo_vz(int j) { return j * 50 + 3; }   /* v[j].z in 255ths */
+static int ubo_f(int k) { return k * 100 + 20; }  /* f[k] in 255ths */
+
+static void case_ubo(int size)
+{
+   char vs_src[1024], fs_src[1024];
+   snprintf(vs_src, sizeof(vs_src),
+            "#version 300 es\n%s"
+            "flat out highp ivec2 v_w;\n"
+            "void main() {\n"
+            "   int c = gl_InstanceID;\n"
+            "   vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);\n"
+            "   vec2 cell = vec2(c %% 8, c / 8);\n"
+            "   gl_Position = vec4((cell + corner) / 4.0 - 1.0, 0.0, 1.0);\n"
+            "   v_w = ivec2(w[(c * 13) %% 67], int(v[c %% 5].z * 255.0 + 0.5));\n"
+            "}\n", ubo_block);
+   snprintf(fs_src, sizeof(fs_src),
+            "#version 300 es\nprecision highp float;\n%s"
+            "flat in highp ivec2 v_w;\n"
+            "out vec4 o_color;\n"
+            "void main() {\n"
+            "   ivec2 p = ivec2(gl_FragCoord.xy) * 64 / %d;\n"
+            "   int i = (p.x + 7 * p.y) %% 67;\n"
+            "   o_color = vec4(float(w[i]) / 255.0, float(v_w.x) / 255.0,\n"
+            "                  float(v_w.y) / 255.0, f[i %% 3]);\n"
+            "}\n", ubo_block, size);
+   static const char *const attr[] = { NULL };
+   GLuint p = fp_gl_program(vs_src, fs_src, attr);
+   glUseProgram(p);
+
+   /* the block as this driver lays it out */
+   static const char *const names[3] = { "w[0]", "v[0]", "f[0]" };
+   GLuint idx[3];
+   GLint off[3], stride[3], bytes = 0;
+   glGetUniformIndices(p, 3, names, idx);
+   glGetActiveUniformsiv(p, 3, idx, GL_UNIFORM_OFFSET, off);
+   glGetActiveUniformsiv(p, 3, idx, GL_UNIFORM_ARRAY_STRIDE, stride);
+   const GLuint block = glGetUniformBlockIndex(p, "Words");
+   glGetActiveUniformBlockiv(p, block, GL_UNIFORM_BLOCK_DATA_SIZE, &bytes);
+   printf("stat: strides=%d,%d,%d size=%d\n", stride[0], stride[1], stride[2], bytes);
+   check(bytes > 0 && bytes <= 4096, "the block's size");
+   unsigned char data[4096] = { 0 };
+   for (int i = 0; i < 67; i++) {
+      const int32_t x = ubo_w(i);
+      memcpy(data + off[0] + i * stride[0], &x, 4);
+   }
+   for (int j = 0; j < 5; j++) {
+      const float x[3] = { (float)j, (float)-j, (float)ubo_vz(j) / 255.0f };
+      memcpy(data + off[1] + j * stride[1], x, sizeof(x));
+   }
+   for (int k = 0; k < 3; k++) {
+      const float x = (float)ubo_f(k) / 255.0f;
+      memcpy(data + off[2] + k * stride[2], &x, 4);
+   }
+   GLuint buf;
+   glGenBuffers(1, &buf);
+   glBindBuffer(GL_UNIFORM_BUFFER, buf);
+   glBufferData(GL_UNIFORM_BUFFER, bytes, data, GL_STATIC_DRAW);
+   glUniformBlockBinding(p, block, 1);
+   glBindBufferBase(GL_UNIFORM_BUFFER, 1, buf);
+   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 64);
+
+   unsigned char *px = malloc((size_t)size * size * 4);
+   glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, px);
+   int wrong = 0;
+   for (int y = 0; y < size; y++) {
+      for (int x = 0; x < size; x++) {
+         const int qx = x * 64 / size, qy = y * 64 / size;
+         const int i = (qx + 7 * qy) % 67, c = x * 8 / size + 8 * (y * 8 / size);
+         const int want[4] = { ubo_w(i), ubo_w(c * 13 % 67), ubo_vz(c % 5), ubo_f(i % 3) };
+         const unsigned char *q = px + ((size_t)y * size + x) * 4;
+         for (int ch = 0; ch < 4; ch++)
+            wrong += q[ch] != want[ch];
+      }
+   }
+   free(px);
+   printf("stat: wrong_channels=%d\n", wrong);
+   check(wrong == 0, "a value read from the uniform block is wrong");
+   glDeleteBuffers(1, &buf);
+}
+
 static int builtins_compute(void)
 {
    GLuint buf;
@@ -765,6 +857,10 @@ int main(int argc, char **argv)
       case_gather_cube(a.size);
    } else if (!strcmp(c, "gather-clamp") || !strcmp(c, "gather-ties")) {
       case_gather_clamp(a.size, !strcmp(c, "gather-ties"));
+   } else if (!strcmp(c, "ubo")) {
+      glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
+      glViewport(0, 0, a.size, a.size);
+      case_ubo(a.size);
    } else if (!strcmp(c, "builtins")) {
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
@@ -821,7 +917,7 @@ int main(int argc, char **argv)
       }
    } else {
       fp_die("--case: compute, shared, image, gather, gather-cube, gather-clamp, gather-ties, "
-             "builtins, ms-fetch or stencil-tex");
+             "ubo, builtins, ms-fetch or stencil-tex");
    }
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */
