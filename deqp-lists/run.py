@@ -337,7 +337,9 @@ def cmd_run(args):
         cases = shard(cases, si, sn)
     excluded = {c: r for c in cases for r in [matching(skips, c)] if r is not None}
     to_run = [c for c in cases if c not in excluded]
-    label = os.path.basename(args.list)[:-4] if args.list.endswith(".txt") else args.list
+    # a list file names the run by its base name (mustpass, all, or FILE's)
+    label = os.path.basename(args.list)
+    label = label[:-4] if label.endswith(".txt") else label
     name = f"{args.driver}-{args.module}-{label}" + (f"-f{args.fraction}" if args.fraction > 1 else "") \
         + (f"-s{si}of{sn}" if sn > 1 else "")
     args.outdir = out_dir = os.path.join(args.out, name)
