@@ -71,6 +71,13 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
       draw_set_indexes(draw, (const ubyte *)indices, info->index_size, available);
    }
 
+   /* The extra outputs draw's stages add to each vertex (the unfilled
+    * stage's face for lines and points of polygons, the primitive id the
+    * assembler injects, the smooth lines' and points' coordinates), as
+    * llvmpipe asks for them: the driver must, and a smooth line stage's
+    * flush removes them all.  Cheap, and the same slots for the same
+    * state, so every draw. */
+   draw_prepare_shader_outputs(draw);
    draw_vbo(draw, info, drawid_offset, indirect, draws, num_draws, 0);
 
    for (unsigned i = 0; i < fp->num_vertex_buffers; i++)

@@ -395,6 +395,12 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
    bool front;
    if (!rast_triangle_counted(rc, rast_det(fr->X, fr->Y), &front))
       return;
+   /* A polygon drawn as lines or points, whose fragment shader reads its
+    * face, gives its face in a slot of every vertex (as rast_line and
+    * rast_point take it): smooth lines reach set-up as triangles of any
+    * winding, and face the polygon's way, as its filled triangles do. */
+   if (rc->vl.has_face)
+      front = v0[rc->vl.face_slot][0] != 0.0f;
    fr_set_facing(fr, front);
 
    rast_setup_rebase(rc, fr, v, 3);
