@@ -38,6 +38,13 @@
  *                strides it reports) read by dynamic indices in the vertex
  *                shader (per instance) and the fragment shader (per
  *                pixel); every pixel is checked against the CPU's values
+ *   image-formats every image format GL ES 3.1 and GL_NV_image_formats
+ *                name (the 16-bit normalized ones where GL_EXT_texture_norm16
+ *                is exposed): a compute shader loads a 4x4 image of random
+ *                texels (no infinities or NaNs) into a storage buffer and
+ *                stores it to a second image, a second dispatch loads that
+ *                back; the buffers' words are drawn as a texture, a format a
+ *                row, and the round trip must give the first load's values
  *   builtins     a fragment shader and a compute shader calling GLSL ES
  *                3.10's built-ins on each pixel's (invocation's) own numbers (ldexp and frexp, the packing functions,
  *                the bit operations, the extended arithmetic), each checked
@@ -727,6 +734,174 @@ static const char *cs_builtins =
    "}\n";
 
 /* The compute shader's results: the invocations whose identities broke. */
+/* case image-formats: a format, its GLSL layout name and kind, its
+ * upload format and type, and how to draw random texels of it. */
+enum rand_kind { RAND_BYTES, RAND_F32, RAND_F16, RAND_R11G11B10F };
+static const struct image_format {
+   const char *name;
+   char kind;   /* 'f' image2D, 'u' uimage2D, 'i' iimage2D */
+   GLenum format, pixel_format, pixel_type;
+   int bytes;   /* a texel */
+   enum rand_kind rand;
+   bool norm16;
+} image_formats[] = {
+   { "rgba32f", 'f', GL_RGBA32F, GL_RGBA, GL_FLOAT, 16, RAND_F32, false },
+   { "rgba16f", 'f', GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, 8, RAND_F16, false },
+   { "r32f", 'f', GL_R32F, GL_RED, GL_FLOAT, 4, RAND_F32, false },
+   { "rgba8", 'f', GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, RAND_BYTES, false },
+   { "rgba8_snorm", 'f', GL_RGBA8_SNORM, GL_RGBA, GL_BYTE, 4, RAND_BYTES, false },
+   { "rgba32ui", 'u', GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, 16, RAND_BYTES, false },
+   { "rgba16ui", 'u', GL_RGBA16UI, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT, 8, RAND_BYTES, false },
+   { "rgba8ui", 'u', GL_RGBA8UI, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, 4, RAND_BYTES, false },
+   { "r32ui", 'u', GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, 4, RAND_BYTES, false },
+   { "rgba32i", 'i', GL_RGBA32I, GL_RGBA_INTEGER, GL_INT, 16, RAND_BYTES, false },
+   { "rgba16i", 'i', GL_RGBA16I, GL_RGBA_INTEGER, GL_SHORT, 8, RAND_BYTES, false },
+   { "rgba8i", 'i', GL_RGBA8I, GL_RGBA_INTEGER, GL_BYTE, 4, RAND_BYTES, false },
+   { "r32i", 'i', GL_R32I, GL_RED_INTEGER, GL_INT, 4, RAND_BYTES, false },
+   /* GL_NV_image_formats */
+   { "rg32f", 'f', GL_RG32F, GL_RG, GL_FLOAT, 8, RAND_F32, false },
+   { "rg16f", 'f', GL_RG16F, GL_RG, GL_HALF_FLOAT, 4, RAND_F16, false },
+   { "r11f_g11f_b10f", 'f', GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV, 4,
+     RAND_R11G11B10F, false },
+   { "r16f", 'f', GL_R16F, GL_RED, GL_HALF_FLOAT, 2, RAND_F16, false },
+   { "rgb10_a2ui", 'u', GL_RGB10_A2UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT_2_10_10_10_REV, 4,
+     RAND_BYTES, false },
+   { "rg32ui", 'u', GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, 8, RAND_BYTES, false },
+   { "rg16ui", 'u', GL_RG16UI, GL_RG_INTEGER, GL_UNSIGNED_SHORT, 4, RAND_BYTES, false },
+   { "rg8ui", 'u', GL_RG8UI, GL_RG_INTEGER, GL_UNSIGNED_BYTE, 2, RAND_BYTES, false },
+   { "r16ui", 'u', GL_R16UI, GL_RED_INTEGER, GL_UNSIGNED_SHORT, 2, RAND_BYTES, false },
+   { "r8ui", 'u', GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, 1, RAND_BYTES, false },
+   { "rg32i", 'i', GL_RG32I, GL_RG_INTEGER, GL_INT, 8, RAND_BYTES, false },
+   { "rg16i", 'i', GL_RG16I, GL_RG_INTEGER, GL_SHORT, 4, RAND_BYTES, false },
+   { "rg8i", 'i', GL_RG8I, GL_RG_INTEGER, GL_BYTE, 2, RAND_BYTES, false },
+   { "r16i", 'i', GL_R16I, GL_RED_INTEGER, GL_SHORT, 2, RAND_BYTES, false },
+   { "r8i", 'i', GL_R8I, GL_RED_INTEGER, GL_BYTE, 1, RAND_BYTES, false },
+   { "rgba16", 'f', 0x805B /* GL_RGBA16_EXT */, GL_RGBA, GL_UNSIGNED_SHORT, 8, RAND_BYTES, true },
+   { "rgb10_a2", 'f', GL_RGB10_A2, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, 4, RAND_BYTES,
+     false },
+   { "rg16", 'f', 0x822C /* GL_RG16_EXT */, GL_RG, GL_UNSIGNED_SHORT, 4, RAND_BYTES, true },
+   { "rg8", 'f', GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2, RAND_BYTES, false },
+   { "r16", 'f', 0x822A /* GL_R16_EXT */, GL_RED, GL_UNSIGNED_SHORT, 2, RAND_BYTES, true },
+   { "r8", 'f', GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, RAND_BYTES, false },
+   { "rgba16_snorm", 'f', 0x8F9B /* GL_RGBA16_SNORM_EXT */, GL_RGBA, GL_SHORT, 8, RAND_BYTES,
+     true },
+   { "rg16_snorm", 'f', 0x8F99 /* GL_RG16_SNORM_EXT */, GL_RG, GL_SHORT, 4, RAND_BYTES, true },
+   { "rg8_snorm", 'f', GL_RG8_SNORM, GL_RG, GL_BYTE, 2, RAND_BYTES, false },
+   { "r16_snorm", 'f', 0x8F98 /* GL_R16_SNORM_EXT */, GL_RED, GL_SHORT, 2, RAND_BYTES, true },
+   { "r8_snorm", 'f', GL_R8_SNORM, GL_RED, GL_BYTE, 1, RAND_BYTES, false },
+};
+
+/* A texel's random bytes: finite floats only (a NaN's payload is the
+ * driver's to keep or not). */
+static void image_texel(const struct image_format *f, uint32_t *rng, unsigned char *out)
+{
+   for (int b = 0; b < f->bytes; b += 4) {
+      uint32_t w = e2e_rand(rng);
+      switch (f->rand) {
+      case RAND_F32: {
+         const float x = (float)((int)(w % 2001u) - 1000) / 64.0f;
+         memcpy(&w, &x, 4);
+         break;
+      }
+      case RAND_F16:   /* two halves, exponents 0..29 */
+         w = (w & 0x83ff83ffu) | ((w >> 10) % 30u) << 10 | ((w >> 20) % 30u) << 26;
+         break;
+      case RAND_R11G11B10F:   /* exponents 0..30 */
+         w = ((w & 0x3fu) | ((w >> 6) % 31u) << 6) |
+             ((w >> 11 & 0x3fu) | ((w >> 17) % 31u) << 6) << 11 |
+             ((w >> 22 & 0x1fu) | ((w >> 27) % 31u) << 5) << 22;
+         break;
+      case RAND_BYTES:
+         break;
+      }
+      memcpy(out + b, &w, (size_t)(f->bytes - b < 4 ? f->bytes - b : 4));
+   }
+}
+
+static void case_image_formats(int size)
+{
+   if (size < 64)
+      fp_die("--case image-formats draws a 64x64 table: --size 64 or more");
+   const bool norm16 = e2e_has_extension("GL_EXT_texture_norm16");
+   printf("stat: norm16=%d\n", norm16);
+   const int nf = (int)(sizeof(image_formats) / sizeof(image_formats[0]));
+   uint32_t *words = calloc((size_t)size * size, 4);
+   uint32_t rng = 0x1f0a7a11u;
+   int tested = 0, differ = 0;
+   for (int f = 0; f < nf; f++) {
+      const struct image_format *fmt = &image_formats[f];
+      if (fmt->norm16 && !norm16)
+         continue;
+      const char *type = fmt->kind == 'u' ? "uvec4" : fmt->kind == 'i' ? "ivec4" : "vec4";
+      const char *img = fmt->kind == 'u' ? "uimage2D" : fmt->kind == 'i' ? "iimage2D" : "image2D";
+      char cs[1024];
+      snprintf(cs, sizeof(cs),
+               "#version 310 es\n"
+               "#extension GL_NV_image_formats : enable\n"
+               "layout(local_size_x = 4, local_size_y = 4) in;\n"
+               "layout(%s, binding = 0) readonly uniform highp %s src;\n"
+               "layout(%s, binding = 1) writeonly uniform highp %s dst;\n"
+               "layout(std430, binding = 0) buffer Out { highp %s v[16]; };\n"
+               "void main() {\n"
+               "   ivec2 p = ivec2(gl_LocalInvocationID.xy);\n"
+               "   highp %s x = imageLoad(src, p);\n"
+               "   v[p.y * 4 + p.x] = x;\n"
+               "   imageStore(dst, p, x);\n"
+               "}\n", fmt->name, img, fmt->name, img, type, type);
+      unsigned char texels[16 * 16];
+      for (int t = 0; t < 16; t++)
+         image_texel(fmt, &rng, texels + t * fmt->bytes);
+      GLuint tex[2], buf[2];
+      glGenTextures(2, tex);
+      for (int k = 0; k < 2; k++) {
+         glBindTexture(GL_TEXTURE_2D, tex[k]);
+         glTexStorage2D(GL_TEXTURE_2D, 1, fmt->format, 4, 4);
+      }
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glBindTexture(GL_TEXTURE_2D, tex[0]);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, fmt->pixel_format, fmt->pixel_type, texels);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+      glGenBuffers(2, buf);
+      const GLuint prog = fp_gl_compute_program(cs);
+      glUseProgram(prog);
+      for (int pass = 0; pass < 2; pass++) {
+         /* pass 0 loads the uploaded image and stores it; pass 1 loads
+          * the stored one (and stores it to the first) */
+         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf[pass]);
+         glBufferData(GL_SHADER_STORAGE_BUFFER, 256, NULL, GL_DYNAMIC_COPY);
+         glBindImageTexture(0, tex[pass], 0, GL_FALSE, 0, GL_READ_ONLY, fmt->format);
+         glBindImageTexture(1, tex[1 - pass], 0, GL_FALSE, 0, GL_WRITE_ONLY, fmt->format);
+         glDispatchCompute(1, 1, 1);
+         glMemoryBarrier(GL_ALL_BARRIER_BITS);
+      }
+      uint32_t got[2][64];
+      for (int pass = 0; pass < 2; pass++) {
+         glBindBuffer(GL_SHADER_STORAGE_BUFFER, buf[pass]);
+         const void *m = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, 256, GL_MAP_READ_BIT);
+         if (m) {
+            memcpy(got[pass], m, 256);
+            glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+         } else {
+            memset(got[pass], 0, 256);
+         }
+      }
+      memcpy(words + (size_t)f * size, got[0], 256);   /* a format a row */
+      const bool same = !memcmp(got[0], got[1], 256);
+      differ += !same;
+      tested++;
+      if (!same)
+         printf("stat: round_trip_differs=%s\n", fmt->name);
+      glDeleteProgram(prog);
+      glDeleteBuffers(2, buf);
+      glDeleteTextures(2, tex);
+   }
+   printf("stat: formats=%d round_trips_differing=%d\n", tested, differ);
+   check(tested >= 28, "fewer image formats than GL ES 3.1 with GL_NV_image_formats name");
+   check(differ == 0, "a stored texel loads back as another value");
+   show_words(words, size);
+   free(words);
+}
+
 /* case ubo: int w[67], vec3 v[5], float f[3] in a shared block, both
  * stages reading it; 8x8 cells of 8x8 pixels, one instance a cell. */
 static const char *ubo_block =
@@ -857,6 +1032,9 @@ int main(int argc, char **argv)
       case_gather_cube(a.size);
    } else if (!strcmp(c, "gather-clamp") || !strcmp(c, "gather-ties")) {
       case_gather_clamp(a.size, !strcmp(c, "gather-ties"));
+   } else if (!strcmp(c, "image-formats")) {
+      case_image_formats(a.size);
+      glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
    } else if (!strcmp(c, "ubo")) {
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
@@ -917,7 +1095,7 @@ int main(int argc, char **argv)
       }
    } else {
       fp_die("--case: compute, shared, image, gather, gather-cube, gather-clamp, gather-ties, "
-             "ubo, builtins, ms-fetch or stencil-tex");
+             "image-formats, ubo, builtins, ms-fetch or stencil-tex");
    }
    check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */

@@ -41,16 +41,6 @@ static void check(bool ok, const char *what)
    }
 }
 
-static bool has_extension(const char *name)
-{
-   GLint n = 0;
-   glGetIntegerv(GL_NUM_EXTENSIONS, &n);
-   for (GLint i = 0; i < n; i++)
-      if (!strcmp((const char *)glGetStringi(GL_EXTENSIONS, (GLuint)i), name))
-         return true;
-   return false;
-}
-
 static const char *vs =
    "#version 300 es\n"
    "in vec4 a_pos;\n"
@@ -192,7 +182,7 @@ int main(int argc, char **argv)
    }
 
    if (!strcmp(c, "fetch") || !strcmp(c, "fetch-msaa")) {
-      check(has_extension("GL_EXT_shader_framebuffer_fetch"),
+      check(e2e_has_extension("GL_EXT_shader_framebuffer_fetch"),
             "GL_EXT_shader_framebuffer_fetch is not exposed");
       if (!errors)
          self_check_fetch(a.size);
@@ -205,11 +195,11 @@ int main(int argc, char **argv)
          e2e_msaa_resolve(&m, g.fbo);
       }
    } else if (!strcmp(c, "dualsrc")) {
-      check(has_extension("GL_EXT_blend_func_extended"), "GL_EXT_blend_func_extended is not exposed");
+      check(e2e_has_extension("GL_EXT_blend_func_extended"), "GL_EXT_blend_func_extended is not exposed");
       if (!errors)
          scene_dualsrc(a.size);
    } else if (!strcmp(c, "advanced")) {
-      check(has_extension("GL_KHR_blend_equation_advanced"),
+      check(e2e_has_extension("GL_KHR_blend_equation_advanced"),
             "GL_KHR_blend_equation_advanced is not exposed");
       if (!errors)
          scene_advanced(a.size);

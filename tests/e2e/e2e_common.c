@@ -251,3 +251,13 @@ void e2e_msaa_delete(struct e2e_msaa *m)
    glDeleteRenderbuffers(1, &m->color);
    glDeleteRenderbuffers(1, &m->ds);
 }
+
+bool e2e_has_extension(const char *name)
+{
+   GLint n = 0;
+   glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+   for (GLint i = 0; i < n; i++)
+      if (!strcmp((const char *)glGetStringi(GL_EXTENSIONS, (GLuint)i), name))
+         return true;
+   return false;
+}

@@ -40,6 +40,9 @@ void e2e_begin(struct fp_gl *g, const struct e2e_args *a);
  * tears down. */
 void e2e_end(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask);
 
+/* Whether the context (GL ES 3.0 or later) exposes the extension `name`. */
+bool e2e_has_extension(const char *name);
+
 /* Program with a_pos (vec4, clip space) and a_color (vec4) varying. */
 GLuint e2e_color_program(void);
 /* Draws n vertices of mode from client arrays: pos 4 floats, color 4 floats
