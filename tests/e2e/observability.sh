@@ -9,8 +9,9 @@
 #   FIXPIPE_VECTORS=DIR,frames=A-B on two trace replays (glmark2-es2's build scene: the
 #     scan converter and the perspective division; its mipmapped texture scene: the
 #     texture unit) writes vectors that fp-vectors replays bit-exactly, and with one
-#     output bit flipped (a Z word, a filtered texel) it fails; units=tex writes the
-#     texture unit's alone.
+#     output bit flipped (a Z word, a filtered texel) it fails; their coverage is the
+#     exact reference's (test_vectors_ref), and not once a pixel is flipped; units=tex
+#     writes the texture unit's alone.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=observability
 . "$(dirname "$0")/checks.sh"
@@ -72,11 +73,14 @@ case $line in
 esac
 
 # 6. vectors from trace replays, and a flipped bit in each
-# flip FILE QUAD WORD: bit 0 of word WORD of record QUAD of FILE
+# flip FILE QUAD WORD [BIT]: bit BIT (0, or a multiple of 4) of word WORD of
+# record QUAD of FILE
 flip() {
-    awk -v q="// quad $2" -v w="$3" '$0 == q { at = NR + 1 + w } NR == at {
-            c = substr($0, 16, 1); n = index("0123456789abcdef", c) - 1;
-            n = n % 2 ? n - 1 : n + 1; $0 = substr($0, 1, 15) substr("0123456789abcdef", n + 1, 1) }
+    awk -v q="// quad $2" -v w="$3" -v d="$((16 - ${4:-0} / 4))" '$0 == q { at = NR + 1 + w }
+        NR == at {
+            c = substr($0, d, 1); n = index("0123456789abcdef", c) - 1;
+            n = n % 2 ? n - 1 : n + 1
+            $0 = substr($0, 1, d - 1) substr("0123456789abcdef", n + 1, 1) substr($0, d + 1) }
         { print }' "$1" > "$1.flipped" && mv "$1.flipped" "$1"
 }
 # vectors NAME TRACE FRAMES FILE QUAD WORD: record, replay, flip one output bit, replay
@@ -90,6 +94,20 @@ vectors() {
     else
         fail "vectors of $2: $(tail -n 2 "$out/$name-record.log" "$out/$name-replay.log" | tr '\n' ' ')"
         return
+    fi
+    # the recorded coverage against the exact reference, and a quad's pixel 0
+    # (bit 32 of its word 0) flipped in a copy
+    if "$build/tests/unit/test_vectors_ref" "$out/$name" > "$out/$name-ref.log" 2>&1; then
+        pass "vectors of $2: $(sed 's/^test_vectors_ref: [^:]*: //' "$out/$name-ref.log")"
+        rm -rf "$out/$name-cov" && cp -r "$out/$name" "$out/$name-cov"
+        flip "$out/$name-cov/scan.out.hex" 100 0 32
+        if "$build/tests/unit/test_vectors_ref" "$out/$name-cov" > "$out/$name-cov.log" 2>&1; then
+            fail "vectors of $2 with quad 100's pixel 0 flipped: the reference check passed"
+        else
+            pass "vectors of $2 with quad 100's pixel 0 flipped: the reference check finds it"
+        fi
+    else
+        fail "vectors of $2 against the exact reference: $(tail -n 3 "$out/$name-ref.log" | tr '\n' ' ')"
     fi
     flip "$out/$name/$4" "$5" "$6"
     "$build/tools/fp-vectors" "$out/$name" > "$out/$name-flipped.log" 2>&1
