@@ -196,11 +196,12 @@ static void fp_print_stats(const struct fp_context *fp)
            PRIu64 "\n", rast_get_profile(fp->rast)->tile_size, st->tile_passes, st->tile_guard);
    fprintf(stderr, "  fragment shaders: %s, compiled %" PRIu64 " (%.1f ms) failed %" PRIu64
            " (from the disk cache %" PRIu64 "), quads compiled %" PRIu64 " interpreted %" PRIu64
-           "; vertex shaders compiled %" PRIu64 "; hot before a batch %" PRIu64
+           "; vertex shaders compiled %" PRIu64 " failed %" PRIu64 "; hot before a batch %" PRIu64
            ", hot after a present %" PRIu64 "\n",
            fp->jit ? "tiered" : "interpreted (nojit)", fp->jit_stats.compiled,
            fp->jit_stats.compile_ms, fp->jit_stats.failed, fp->jit_stats.cache_hits,
-           quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.hot_ahead,
+           quads_jit, quads_interp, fp->jit_stats.vs_compiled, fp->jit_stats.vs_failed,
+           fp->jit_stats.hot_ahead,
            fp->jit_stats.hot_loop);
    fprintf(stderr, "  gathers in compiled code: quads %" PRIu64 " addressed and read there, the "
            "rest through the texture unit's C functions\n", st->tex_gather_jit);

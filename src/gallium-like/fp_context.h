@@ -10,6 +10,7 @@
 
 struct draw_context;
 struct draw_stage;
+struct draw_vertex_shader;
 struct vbuf_render;
 struct tgsi_exec_machine;
 struct fp_tgsi_sampler;
@@ -74,8 +75,8 @@ struct fp_fragment_shader {
  * then compiled (draw's LLVM path); one that samples textures stays in
  * tgsi_exec, where its samples reach the modeled unit (fp_state_shader.c). */
 struct fp_vertex_shader {
-   void *draw_vs;                   /* the one bound */
-   void *draw_vs_llvm;              /* once compiled */
+   struct draw_vertex_shader *draw_vs;        /* the one bound */
+   struct draw_vertex_shader *draw_vs_llvm;   /* once compiled */
    struct pipe_shader_state state;  /* its own copy of the tokens */
    bool samples;
    bool llvm_failed;
@@ -161,6 +162,7 @@ struct fp_context {
    struct {
       uint64_t compiled, failed;
       uint64_t vs_compiled, cache_hits;
+      uint64_t vs_failed;         /* gallivm refused: stays in tgsi_exec */
       uint64_t hot_ahead;         /* fragment shaders hot before a batch */
       uint64_t hot_loop;          /* compiled sooner, the process presenting */
       double compile_ms;

@@ -6,6 +6,7 @@
 #include "util/u_memory.h"
 #include "util/u_inlines.h"
 #include "draw/draw_context.h"
+#include "draw/draw_vs.h"
 #include "tgsi/tgsi_parse.h"
 #include "tgsi/tgsi_scan.h"
 #include "tgsi/tgsi_exec.h"
@@ -173,8 +174,13 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
        !(fp_env_debug() & FP_DEBUG_JITALL))
       return;
    vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
-   if (!vs->draw_vs_llvm) {
+   /* draw falls back on tgsi_exec itself when gallivm refuses */
+   if (!vs->draw_vs_llvm || vs->draw_vs_llvm->interpreted) {
+      if (vs->draw_vs_llvm)
+         draw_delete_vertex_shader(fp->draw, vs->draw_vs_llvm);
+      vs->draw_vs_llvm = NULL;
       vs->llvm_failed = true;   /* stays interpreted */
+      fp->jit_stats.vs_failed++;
       return;
    }
    fp->jit_stats.vs_compiled++;
