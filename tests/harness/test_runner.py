@@ -6,6 +6,7 @@ decides each result from the test's name. Ends with 'harness: N passed, N failed
 """
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -259,6 +260,28 @@ def test_profile_of_the_list():
               f"{type(loaded).__name__} {sorted(tests)} {tests['fake@p@pass-in-gl'].command}")
     finally:
         sys.path.remove(PIGLIT)
+
+
+def test_checked_in_expectations():
+    """Every line of the drivers' fails.txt has a reason; fixpipe's names no
+    known bug (a BUG line is work to do, not an expected result)."""
+    exp = os.path.join(REPO, "piglit-lists", "expectations")
+    for driver in ("fixpipe", "softpipe", "llvmpipe"):
+        lines = open(os.path.join(exp, f"{driver}-fails.txt")).read().split("\n")
+        unexplained, reason = [], False
+        for line in lines:
+            if line.startswith("#"):
+                reason = True
+            elif line.strip():
+                if not reason:
+                    unexplained.append(line)
+            else:
+                reason = False
+        check(f"{driver}-fails.txt: every entry under a reason", not unexplained,
+              "\n".join(unexplained[:5]))
+        if driver == "fixpipe":
+            bugs = [l for l in lines if re.search(r"\bBUG\b", l)]
+            check("fixpipe-fails.txt: no BUG line", not bugs, "\n".join(bugs))
 
 
 def main():
