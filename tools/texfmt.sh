@@ -7,7 +7,7 @@
 # The main table draws the ground with its coordinates scaled (fp-persp
 # --repeat-scale, default 128: |u|, |v| in the hundreds to thousands,
 # |u/w| up to about 150) and mipmapped; a second table keeps the unscaled
-# ground (the earlier view) and the scaled one without mipmaps, both LINEAR.
+# ground and the scaled one without mipmaps, both LINEAR.
 #
 #   tools/texfmt.sh [OUTDIR] [--filter nearest|linear|mipmap] [--size WxH]
 #                   [--repeat-scale K] [--frames N] [--build-dir build/std]
@@ -118,7 +118,7 @@ if [ $sweep = 1 ]; then
         render "dfx$n" fixpipe "dfx$n" --frames "$frames"
     done
 fi
-# The second table: the unscaled ground (the earlier view) and the scaled
+# The second table: the unscaled ground and the scaled
 # ground without mipmaps, both LINEAR; the ground only.
 views2="k1 klin"
 r_filter=linear
@@ -279,7 +279,7 @@ md=$out/texfmt.md
     echo "$row |"
     echo
     echo "**Second table: the ground without mipmaps** (\`--view ground\`, ${W}×${H}, \`LINEAR\`):"
-    echo "the unscaled ground (\`--repeat-scale 1\`, the earlier view: |\`u/w\`| ≤ 1.2 on screen,"
+    echo "the unscaled ground (\`--repeat-scale 1\`: |\`u/w\`| ≤ 1.2 on screen,"
     echo "coordinates in the thousands only next to the horizon) and the scaled ground"
     echo "(\`--repeat-scale $scale\`) point-sampled: there every pixel covers many texels, so the"
     echo "picture is aliasing and any error of a texel in the coordinate changes the pixel."
