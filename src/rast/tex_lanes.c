@@ -2,8 +2,9 @@
  * The texture unit's quad for dfx24 on lanes (2-D and 2-D array targets):
  * the quad's four coordinates enter the unit, give the LOD and are
  * addressed together through dfx_lanes.h, each lane the operations of
- * tex_fast.c's quad in its order; fetch and filtering, which read
- * memory per texel, stay per pixel (tex_fast_path.h).  Pixels of one quad
+ * tex_fast.c's quad in its order; the texels are read per tap and
+ * filtered on lanes too, one channel of the quad's pixels a vector
+ * (soa_level2, the operations of tex_fast_path.h's level).  Pixels of one quad
  * at different levels (a per-pixel bias or explicit LOD that differs) and
  * coordinates outside the coordinate input's direct range take the scalar
  * operations for that pixel or lane: the same operations, so the same bits.
