@@ -53,7 +53,7 @@ static void fill_rows(void *arg, unsigned t, unsigned n)
 static bool clear_threaded(const struct fp_context *fp, const struct pipe_surface *ps,
                            unsigned w, unsigned h)
 {
-   return rast_get_threads(fp->rast) > 1 && !(fp_env_debug() & FP_DEBUG_SERIALCLEAR) &&
+   return rast_get_threads(fp->rast) > 1 && !(fp->opts->debug & FP_DEBUG_SERIALCLEAR) &&
           ps->texture->target != PIPE_BUFFER &&
           fp_resource_samples(ps->texture) == 1 &&
           util_format_get_blockwidth(ps->format) == 1 &&

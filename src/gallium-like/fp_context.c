@@ -49,7 +49,7 @@ static const struct rast_stats *fp_stats(const struct fp_context *fp)
 void fp_vectors_start(struct fp_context *fp)
 {
    static atomic_flag taken = ATOMIC_FLAG_INIT;
-   const struct fp_env_vectors *v = fp_env_vectors();
+   const struct fp_vectors_option *v = &fp->opts->vectors;
    fp->vectors_pending = false;
    if (!v->dir[0] || atomic_flag_test_and_set(&taken))
       return;
@@ -117,7 +117,7 @@ void fp_context_frame_presented(struct fp_context *fp)
  * ./fixpipe demo shows beside the host's time. */
 static void fp_print_cycles(const struct fp_context *fp, const struct rast_stats *st)
 {
-   const struct rast_cycle_params *p = fp_env_cycles();
+   const struct rast_cycle_params *p = &fp->opts->cycles;
    struct rast_cycles c;
    char params[160];
    rast_cycles_estimate(p, st, &c);
@@ -164,7 +164,7 @@ static void fp_print_stats(const struct fp_context *fp)
    fp_print_cycles(fp, st);
    fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64
            "; coordinates rebased (component-primitives) %" PRIu64 "\n",
-           fp_env_texfmt()->name, st->tex_sat, st->tex_flush, st->tex_rebased);
+           fp->opts->texfmt->name, st->tex_sat, st->tex_flush, st->tex_rebased);
    fprintf(stderr, "  datapath: %s; skipped: quads with a constant 1/w %" PRIu64
            ", constant component-quads %" PRIu64 ", texture quads without a LOD %" PRIu64
            ", texture quad-axes addressed per column or row %" PRIu64
@@ -174,7 +174,7 @@ static void fp_print_stats(const struct fp_context *fp)
            ", plane terms with a zero difference (per quad) %" PRIu64
            ", quads divided per column and scan line %" PRIu64
            ", gather quads whose footprint was addressed before %" PRIu64 "\n",
-           fp_env_debug() & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
+           fp->opts->debug & FP_DEBUG_SCALAR ? "scalar" : rast_lanes()->isa,
            st->skip_persp_w, st->skip_persp_comp, st->skip_tex_lod, st->skip_tex_axes,
            st->skip_fragcoord, st->skip_z, st->skip_early_quads, st->skip_shade_quads,
            st->skip_persp_terms, st->skip_persp_axes, st->skip_tex_footprint);
@@ -183,7 +183,7 @@ static void fp_print_stats(const struct fp_context *fp)
            ", quads %" PRIu64 "\n", st->persp_quads, st->persp_comp_quads, st->tex_lod_quads,
            st->tex_quads, st->quads);
    {
-      const unsigned im = fp_env_interp();
+      const unsigned im = fp->opts->interp;
       const double px = st->pixels_covered ? (double)st->pixels_covered : 1.0;
       fprintf(stderr, "  interpolator %s: per covered pixel %.2f additions, %.2f "
               "multiplications, %.3f divisions; pixels in the primitives' boxes %" PRIu64 "\n",
@@ -379,8 +379,9 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->sample_mask = ~0u;
    fp->fb_samples = 1;
    fp->fs_dirty = true;
-   fp->print_stats = fp_env_stats();
-   fp->stats_every = fp_env_stats_frames();
+   fp->opts = s->opts;
+   fp->print_stats = fp->opts->stats;
+   fp->stats_every = fp->opts->stats_frames;
 
    fp_init_context_resource_funcs(&fp->pipe);
    fp_init_state_functions(fp);
@@ -397,10 +398,10 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->rast = rast_create(s->profile);
    if (!fp->rast)
       goto fail;
-   rast_set_texfmt(fp->rast, fp_env_texfmt());
-   rast_set_options(fp->rast, fp_env_rast_options());
-   rast_set_interp(fp->rast, fp_env_interp());
-   fp->vectors_pending = fp_env_vectors()->dir[0] != '\0';
+   rast_set_texfmt(fp->rast, fp->opts->texfmt);
+   rast_set_options(fp->rast, fp_options_rast(fp->opts));
+   rast_set_interp(fp->rast, fp->opts->interp);
+   fp->vectors_pending = fp->opts->vectors.dir[0] != '\0';
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
    if (!fp->pipe.stream_uploader)
@@ -414,7 +415,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    }
 
    /* The model's threads, each with what it shades with. */
-   unsigned threads = fp_env_threads();
+   unsigned threads = fp_options_threads(fp->opts);
    if (!rast_set_threads(fp->rast, threads)) {
       fprintf(stderr, "fixpipe: cannot start %u threads; drawing on one\n", threads);
       threads = 1;
@@ -438,7 +439,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
     * Each makes its LLVM context with its first compiled shader (draw's own,
     * fp_llvm_context), so a process that never compiles one, as most of a
     * conformance run's do not, never initializes LLVM. */
-   fp->jit = !(fp_env_debug() & FP_DEBUG_NOJIT);
+   fp->jit = !(fp->opts->debug & FP_DEBUG_NOJIT);
    if (fp->jit) {
       fp->draw = draw_create(&fp->pipe);
    } else {

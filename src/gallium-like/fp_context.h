@@ -123,6 +123,7 @@ struct fp_sampler_view {
 
 struct fp_context {
    struct pipe_context pipe;
+   const struct fp_options *opts;   /* the screen's: FIXPIPE_* */
    struct rast_context *rast;
    struct draw_context *draw;
    struct vbuf_render *vbuf_render;

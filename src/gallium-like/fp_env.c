@@ -1,7 +1,7 @@
 /*
- * FIXPIPE_* environment variables.  Read once per process: a driver is
- * created again for every context, and a bad value should be reported once,
- * not once per context.
+ * The FIXPIPE_* environment variables into struct fp_options: the driver's
+ * one reader of the environment.  Read once per process: a screen is
+ * created for every display, and a bad value should be reported once.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,17 +14,8 @@
 #include "fp_screen.h"
 #include "fixed/numsys.h"
 #include "rast/cycles.h"
-#include "rast/lanes.h"
 
-static const struct rast_profile *env_profile;
-static bool env_stats;
-static unsigned long env_stats_frames;
-static const struct numsys *env_texfmt;
-static unsigned env_debug;
-static unsigned env_threads;
-static unsigned env_interp;
-static struct rast_cycle_params env_cycles;
-static struct fp_env_vectors env_vectors;
+static struct fp_options env;
 
 static const struct debug_named_value fp_debug_flags[] = {
    { "nojit", FP_DEBUG_NOJIT,
@@ -78,12 +69,12 @@ static void fp_env_parse(void)
 {
    /* FIXPIPE_PROFILE=NAME[:KEY=VALUE,...] (docs/profiles.md) */
    const char *p = getenv("FIXPIPE_PROFILE");
-   env_profile = rast_profile_by_name("seed");
+   env.profile = rast_profile_by_name("seed");
    if (p && *p) {
       static struct rast_profile_buf custom;
       char err[256];
       if (rast_profile_parse(p, &custom, err, sizeof(err)))
-         env_profile = &custom.p;
+         env.profile = &custom.p;
       else
          fprintf(stderr, "fixpipe: bad FIXPIPE_PROFILE '%s': %s; using seed\n", p, err);
    }
@@ -92,40 +83,38 @@ static void fp_env_parse(void)
    if (s && *s) {
       char *end;
       if (!strcmp(s, "1")) {
-         env_stats = true;
+         env.stats = true;
       } else if (!strncmp(s, "frames:", 7) && s[7] >= '1' && s[7] <= '9' &&
-                 (env_stats_frames = strtoul(s + 7, &end, 10), !*end)) {
-         env_stats = true;
+                 (env.stats_frames = strtoul(s + 7, &end, 10), !*end)) {
+         env.stats = true;
       } else if (strcmp(s, "0")) {
-         env_stats_frames = 0;
+         env.stats_frames = 0;
          fprintf(stderr, "fixpipe: bad FIXPIPE_STATS '%s' (accepted: 0, 1, frames:N with N >= 1); "
                  "using 0\n", s);
       }
    }
 
    const char *d = getenv("FIXPIPE_DEBUG");
-   env_debug = (unsigned)debug_get_flags_option("FIXPIPE_DEBUG", fp_debug_flags, 0);
+   env.debug = (unsigned)debug_get_flags_option("FIXPIPE_DEBUG", fp_debug_flags, 0);
    fp_env_check_flags("FIXPIPE_DEBUG", d, fp_debug_flags);
-   if ((env_debug & FP_DEBUG_NOAVX512) && rast_lanes() == &rast_lanes_avx512)
-      rast_lanes_set(&rast_lanes_avx2);
 
    /* FIXPIPE_THREADS, like LP_NUM_THREADS: the cores by default */
    unsigned cores = util_get_cpu_caps()->nr_cpus;
-   env_threads = cores < 1 ? 1 : cores > RAST_MAX_THREADS ? RAST_MAX_THREADS : cores;
+   env.threads = cores < 1 ? 1 : cores > RAST_MAX_THREADS ? RAST_MAX_THREADS : cores;
    const char *n = getenv("FIXPIPE_THREADS");
    if (n && *n) {
       char *end;
       unsigned long v = strtoul(n, &end, 10);
       if (*end || n[0] < '0' || n[0] > '9' || v < 1 || v > RAST_MAX_THREADS)
          fprintf(stderr, "fixpipe: bad FIXPIPE_THREADS '%s' (accepted: 1 to %u); using %u\n",
-                 n, RAST_MAX_THREADS, env_threads);
+                 n, RAST_MAX_THREADS, env.threads);
       else
-         env_threads = (unsigned)v;
+         env.threads = (unsigned)v;
    }
 
    /* FIXPIPE_INTERP=MODE[:error] (docs/interp-modes.md) */
    const char *im = getenv("FIXPIPE_INTERP");
-   env_interp = RAST_INTERP_SCANLINE;
+   env.interp = RAST_INTERP_SCANLINE;
    if (im && *im) {
       char mode[32];
       const char *colon = strchr(im, ':');
@@ -141,7 +130,7 @@ static void fp_env_parse(void)
          ok = rast_interp_name((enum rast_interp_mode)m) != NULL;
       }
       if (ok)
-         env_interp = m | (colon ? RAST_INTERP_MEASURE : 0u);
+         env.interp = m | (colon ? RAST_INTERP_MEASURE : 0u);
       else
          fprintf(stderr, "fixpipe: bad FIXPIPE_INTERP '%s' (accepted: scanline, barycentric, "
                  "vector, each optionally with :error); using scanline\n", im);
@@ -150,7 +139,7 @@ static void fp_env_parse(void)
    /* FIXPIPE_VECTORS=DIR[,frames=A-B][,units=scan+tex] (docs/vectors.md) */
    const char *vec = getenv("FIXPIPE_VECTORS");
    if (vec && *vec) {
-      char buf[sizeof(env_vectors.dir)];
+      char buf[sizeof(env.vectors.dir)];
       unsigned long a = 0, b = ~0ul;
       unsigned units = RAST_VEC_SCAN | RAST_VEC_TEX;
       bool ok = strlen(vec) < sizeof(buf);
@@ -186,14 +175,14 @@ static void fp_env_parse(void)
             }
          }
          if (ok)
-            strcpy(env_vectors.dir, dir);
+            strcpy(env.vectors.dir, dir);
       }
       if (ok) {
-         env_vectors.first = a;
-         env_vectors.last = b;
-         env_vectors.units = units;
+         env.vectors.first = a;
+         env.vectors.last = b;
+         env.vectors.units = units;
       } else {
-         env_vectors.dir[0] = '\0';
+         env.vectors.dir[0] = '\0';
          fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s' (accepted: DIR, then optionally "
                  ",frames=A-B with A <= B, frames counted from 0 by presents, and "
                  ",units=scan, tex or scan+tex); no vectors written\n", vec);
@@ -203,88 +192,38 @@ static void fp_env_parse(void)
    /* FIXPIPE_CYCLES=KEY=VALUE,... over the cycle model's defaults (docs/cycles.md) */
    const char *cy = getenv("FIXPIPE_CYCLES");
    char cerr[256];
-   if (!rast_cycle_params_parse(cy, &env_cycles, cerr, sizeof(cerr)))
+   if (!rast_cycle_params_parse(cy, &env.cycles, cerr, sizeof(cerr)))
       fprintf(stderr, "fixpipe: bad FIXPIPE_CYCLES '%s': %s; using the defaults\n", cy, cerr);
 
    const char *t = getenv("FIXPIPE_TEXFMT");
-   env_texfmt = numsys_default();
+   env.texfmt = numsys_default();
    if (t && *t) {
       const struct numsys *ns = numsys_by_name(t);
       if (ns)
-         env_texfmt = ns;
+         env.texfmt = ns;
       else
          fprintf(stderr, "fixpipe: unknown FIXPIPE_TEXFMT '%s' (accepted: %s); using %s\n",
-                 t, numsys_names(), env_texfmt->name);
+                 t, numsys_names(), env.texfmt->name);
    }
 }
 
 static util_once_flag env_once = UTIL_ONCE_FLAG_INIT;
 
-const struct rast_profile *fp_env_profile(void)
+const struct fp_options *fp_options_from_env(void)
 {
    util_call_once(&env_once, fp_env_parse);
-   return env_profile;
+   return &env;
 }
 
-bool fp_env_stats(void)
+unsigned fp_options_threads(const struct fp_options *o)
 {
-   util_call_once(&env_once, fp_env_parse);
-   return env_stats;
+   return o->debug & FP_DEBUG_NOTHREADS || o->vectors.dir[0] ? 1 : o->threads;
 }
 
-unsigned long fp_env_stats_frames(void)
+unsigned fp_options_rast(const struct fp_options *o)
 {
-   util_call_once(&env_once, fp_env_parse);
-   return env_stats_frames;
-}
-
-unsigned fp_env_debug(void)
-{
-   util_call_once(&env_once, fp_env_parse);
-   return env_debug;
-}
-
-unsigned fp_env_threads(void)
-{
-   util_call_once(&env_once, fp_env_parse);
-   /* vectors are written in the unit's order: one thread */
-   return env_debug & FP_DEBUG_NOTHREADS || env_vectors.dir[0] ? 1 : env_threads;
-}
-
-/* FIXPIPE_VECTORS: its directory ("" when unset or bad) and frame range. */
-const struct fp_env_vectors *fp_env_vectors(void)
-{
-   util_call_once(&env_once, fp_env_parse);
-   return &env_vectors;
-}
-
-unsigned fp_env_rast_options(void)
-{
-   const unsigned d = fp_env_debug();
+   const unsigned d = o->debug;
    return (d & FP_DEBUG_SCALAR ? RAST_OPT_SCALAR : 0u) | (d & FP_DEBUG_NOSKIP ? RAST_OPT_NOSKIP : 0u) |
           (d & FP_DEBUG_NOF32 ? RAST_OPT_NOF32 : 0u) |
           (d & FP_DEBUG_DIVIDEALL ? RAST_OPT_DIVIDE : 0u);
-}
-
-/* The interpolator of Z and colour, and whether it is measured
- * (rast_set_interp). */
-unsigned fp_env_interp(void)
-{
-   util_call_once(&env_once, fp_env_parse);
-   return env_interp;
-}
-
-/* The cycle model's parameters (rast/cycles.h). */
-const struct rast_cycle_params *fp_env_cycles(void)
-{
-   util_call_once(&env_once, fp_env_parse);
-   return &env_cycles;
-}
-
-/* The texture path's number system: the unit (fp_sampler.c) and the
- * perspective division (rast_set_texfmt). */
-const struct numsys *fp_env_texfmt(void)
-{
-   util_call_once(&env_once, fp_env_parse);
-   return env_texfmt;
 }

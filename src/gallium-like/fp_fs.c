@@ -202,7 +202,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
    if (!fp->jit || fs->jit_failed)
       return false;
    if (fp_fs_hot(fp, fs, 0) == FP_FS_COLD && !fs->hot_ahead &&
-       !(fp_env_debug() & FP_DEBUG_JITALL))
+       !(fp->opts->debug & FP_DEBUG_JITALL))
       return false;
    fs->jit = fp_jit_fs_compile(fp, fs->tokens, fs->nir, &fs->info, fs->depth_output, fs->color_output,
                                fs->num_color_outputs);
@@ -212,7 +212,7 @@ static bool fp_fs_compiled(struct fp_context *fp)
       return false;
    }
    fp->jit_stats.compiled++;
-   fp->jit_stats.hot_loop += fs->hot_loop && !(fp_env_debug() & FP_DEBUG_JITALL);
+   fp->jit_stats.hot_loop += fs->hot_loop && !(fp->opts->debug & FP_DEBUG_JITALL);
    fp->jit_stats.cache_hits += fs->jit->cache_hit;
    fp->jit_stats.compile_ms += fs->jit->compile_ms;
    return true;

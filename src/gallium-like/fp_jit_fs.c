@@ -528,9 +528,9 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
  * and whose perspective division takes four quads in one vector of
  * binary32 lanes, the group the shader is called with being the group the
  * division takes (interp.c); two otherwise; one with noskip. */
-static unsigned fp_jit_quads_a_call(void)
+static unsigned fp_jit_quads_a_call(const struct fp_context *fp)
 {
-   const unsigned debug = fp_env_debug();
+   const unsigned debug = fp->opts->debug;
    if (debug & FP_DEBUG_NOSKIP)
       return 1;
    if (!(debug & FP_DEBUG_SCALAR) && rast_lanes()->tex_group == 4)
@@ -599,7 +599,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    struct fp_jit_variant *v = CALLOC_STRUCT(fp_jit_variant);
    if (!v)
       return NULL;
-   v->quads = fp_jit_quads_a_call();
+   v->quads = fp_jit_quads_a_call(fp);
 
    /* tgsi_to_nir takes the NIR options and the final passes from the
     * screen: give it gallivm's (the screen's own are for st's NIR-to-TGSI

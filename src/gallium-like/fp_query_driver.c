@@ -148,6 +148,7 @@ void fp_init_screen_query_functions(struct pipe_screen *screen)
 struct fp_counter_query {
    unsigned index;
    struct rast_stats start, end;
+   const struct rast_cycle_params *cycles;   /* the context's FIXPIPE_CYCLES */
 };
 
 bool fp_is_driver_query(unsigned type)
@@ -172,6 +173,7 @@ static void read_counters(struct fp_context *fp, struct rast_stats *out)
 
 void fp_counter_query_begin(struct fp_context *fp, struct fp_counter_query *q)
 {
+   q->cycles = &fp->opts->cycles;
    read_counters(fp, &q->start);
    q->end = q->start;
 }
@@ -186,7 +188,7 @@ void fp_counter_query_result(const struct fp_counter_query *q, union pipe_query_
    const struct fp_driver_query *d = &queries[q->index];
    struct rast_stats w;
    rast_stats_delta(&q->start, &q->end, &w);
-   const struct rast_cycle_params *p = fp_env_cycles();
+   const struct rast_cycle_params *p = q->cycles;
    struct rast_cycles c;
    rast_cycles_estimate(p, &w, &c);
    switch (d->figure) {

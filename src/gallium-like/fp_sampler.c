@@ -338,8 +338,8 @@ static const struct tex_unit *fp_tex_bind(struct fp_tgsi_sampler *ts, unsigned i
    fp_sampler_desc(fv, ss, &sd);
    tex_unit_bind(&slot->unit, ts->ns, &vd, &sd, &ts->stats);
    slot->footprints = 0;
-   tex_unit_set_datapath(&slot->unit, fp_env_debug() & FP_DEBUG_SCALAR,
-                         fp_env_debug() & FP_DEBUG_NOSKIP);
+   tex_unit_set_datapath(&slot->unit, ts->fp->opts->debug & FP_DEBUG_SCALAR,
+                         ts->fp->opts->debug & FP_DEBUG_NOSKIP);
    slot->unit.axes_shared = &ts->skip_axes;
    memcpy(&slot->key, &key, sizeof(key));
    slot->valid = true;
@@ -627,7 +627,7 @@ static void fp_jit_gather_fill(struct fp_tgsi_sampler *ts, unsigned sview_index,
       return;
    g->epoch = epoch;
    g->sampler = sampler_index;
-   g->valid = !ts->rebind && !(fp_env_debug() & FP_DEBUG_NOJITGATHER) &&
+   g->valid = !ts->rebind && !(ts->fp->opts->debug & FP_DEBUG_NOJITGATHER) &&
               ts->stage == PIPE_SHADER_FRAGMENT && tex_unit_gather_regs(u, &g->regs);
 }
 
@@ -797,8 +797,8 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
    s->fp = fp;
    s->rast = rc;
    s->stage = stage;
-   s->ns = fp_env_texfmt();
-   s->rebind = fp_env_debug() & FP_DEBUG_NOSKIP;
+   s->ns = fp->opts->texfmt;
+   s->rebind = fp->opts->debug & FP_DEBUG_NOSKIP;
    s->base.get_samples = fp_tgsi_get_samples;
    s->base.get_dims = fp_tgsi_get_dims;
    s->base.get_texel = fp_tgsi_get_texel;

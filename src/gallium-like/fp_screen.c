@@ -31,6 +31,7 @@
 
 #include "fp_public.h"
 #include "fp_screen.h"
+#include "rast/lanes.h"
 #include "fp_context.h"
 #include "fp_resource.h"
 
@@ -463,11 +464,15 @@ struct pipe_screen *fixpipe_create_screen(struct sw_winsys *winsys)
    s->winsys = winsys;
    s->disk_cache_once = (util_once_flag)UTIL_ONCE_FLAG_INIT;
    simple_mtx_init(&s->fronts_lock, mtx_plain);
-   s->profile = fp_env_profile();
+   s->opts = fp_options_from_env();
+   s->profile = s->opts->profile;
    if (!s->profile) {
       FREE(s);
       return NULL;
    }
+   /* the lanes' instruction set, process-wide like the CPU it is for */
+   if ((s->opts->debug & FP_DEBUG_NOAVX512) && rast_lanes() == &rast_lanes_avx512)
+      rast_lanes_set(&rast_lanes_avx2);
    snprintf(s->name, sizeof(s->name), "fixpipe (%s)", s->profile->name);
 
    s->base.destroy = fp_destroy_screen;

@@ -5,6 +5,7 @@
 #include "util/u_call_once.h"
 #include "util/simple_mtx.h"
 #include "rast/rast.h"
+#include "rast/cycles.h"
 
 struct sw_winsys;
 struct disk_cache;
@@ -17,7 +18,8 @@ struct fp_screen {
     * compilation: fp_screen_disk_cache(); NULL: none */
    struct disk_cache *disk_cache;
    util_once_flag disk_cache_once;
-   const struct rast_profile *profile;
+   const struct fp_options *opts;
+   const struct rast_profile *profile;   /* opts->profile */
    char name[128];
    /* frames presented by any context (flush_frontbuffer): a process that
     * presents is a real-time program, whose shaders are hot sooner
@@ -36,22 +38,6 @@ static inline struct fp_screen *fp_screen(struct pipe_screen *s)
 /* The on-disk shader cache, opened at the first call (NULL: none). */
 struct disk_cache *fp_screen_disk_cache(struct fp_screen *s);
 
-/* FIXPIPE_* environment, parsed once per process; bad values are reported
- * once on stderr with the accepted values. */
-const struct rast_profile *fp_env_profile(void);
-bool fp_env_stats(void);
-/* FIXPIPE_STATS=frames:N: the work counters every N frames presented, else 0 */
-unsigned long fp_env_stats_frames(void);
-struct numsys;
-const struct numsys *fp_env_texfmt(void);   /* FIXPIPE_TEXFMT */
-struct rast_cycle_params;
-struct fp_env_vectors {
-   char dir[480];
-   unsigned long first, last;     /* frames presented before, inclusive */
-   unsigned units;                /* RAST_VEC_* */
-};
-const struct fp_env_vectors *fp_env_vectors(void);   /* FIXPIPE_VECTORS */
-const struct rast_cycle_params *fp_env_cycles(void);   /* FIXPIPE_CYCLES */
 /* FIXPIPE_DEBUG: flags in Mesa's style (FIXPIPE_DEBUG=help lists them) */
 #define FP_DEBUG_NOJIT   (1u << 0)   /* interpret every shader: tgsi_exec, draw without LLVM */
 #define FP_DEBUG_JITALL  (1u << 1)   /* compile shaders at first use, not once hot */
@@ -64,10 +50,35 @@ const struct rast_cycle_params *fp_env_cycles(void);   /* FIXPIPE_CYCLES */
 #define FP_DEBUG_NOF32   (1u << 8)   /* the division's four quads on binary64 lanes, not binary32 */
 #define FP_DEBUG_NOJITGATHER (1u << 9) /* compiled gathers call the texture unit's C functions */
 #define FP_DEBUG_DIVIDEALL (1u << 10)  /* every batch divided between the threads */
-unsigned fp_env_debug(void);
-unsigned fp_env_rast_options(void);          /* RAST_OPT_* from FIXPIPE_DEBUG */
-unsigned fp_env_interp(void);                /* FIXPIPE_INTERP: rast_set_interp's mode */
-unsigned fp_env_threads(void);               /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */
+
+struct numsys;
+struct fp_vectors_option {
+   char dir[480];                 /* "" when unset or bad */
+   unsigned long first, last;     /* frames presented before, inclusive */
+   unsigned units;                /* RAST_VEC_* */
+};
+
+/* The FIXPIPE_* variables (README.md, docs/), parsed once per process by
+ * fp_options_from_env, the one reader of the environment, at the first
+ * screen's creation; bad values are reported there, once, with the
+ * accepted values.  The screen and every context hold a pointer. */
+struct fp_options {
+   const struct rast_profile *profile;   /* FIXPIPE_PROFILE */
+   bool stats;                           /* FIXPIPE_STATS */
+   unsigned long stats_frames;           /* FIXPIPE_STATS=frames:N, else 0 */
+   unsigned debug;                       /* FIXPIPE_DEBUG: FP_DEBUG_* */
+   unsigned threads;                     /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */
+   unsigned interp;                      /* FIXPIPE_INTERP: rast_set_interp's mode */
+   const struct numsys *texfmt;          /* FIXPIPE_TEXFMT */
+   struct rast_cycle_params cycles;      /* FIXPIPE_CYCLES */
+   struct fp_vectors_option vectors;     /* FIXPIPE_VECTORS */
+};
+const struct fp_options *fp_options_from_env(void);
+/* The model's RAST_OPT_* the debug flags select. */
+unsigned fp_options_rast(const struct fp_options *o);
+/* The model's threads: one under nothreads, or while vectors are recorded
+ * (in the unit's order). */
+unsigned fp_options_threads(const struct fp_options *o);
 
 /* Render-target formats the driver can pack from float (fp_format.c). */
 bool fp_format_renderable(enum pipe_format format);

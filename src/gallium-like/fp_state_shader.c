@@ -171,7 +171,7 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
     * that reads it as GL does (fp_velems.snorm) */
    const bool snorm = fp->velems && fp->velems->snorm;
    if (vs->vertices < FP_JIT_HOT_VERTICES && !loop && !snorm &&
-       !(fp_env_debug() & FP_DEBUG_JITALL))
+       !(fp->opts->debug & FP_DEBUG_JITALL))
       return;
    vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
    /* draw falls back on tgsi_exec itself when gallivm refuses */

@@ -81,7 +81,7 @@ static int fp_vs_output(struct draw_context *draw, unsigned name, unsigned index
 static void rebase_of(const struct fp_context *fp, unsigned i, struct rast_varying *vr)
 {
    vr->rebase_mask = vr->rebase_even = 0;
-   if (vr->interp == RAST_INTERP_PERSPECTIVE && !(fp_env_debug() & FP_DEBUG_NOREBASE))
+   if (vr->interp == RAST_INTERP_PERSPECTIVE && !(fp->opts->debug & FP_DEBUG_NOREBASE))
       fp_rebase_modes(fp, i, &vr->rebase_mask, &vr->rebase_even);
 }
 
