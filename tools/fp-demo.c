@@ -3,7 +3,7 @@
  * EGL loads (GALLIUM_DRIVER picks it) and writes the frame as a PNG.
  *
  *   fp-demo [--scene gouraud|mesh|textured|all] [--size WxH] [-o out.png]
- *           [--frames N]
+ *           [--frames N [--warmup W]]
  */
 #define _POSIX_C_SOURCE 200809L
 #include "fp_gl.h"
@@ -22,11 +22,13 @@ static void usage(FILE *f)
 {
    fprintf(f,
       "usage: fp-demo [--scene gouraud|mesh|textured|all] [--size WxH] [-o out.png]\n"
-      "               [--frames N]\n"
+      "               [--frames N [--warmup W]]\n"
       "  --scene    what to draw (default all: the three scenes in one frame)\n"
       "  --size     frame size (default 512x512)\n"
       "  -o         PNG to write (default: none)\n"
-      "  --frames   render N frames and print the time per frame (default 1)\n");
+      "  --frames   render N frames and print the time per frame (default 1)\n"
+      "  --warmup   the first W of them timed apart (default 1): start-up, and the\n"
+      "             frames before a tiered driver has compiled its shaders\n");
 }
 
 static void viewport(int x, int y, int w, int h)
@@ -102,7 +104,7 @@ static void modeled_frame(struct demo_frame *df)
 int main(int argc, char **argv)
 {
    enum scene which = SCENE_ALL;
-   int w = 512, h = 512, frames = 1;
+   int w = 512, h = 512, frames = 1, warmup = 1;
    const char *out = NULL;
 
    for (int i = 1; i < argc; i++) {
@@ -133,10 +135,20 @@ int main(int argc, char **argv)
          if (!fp_arg_frames("fp-demo", v, &frames))
             return 2;
          i++;
+      } else if (!strcmp(a, "--warmup") && v) {
+         if (!fp_arg_warmup("fp-demo", v, &warmup))
+            return 2;
+         i++;
       } else {
          usage(stderr);
          return 2;
       }
+   }
+
+   if (frames > 1 && warmup >= frames) {
+      fprintf(stderr, "fp-demo: --warmup %d leaves no frame of --frames %d to time\n", warmup,
+              frames);
+      return 2;
    }
 
    struct fp_gl g;
@@ -147,7 +159,7 @@ int main(int argc, char **argv)
 
    struct demo_frame df = { &s, which, w, h };
    struct fp_frame_times times;
-   fp_gl_time_frames(frames, draw_demo_frame, &df, &times);
+   fp_gl_time_frames(frames, warmup, draw_demo_frame, &df, &times);
    fp_gl_check("drawing");
    printf("scene: %s %dx%d\n", scene_names[which], w, h);
    fp_print_frame_times(&times);

@@ -364,7 +364,7 @@ int main(int argc, char **argv)
 
    struct persp_frame pf = { &s, view, wrap, w, h };
    struct fp_frame_times times;
-   fp_gl_time_frames(frames, draw_persp_frame, &pf, &times);
+   fp_gl_time_frames(frames, 1, draw_persp_frame, &pf, &times);
    fp_gl_check("drawing");
    double wmin, wmax;
    ground_w_range(&wmin, &wmax);

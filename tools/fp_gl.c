@@ -220,31 +220,38 @@ static int cmp_double(const void *a, const void *b)
    return (x > y) - (x < y);
 }
 
-void fp_gl_time_frames(int frames, void (*draw)(void *ctx), void *ctx,
+void fp_gl_time_frames(int frames, int warmup, void (*draw)(void *ctx), void *ctx,
                        struct fp_frame_times *t)
 {
    if (frames < 1)
       frames = 1;
+   if (warmup < 1 || warmup >= frames)
+      warmup = frames > 1 ? (warmup < 1 ? 1 : frames - 1) : 1;
    double *dts = calloc((size_t)frames, sizeof(double));
    if (!dts)
       fp_die("out of memory");
-   double rest = 0;
+   double warm = 0, rest = 0;
    for (int f = 0; f < frames; f++) {
       double t0 = now_ms();
       draw(ctx);
       glFinish();
       dts[f] = now_ms() - t0;
-      if (f)
+      if (f < warmup)
+         warm += dts[f];
+      else
          rest += dts[f];
    }
    t->frames = frames;
+   t->warmup = warmup;
    t->first_ms = dts[0];
+   t->warmup_ms = warm;
    t->mean_ms = t->median_ms = 0;
-   if (frames > 1) {
-      int n = frames - 1;
-      qsort(dts + 1, (size_t)n, sizeof(double), cmp_double);
+   if (frames > warmup) {
+      int n = frames - warmup;
+      double *d = dts + warmup;
+      qsort(d, (size_t)n, sizeof(double), cmp_double);
       t->mean_ms = rest / n;
-      t->median_ms = n % 2 ? dts[1 + n / 2] : (dts[n / 2] + dts[1 + n / 2]) / 2;
+      t->median_ms = n % 2 ? d[n / 2] : (d[n / 2 - 1] + d[n / 2]) / 2;
    }
    free(dts);
 }
@@ -252,9 +259,10 @@ void fp_gl_time_frames(int frames, void (*draw)(void *ctx), void *ctx,
 void fp_print_frame_times(const struct fp_frame_times *t)
 {
    printf("first_frame_ms: %.2f\n", t->first_ms);
-   if (t->frames > 1) {
-      printf("frames: %d ms_per_frame: %.2f (frames 2..%d)\n", t->frames, t->mean_ms,
-             t->frames);
+   printf("warmup_frames: %d ms: %.2f\n", t->warmup, t->warmup_ms);
+   if (t->frames > t->warmup) {
+      printf("frames: %d ms_per_frame: %.2f (frames %d..%d)\n", t->frames, t->mean_ms,
+             t->warmup + 1, t->frames);
       printf("ms_per_frame_median: %.2f\n", t->median_ms);
    }
 }
@@ -277,5 +285,17 @@ bool fp_arg_frames(const char *prog, const char *v, int *frames)
       return false;
    }
    *frames = (int)n;
+   return true;
+}
+
+bool fp_arg_warmup(const char *prog, const char *v, int *warmup)
+{
+   char *end;
+   long n = strtol(v, &end, 10);
+   if (*end || n < 1 || n > 1000000) {
+      fprintf(stderr, "%s: bad --warmup '%s' (1..1000000, fewer than --frames)\n", prog, v);
+      return false;
+   }
+   *warmup = (int)n;
    return true;
 }

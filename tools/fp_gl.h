@@ -37,15 +37,19 @@ void fp_gl_read_rgba(const struct fp_gl *g, unsigned char *out);
  * of the rest too, since on a shared machine other processes' load skews the
  * mean in both directions and the median much less. */
 struct fp_frame_times {
-   int frames;
-   double first_ms, mean_ms, median_ms;   /* mean, median: frames 2..N */
+   int frames, warmup;
+   double first_ms, warmup_ms;            /* frame 1; frames 1..warmup */
+   double mean_ms, median_ms;             /* frames warmup+1..N: the steady state */
 };
 
-/* Draws `frames` frames with draw(ctx), each finished with glFinish. */
-void fp_gl_time_frames(int frames, void (*draw)(void *ctx), void *ctx,
+/* Draws `frames` frames with draw(ctx), each finished with glFinish; the
+ * first `warmup` (1 or more, fewer than frames) are timed apart: start-up,
+ * and a tiered driver's frames before its shaders are compiled. */
+void fp_gl_time_frames(int frames, int warmup, void (*draw)(void *ctx), void *ctx,
                        struct fp_frame_times *t);
-/* first_frame_ms, and with more than one frame `frames: N ms_per_frame: X
- * (frames 2..N)` and ms_per_frame_median: the lines the scripts read. */
+/* first_frame_ms, warmup_frames: W ms: X, and with frames past the warm-up
+ * `frames: N ms_per_frame: X (frames W+1..N)` and ms_per_frame_median: the
+ * lines the scripts read. */
 void fp_print_frame_times(const struct fp_frame_times *t);
 
 /* Command-line values shared by the GL programs: WxH (each in [min, 8192])
@@ -53,6 +57,8 @@ void fp_print_frame_times(const struct fp_frame_times *t);
  * a bad value. */
 bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h);
 bool fp_arg_frames(const char *prog, const char *v, int *frames);
+/* A warm-up frame count in [1, 1000000]; the caller holds it below --frames. */
+bool fp_arg_warmup(const char *prog, const char *v, int *warmup);
 
 /* Reads the FBO and writes it to a PNG file; exits with a message on failure. */
 void fp_gl_write_png(const struct fp_gl *g, const char *path);
