@@ -226,6 +226,10 @@ void fp_counter_query_end(struct fp_context *fp, struct fp_counter_query *q);
 void fp_counter_query_result(const struct fp_counter_query *q, union pipe_query_result *result);
 /* FIXPIPE_VECTORS (docs/vectors.md): at a context's first draw. */
 void fp_vectors_start(struct fp_context *fp);
+/* FIXPIPE_STATS (fp_instruments.c): the counters on stderr, and the list of
+ * live contexts that print theirs at exit. */
+void fp_print_stats(const struct fp_context *fp);
+void fp_stats_track(struct fp_context *fp, bool live);
 /* Every counter of the model, up to date with what it has drawn. */
 const struct rast_stats *fp_context_stats(struct fp_context *fp);
 void fp_init_draw_functions(struct fp_context *fp);      /* fp_draw.c */
@@ -238,7 +242,7 @@ struct tgsi_image *fp_tgsi_image_create(const struct pipe_image_view *views);
 struct tgsi_buffer *fp_tgsi_buffer_create(const struct pipe_shader_buffer *buffers);
 void fp_so_release(struct fp_context *fp);
 
-/* fp_context.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */
+/* fp_instruments.c: a frame presented (flush_frontbuffer), for FIXPIPE_STATS=frames:N */
 void fp_context_frame_presented(struct fp_context *fp);
 /* fp_context.c: the LLVM context of compiled fragment shaders, gallivm initialized with the
  * first; NULL if it cannot be made */
