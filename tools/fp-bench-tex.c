@@ -38,7 +38,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 #include "fixed/numsys.h"
 
 static double cpu_seconds(void)

@@ -11,7 +11,7 @@
  * Written with GCC's vector extensions: a branch of the scalar code becomes
  * a lane mask and a select.  Its users are compiled once per instruction
  * set (AVX2, and the baseline's SSE2), and the driver picks the set at run
- * time (src/rast/lanes.c).
+ * time (src/rast/host/lanes.c).
  *
  * A register on a lane is its value, held exactly in a double (below): the
  * fields of struct dfx are a function of the value, so the data paths keep

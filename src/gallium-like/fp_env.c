@@ -13,7 +13,7 @@
 #include "pipe/p_format.h"
 #include "fp_screen.h"
 #include "fixed/numsys.h"
-#include "rast/cycles.h"
+#include "rast/instruments/cycles.h"
 
 static struct fp_options env;
 

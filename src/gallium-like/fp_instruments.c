@@ -16,8 +16,8 @@
 #include "fp_context.h"
 #include "fp_screen.h"
 #include "fixed/numsys.h"
-#include "rast/cycles.h"
-#include "rast/lanes.h"
+#include "rast/instruments/cycles.h"
+#include "rast/host/lanes.h"
 
 /* FIXPIPE_STATS=frames:N: the work counters so far, one line every N frames
  * presented (tools/replay-bench.sh takes each scene's shares of skipped

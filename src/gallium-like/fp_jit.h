@@ -21,7 +21,7 @@ struct gallivm_state;   /* lp_bld_jit_types.h does not declare it */
 #include "gallivm/lp_bld_jit_types.h"
 #include "gallivm/lp_bld_limits.h"
 #include "rast/rast.h"
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 
 struct tgsi_sampler;
 struct lp_type;

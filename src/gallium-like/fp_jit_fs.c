@@ -44,7 +44,7 @@
 #include "fp_context.h"
 #include "fp_jit.h"
 #include "fp_screen.h"
-#include "rast/lanes.h"
+#include "rast/host/lanes.h"
 
 /* llvmpipe's NIR options (lp_screen.c, gallivm_nir_options): what
  * lp_build_nir_soa expects to see lowered. */

@@ -36,7 +36,7 @@
 #include "gallivm/lp_bld_type.h"
 
 #include "fp_jit.h"
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 
 /* The lanes of a call and the registers' address. */
 struct fpg {

@@ -29,7 +29,7 @@
 #include "fp_context.h"
 #include "fp_jit.h"
 #include "fp_screen.h"
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 
 /* the TGSI target of a texture instruction, carried above the gallivm sample key */
 #define FP_KEY_TARGET_SHIFT 16

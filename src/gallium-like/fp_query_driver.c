@@ -15,7 +15,7 @@
 
 #include "fp_context.h"
 #include "fp_screen.h"
-#include "rast/cycles.h"
+#include "rast/instruments/cycles.h"
 
 enum fp_query_group {
    FP_GROUP_PRIMITIVES,

@@ -22,7 +22,7 @@
 #include "fp_jit.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 
 /* What a slot's unit was bound from. */
 struct fp_tex_key {

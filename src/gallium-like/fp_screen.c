@@ -31,7 +31,7 @@
 
 #include "fp_public.h"
 #include "fp_screen.h"
-#include "rast/lanes.h"
+#include "rast/host/lanes.h"
 #include "fp_context.h"
 #include "fp_resource.h"
 

@@ -5,7 +5,7 @@
 #include "util/u_call_once.h"
 #include "util/simple_mtx.h"
 #include "rast/rast.h"
-#include "rast/cycles.h"
+#include "rast/instruments/cycles.h"
 
 struct sw_winsys;
 struct disk_cache;

@@ -13,8 +13,8 @@
 #include <string.h>
 #include "rast/rast.h"
 #include "rast/rast_priv.h"
-#include "rast/backend_priv.h"
-#include "rast/lanes.h"
+#include "rast/backend/backend_priv.h"
+#include "rast/host/lanes.h"
 
 #if !defined(__SIZEOF_INT128__)
 #error "the reference depth conversion uses unsigned __int128"

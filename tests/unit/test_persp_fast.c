@@ -19,9 +19,9 @@
 #include <math.h>
 #include <string.h>
 #include "tutil.h"
-#include "rast/front.h"
+#include "rast/setup/front.h"
 #include "fixed/numsys.h"
-#include "rast/lanes.h"
+#include "rast/host/lanes.h"
 
 #define MAX_VALS (1u << 22)
 

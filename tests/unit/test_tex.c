@@ -7,8 +7,8 @@
 #include <string.h>
 #include "tutil.h"
 #include "test_tex_ref.h"
-#include "rast/tex.h"
-#include "rast/tex_ns.h"
+#include "rast/tex/tex.h"
+#include "rast/tex/tex_ns.h"
 #include "fixed/numsys.h"
 
 #ifdef FUZZ_TARGET

@@ -10,10 +10,10 @@
 #include <math.h>
 #include <string.h>
 #include "tutil.h"
-#include "rast/tex.h"
-#include "rast/tex_fast.h"
+#include "rast/tex/tex.h"
+#include "rast/tex/tex_fast.h"
 #include "fixed/numsys.h"
-#include "rast/lanes.h"
+#include "rast/host/lanes.h"
 
 static uint64_t rng = 0x9e3779b97f4a7c15ull;
 static uint32_t rnd32(void)

@@ -6,7 +6,7 @@
 
 #include <math.h>
 #include <stdbool.h>
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 
 /* Texels and their weights for one axis (index -1: border). */
 struct ref_taps {

@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include "tutil.h"
 #include "fixed/numsys.h"
-#include "rast/tex.h"
+#include "rast/tex/tex.h"
 
 #define W 4096
 #define H 4096
