@@ -1,7 +1,7 @@
 /*
  * The data paths of the dynamic fixed-point unit (dfx.h) as inline
  * functions: dfx.c's add, sub, mul, recip, from_fixed and to_double are
- * these, and the perspective division (src/rast/interp/interp.c) calls them
+ * these, and the perspective division (src/rast/interp/persp.c) calls them
  * directly, where a constant format (W = 19) lets the compiler fold the
  * widths.  One implementation: rounding and range events as dfx.c states.
  * Private to src/fixed and src/rast.

@@ -2,7 +2,7 @@
  * The number system of the texture path, chosen at run time
  * (FIXPIPE_TEXFMT): the seed's 24-bit dynamic fixed point, the fixed formats
  * the seed compares it with (16.16, 8.24, 24.8) and IEEE binary32.  The
- * perspective division of texture coordinates (src/rast/interp/interp.c) and the
+ * perspective division of texture coordinates (src/rast/interp/persp.c) and the
  * texture unit's addressing (src/rast/tex*.c) compute in it, so one switch
  * shows what each format does to the same content.
  *

@@ -527,7 +527,7 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
  * call (two vectors of pairs overlap a sample's long chain of latencies)
  * and whose perspective division takes four quads in one vector of
  * binary32 lanes, the group the shader is called with being the group the
- * division takes (interp.c); two otherwise; one with noskip. */
+ * division takes (persp.c); two otherwise; one with noskip. */
 static unsigned fp_jit_quads_a_call(const struct fp_context *fp)
 {
    const unsigned debug = fp->opts->debug;

@@ -1,5 +1,5 @@
 /*
- * The per-pixel error bound of the perspective division (src/rast/interp/interp.c,
+ * The per-pixel error bound of the perspective division (src/rast/interp/persp.c,
  * the vector method), derived from each number system's per-operation
  * bounds (docs/dfx.md, tested in test_dfx.c and test_numsys.c) by first-
  * order propagation through the fixed sequence of operations every pixel

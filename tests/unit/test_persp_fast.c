@@ -1,4 +1,4 @@
-/* The perspective division's specialised quads and lanes (interp.c: tex_quad_dfx19
+/* The perspective division's specialised quads and lanes (persp.c: tex_quad_dfx19
  * with W = 19 a constant, tex_quad_float on float vectors) against the
  * generic quad (rast_interp_perspective_reference: tex_quad_impl with the
  * width read at run time for dfx24, with the scalar binary32 operations

@@ -46,7 +46,7 @@ void rast_interp_axes_setup(struct rast_front *fr)
 }
 
 /* The numerators of the quad whose left column is c and top scan line r
- * (interp.c's tex_begin), as the span processor records them. */
+ * (persp.c's tex_begin), as the span processor records them. */
 static void axes_numerators(const struct rast_front *fr, int64_t c, int64_t r, int64_t num[4])
 {
    const struct fr_tex *t = &fr->tex;

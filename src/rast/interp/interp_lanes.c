@@ -1,5 +1,5 @@
 /*
- * The perspective division of interp.c (seeds 002, 003) for dfx24 on
+ * The perspective division of persp.c (seeds 002, 003) for dfx24 on
  * lanes: the quad's four pixels through dfx_lanes.h, each lane the scalar
  * tex_quad_impl's operations in its order:
  *

@@ -1,6 +1,6 @@
 /*
  * The front end's private state (rc->front_priv): setup, edge processing
- * (scan.c) and span processing (interp.c).  Everything here is allocated once
+ * (scan.c) and span processing (span.c).  Everything here is allocated once
  * per context; no primitive allocates.
  *
  * Attribute registers come in two families, both walked the seed's way
@@ -11,7 +11,7 @@
  *          components.  Only these nwalk registers are walked.  The vertex
  *          values (vflt) also hold the PERSPECTIVE components as A/w, after
  *          them: the perspective division evaluates each pixel from those
- *          (fr_tex, interp.c), so they have no edge or span registers.
+ *          (fr_tex, persp.c), so they have no edge or span registers.
  */
 #ifndef FIXPIPE_FRONT_H
 #define FIXPIPE_FRONT_H
@@ -28,7 +28,7 @@
 #define FR_MAX_SECS  3
 /* The quads the span processor holds for the back end: two of the
  * shader's groups where their perspective division is done together
- * (interp.c's pair_impl), one otherwise. */
+ * (span.c's pair_impl), one otherwise. */
 #define FR_AHEAD_MAX (2 * RAST_GROUP_MAX)
 /* interp_axes.c's tables: the planes, and the columns or scan lines, of a
  * primitive they take at most. */
@@ -88,7 +88,7 @@ struct fr_row {
 struct rast_front;
 typedef void (*fr_pair_func)(struct rast_context *rc, struct rast_front *fr, int64_t y);
 
-/* The texture path's perspective division (interp.c): the vector method of
+/* The texture path's perspective division (persp.c): the vector method of
  * seed 002, in the number system of rast_set_texfmt.  Per primitive, the
  * vertex values 1/w and A/w in the system with their differences
  * Δ1 = v1 - v0, Δ2 = v2 - v0, and the reciprocal of the doubled area; per
@@ -293,7 +293,7 @@ static inline void fr_tex_counted(struct fr_tex *t, unsigned nq)
 void rast_interp_axes_setup(struct rast_front *fr);
 bool rast_interp_axes_fill(struct rast_context *rc, struct rast_front *fr);
 
-/* The waiting quads' perspective division (interp.c), and its range
+/* The waiting quads' perspective division (persp.c), and its range
  * events moved to the counters when `row_done`. */
 void rast_interp_divide_group(struct rast_context *rc, struct rast_front *fr, bool row_done);
 
@@ -386,7 +386,7 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr);
 /* scan.c: sections of a convex polygon fr->X/Y[0..nverts) (lines) */
 void rast_scan_convex(struct rast_context *rc, struct rast_front *fr);
 
-/* interp.c */
+/* span.c */
 fr_pair_func rast_interp_choose(const struct rast_context *rc, const struct rast_front *fr);
 /* interp_modes.c: a primitive's registers for the interpolator of
  * rc->interp, on its vertices i0, i1, i2 (a line: two corners along it and
@@ -395,14 +395,14 @@ void rast_interp_modes_setup(struct rast_context *rc, struct rast_front *fr, uns
                              unsigned i1, unsigned i2);
 /* A point: its registers are its vertex's in every mode, walked (constant). */
 void rast_interp_modes_off(struct rast_front *fr);
-/* interp.c: the perspective division's functions for rc->texfmt */
+/* persp.c: the perspective division's functions for rc->texfmt */
 void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *fr);
-/* interp.c: the perspective division's per-primitive set-up, with vertices
+/* persp.c: the perspective division's per-primitive set-up, with vertices
  * i0, i1, i2 of fr->X/Y and fr->vflt as V0, V1, V2 (a line: two corners along
  * it and one across, where every attribute is constant, so Δ2 = 0). */
 void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
                                    unsigned i0, unsigned i1, unsigned i2);
-/* interp.c: with `on`, the perspective division takes its generic quad (the
+/* persp.c: with `on`, the perspective division takes its generic quad (the
  * reference the specialised ones must match bit for bit, test_persp_fast). */
 void rast_interp_perspective_reference(struct rast_context *rc, bool on);
 

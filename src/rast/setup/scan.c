@@ -1,7 +1,7 @@
 /*
  * Edge processing (seed 000, section 2): walk the left and right edges one
  * scan line at a time, two scan lines per quad row, and hand each pair of
- * spans to the span processor (interp.c).
+ * spans to the span processor (span.c).
  *
  * Fill rule, with c = (i + h, j + h) the pixel centre (h = 1/2 for GL):
  *   rows     top-left rule:    y_top <= c_y <  y_bottom
