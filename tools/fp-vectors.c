@@ -13,6 +13,7 @@
 #include <stdio.h>
 
 #include "rast/rast.h"
+#include "verify/vectors_replay.h"
 
 int main(int argc, char **argv)
 {

@@ -512,14 +512,7 @@ void rast_vectors_tex(struct rast_context *rc, const struct tex_unit *u,
                       const struct tex_quad *q, unsigned n, unsigned lod_control,
                       const float (*rgba)[4][4]);
 void rast_vectors_close(struct rast_context *rc);
-/* Replays DIR's vectors through a new context and texture units: every
- * quad's bits compared with the recorded ones; the first differences
- * described on log.  Returns the mismatches (0: every output bit equal), -1
- * if the vectors cannot be read; what was replayed in *counts. */
-struct rast_vectors_counts {
-   uint64_t triangles, quads, tex_bindings, tex_quads;
-};
-long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts *counts);
+/* Their replay is verification, outside the model: src/verify. */
 
 /* Primitives: each vertex is vertex_size float[4] slots. */
 void rast_triangle(struct rast_context *rc, const float (*v0)[4],

@@ -16,6 +16,8 @@ typedef void (*rast_quad_func)(struct rast_context *rc, struct rast_quad *q);
 /* n quads of a primitive, one after another in q, each at a place of its own. */
 typedef void (*rast_quads_func)(struct rast_context *rc, struct rast_quad *q, unsigned n);
 
+struct rast_front;
+
 struct rast_context {
    const struct rast_profile *profile;
    struct rast_stats stats;
@@ -64,6 +66,11 @@ struct rast_context {
    /* RTL test vectors (vectors.c): recording or replaying; the quads of the
     * triangle being scanned go through the wrapper to vec_next_quad */
    struct rast_vectors *vec;
+   /* Instruments installed from outside (instruments/vectors.c), NULL when
+    * none: set-up hands each triangle's registers over, the back end's
+    * validation lets its quad function be wrapped. */
+   void (*observe_triangle)(struct rast_context *rc, const struct rast_front *fr, bool front);
+   void (*observe_backend)(struct rast_context *rc);
    bool vec_tri;
    rast_quad_func vec_next_quad;
    struct rast_msaa *msaa;          /* a multisampled target's passes (msaa.c) */

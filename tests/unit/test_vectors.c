@@ -15,6 +15,7 @@
 #include "tutil.h"
 #include "fixed/numsys.h"
 #include "rast/tex/tex.h"
+#include "verify/vectors_replay.h"
 
 #define W 4096
 #define H 4096

@@ -16,7 +16,6 @@
 #include <stdlib.h>
 #include "rast/backend/backend_priv.h"
 #include "rast/backend/c8_lanes.h"
-#include "rast/instruments/vectors.h"
 
 static inline struct rast_backend *backend(struct rast_context *rc)
 {
@@ -334,8 +333,8 @@ static void backend_choose(struct rast_context *rc);
 void rast_backend_validate(struct rast_context *rc)
 {
    backend_choose(rc);
-   if (rc->vec)
-      rast_vec_wrap_backend(rc);
+   if (rc->observe_backend)
+      rc->observe_backend(rc);
 }
 
 static void backend_choose(struct rast_context *rc)

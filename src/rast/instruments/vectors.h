@@ -1,7 +1,8 @@
 /*
  * RTL test vectors of the scan-converter unit (vectors.c, docs/vectors.md):
- * the records as the model holds them, and the hooks of setup.c and the
- * back end.  Public entry points are in rast.h.
+ * the records as the model holds them, set-up's entry for the replay, and
+ * what the replay (src/verify) shares with the recorder.  Public entry
+ * points are in rast.h.
  */
 #ifndef RAST_VECTORS_H
 #define RAST_VECTORS_H
@@ -54,12 +55,26 @@ struct rast_vec_quad {
    uint32_t pword[VEC_MAX_PERSP][RAST_QUAD_SIZE];    /* the same as dfx words (dfx systems) */
 };
 
-/* setup.c, in rast_triangle_pass: the triangle's input registers, once set
- * up (after the cull: front is its facing). */
-void rast_vec_triangle(struct rast_context *rc, const struct rast_front *fr, bool front);
-/* rast_backend_validate: the quad function wrapped while vectors are on. */
-void rast_vec_wrap_backend(struct rast_context *rc);
 /* setup.c: the unit from a record's registers on (the replay). */
 void rast_vec_replay_triangle(struct rast_context *rc, const struct rast_vec_tri *t);
+
+/* The replay's side (src/verify): every quad's record handed to check, the
+ * triangle index set before each triangle; rast_vectors_close ends it. */
+typedef void (*rast_vec_check_fn)(void *ctx, const struct rast_vec_quad *r);
+bool rast_vectors_check_open(struct rast_context *rc, rast_vec_check_fn check, void *ctx);
+void rast_vectors_check_triangle(struct rast_context *rc, uint64_t index);
+
+/* The files' words, shared by the recorder and the replay. */
+/* binding and control, 48 binary32 inputs, then s, t, r as the unit's
+ * coordinate registers hold them */
+#define VEC_TEX_IN_WORDS 31
+#define VEC_TEX_OUT_WORDS 8     /* 16 binary32 outputs */
+struct tex_unit;
+uint32_t rast_vec_fbits(float f);
+float rast_vec_bitsf(uint32_t u);
+uint64_t rast_vec_two(float a, float b);
+void rast_vec_words_to_quad(const uint64_t w[VEC_OUT_WORDS], struct rast_vec_quad *r);
+/* pixels 0, 1 (a) and 2, 3 (b) of a coordinate as the unit's register */
+void rast_vec_coord_words(const struct tex_unit *u, const float c[4], uint64_t *a, uint64_t *b);
 
 #endif

@@ -411,8 +411,8 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 2);
    rast_setup_constants(fr, rc->rs.flatshade_first ? v0 : v2);
-   if (rc->vec)
-      rast_vec_triangle(rc, fr, front);
+   if (rc->observe_triangle)
+      rc->observe_triangle(rc, fr, front);
    rc->stats.tri_type[tri_sections(fr)]++;
    rast_scan_sections(rc, fr);
    rc->vec_tri = false;
