@@ -164,7 +164,7 @@ static inline void store8_masked(const struct rast_cbuf_plan *p, int x, int y, u
  * (s * (0 + 1 * a) == s * a and 1 + -1 * a == 1 - a exactly). */
 /* The same on a full quad, the four pixels on four lanes: each lane the
  * loop's operations above in their order, so the same bits (the scalar
- * loop is the reference: RAST_OPT_SCALAR, and test_backend holds the two
+ * loop is the reference: RAST_OPT_SCALAR, and test_backend_color holds the two
  * to each other).  A pixel is its 32-bit word, a channel the byte at its
  * offset. */
 static inline void c8_blend_affine4(const struct rast_cbuf_plan *p, int x, int y,

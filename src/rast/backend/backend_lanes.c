@@ -9,7 +9,7 @@
  * 512-bit set only: elsewhere sixteen lanes are two or four vectors, no
  * fewer than the quads' own (its function returns NULL there).
  * RAST_OPT_SCALAR (rast_cbuf_plan.quad4 false) keeps the per-pixel code;
- * test_backend holds the groups to it.
+ * test_backend_color holds the groups to it.
  */
 #include "rast/backend/backend_priv.h"
 #include "rast/backend/c8_lanes.h"

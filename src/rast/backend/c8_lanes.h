@@ -3,7 +3,7 @@
  * channel the byte at its offset, and each lane does the per-pixel
  * code's float operations (backend_priv.h's rast_f2ub, rast_ub2f) in
  * their order, so the same bytes.  RAST_OPT_SCALAR (rast_cbuf_plan.quad4
- * false) keeps the per-pixel code, the reference; test_backend holds the
+ * false) keeps the per-pixel code, the reference; test_backend_color holds the
  * two to each other.
  */
 #ifndef FIXPIPE_C8_LANES_H
