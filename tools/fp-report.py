@@ -7,10 +7,9 @@ Heat maps of the worst frames go to docs/img/conformance/.
 
 `./fixpipe report` runs the traces first and then this; `--piglit` runs the lists too.
 
-usage: fp-report.py [--out docs/conformance.md] [--lists] [--deqp]
-  --lists   print the piglit list names (piglit-lists/*.txt) and exit
-  --deqp    print the dEQP section alone (out/deqp/*/summary.json) and exit
+usage: fp-report.py [--out docs/conformance.md] [--lists] [--deqp]   (--help says more)
 """
+import argparse
 import glob
 import json
 import math
@@ -404,18 +403,24 @@ def trace_section(img_dir):
 
 
 def main(argv):
-    if "--lists" in argv:
+    ap = argparse.ArgumentParser(
+        prog="fp-report.py",
+        description="writes docs/conformance.md from the results already on disk")
+    ap.add_argument("--out", default=os.path.join(REPO, "docs", "conformance.md"),
+                    help="the page to write (default docs/conformance.md); its images go "
+                         "beside it in img/conformance/")
+    ap.add_argument("--lists", action="store_true",
+                    help="print the piglit list names (piglit-lists/*.txt) and exit")
+    ap.add_argument("--deqp", action="store_true",
+                    help="print the dEQP section alone (out/deqp/*/summary.json) and exit")
+    args = ap.parse_args(argv)
+    if args.lists:
         print("\n".join(list_names()))
         return 0
-    if "-h" in argv or "--help" in argv:
-        print(__doc__)
-        return 0
-    if "--deqp" in argv:
+    if args.deqp:
         print("\n".join(deqp_section()))
         return 0
-    dest = os.path.join(REPO, "docs", "conformance.md")
-    if "--out" in argv:
-        dest = argv[argv.index("--out") + 1]
+    dest = args.out
     img_dir = os.path.join(os.path.dirname(dest), IMG_REL)
     shutil.rmtree(img_dir, ignore_errors=True)
     os.makedirs(img_dir)
