@@ -224,6 +224,25 @@ static inline bool zs_has_s(enum rast_zs_layout l)
 static inline int zs_stride(enum rast_zs_layout l) { return (int)(W * zs_cpp(l) + 8); }
 #define ZS_BYTES ((W * 8 + 8) * H)
 
+/* The tests' framebuffer: w x h, colour targets cbufs[0..n), and the
+ * depth/stencil buffer zs in `layout` (RAST_ZS_NONE: none). */
+static inline void bind_fb(struct rast_context *rc, unsigned w, unsigned h, unsigned n,
+                           const struct rast_color_target *cbufs, uint8_t *zs,
+                           enum rast_zs_layout layout)
+{
+   struct rast_framebuffer fb;
+   memset(&fb, 0, sizeof fb);
+   fb.width = w;
+   fb.height = h;
+   fb.nr_cbufs = n;
+   for (unsigned i = 0; i < n; i++)
+      fb.cbuf[i] = cbufs[i];
+   fb.zs.base = zs;
+   fb.zs.layout = layout;
+   fb.zs.stride = layout != RAST_ZS_NONE ? zs_stride(layout) : 0;
+   rast_set_framebuffer(rc, &fb);
+}
+
 static inline uint32_t rd32(const uint8_t *p)
 {
    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
@@ -429,16 +448,8 @@ static inline struct zs_run_result run_backend(const struct zs_setup *s, uint8_t
    struct shader_data sd;
    memset(&sd, 0, sizeof sd);
 
-   struct rast_framebuffer fb;
-   memset(&fb, 0, sizeof fb);
-   fb.width = W;
-   fb.height = H;
-   fb.nr_cbufs = 1;
-   fb.cbuf[0] = make_cbuf(TF_RGBA8, s->ncolor ? cbuf : NULL);
-   fb.zs.base = zsbuf;
-   fb.zs.layout = s->layout;
-   fb.zs.stride = zs_stride(s->layout);
-   rast_set_framebuffer(rc, &fb);
+   const struct rast_color_target t0 = make_cbuf(TF_RGBA8, s->ncolor ? cbuf : NULL);
+   bind_fb(rc, W, H, 1, &t0, zsbuf, s->layout);
 
    struct rast_blend_state bs;
    memset(&bs, 0, sizeof bs);

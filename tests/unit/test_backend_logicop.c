@@ -117,11 +117,8 @@ static void test_logicop(void)
             struct rast_context *rc = rast_create(profile_named(rnd(2) ? "seed" : "wide"));
             memset(&cc.sd, 0, sizeof cc.sd);
             cc.sd.keep = 0xf;
-            struct rast_framebuffer fb;
-            memset(&fb, 0, sizeof fb);
-            fb.width = W; fb.height = H; fb.nr_cbufs = 1;
-            fb.cbuf[0] = cc.t[0] = lop_cbuf(f, cc.mem[0]);
-            rast_set_framebuffer(rc, &fb);
+            cc.t[0] = lop_cbuf(f, cc.mem[0]);
+            bind_fb(rc, W, H, 1, cc.t, NULL, RAST_ZS_NONE);
             struct rast_blend_state bs;
             memset(&bs, 0, sizeof bs);
             bs.logicop_enable = true;
@@ -208,14 +205,10 @@ static void test_logicop_paths(void)
    struct rast_context *rc = rast_create(profile_named("seed"));
    memset(&cc.sd, 0, sizeof cc.sd);
    cc.sd.keep = 0xf;
-   struct rast_framebuffer fb;
-   memset(&fb, 0, sizeof fb);
-   fb.width = W; fb.height = H; fb.nr_cbufs = 2;
-   fb.cbuf[0] = cc.t[0] = lop_cbuf(LF_BGRA8, cc.mem[0]);
-   fb.cbuf[1] = cc.t[1] = lop_cbuf(LF_565, cc.mem[1]);
+   cc.t[0] = lop_cbuf(LF_BGRA8, cc.mem[0]);
+   cc.t[1] = lop_cbuf(LF_565, cc.mem[1]);
    memset(zs, 0, sizeof zs);          /* depth 0: GEQUAL passes, twice */
-   fb.zs.base = zs; fb.zs.layout = RAST_ZS_Z24_S8; fb.zs.stride = zs_stride(RAST_ZS_Z24_S8);
-   rast_set_framebuffer(rc, &fb);
+   bind_fb(rc, W, H, 2, cc.t, zs, RAST_ZS_Z24_S8);
    struct rast_depth_stencil_state dsa;
    memset(&dsa, 0, sizeof dsa);
    dsa.depth_enabled = dsa.depth_writemask = true;
