@@ -136,7 +136,7 @@ int main(int argc, char **argv)
             return 2;
          i++;
       } else if (!strcmp(a, "--warmup") && v) {
-         if (!fp_arg_warmup("fp-demo", v, &warmup))
+         if (!fp_arg_count("fp-demo", "--warmup", v, &warmup))
             return 2;
          i++;
       } else {

@@ -276,26 +276,19 @@ bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h)
    return true;
 }
 
-bool fp_arg_frames(const char *prog, const char *v, int *frames)
+bool fp_arg_count(const char *prog, const char *option, const char *v, int *count)
 {
    char *end;
    long n = strtol(v, &end, 10);
    if (*end || n < 1 || n > 1000000) {
-      fprintf(stderr, "%s: bad --frames '%s' (1..1000000)\n", prog, v);
+      fprintf(stderr, "%s: bad %s '%s' (1..1000000)\n", prog, option, v);
       return false;
    }
-   *frames = (int)n;
+   *count = (int)n;
    return true;
 }
 
-bool fp_arg_warmup(const char *prog, const char *v, int *warmup)
+bool fp_arg_frames(const char *prog, const char *v, int *frames)
 {
-   char *end;
-   long n = strtol(v, &end, 10);
-   if (*end || n < 1 || n > 1000000) {
-      fprintf(stderr, "%s: bad --warmup '%s' (1..1000000, fewer than --frames)\n", prog, v);
-      return false;
-   }
-   *warmup = (int)n;
-   return true;
+   return fp_arg_count(prog, "--frames", v, frames);
 }

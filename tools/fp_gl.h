@@ -57,8 +57,8 @@ void fp_print_frame_times(const struct fp_frame_times *t);
  * a bad value. */
 bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h);
 bool fp_arg_frames(const char *prog, const char *v, int *frames);
-/* A warm-up frame count in [1, 1000000]; the caller holds it below --frames. */
-bool fp_arg_warmup(const char *prog, const char *v, int *warmup);
+/* A count of option `option` (e.g. "--warmup") in [1, 1000000]. */
+bool fp_arg_count(const char *prog, const char *option, const char *v, int *count);
 
 /* Reads the FBO and writes it to a PNG file; exits with a message on failure. */
 void fp_gl_write_png(const struct fp_gl *g, const char *path);
