@@ -70,7 +70,7 @@ static bool read_words(FILE *f, uint64_t *w, unsigned n)
    return true;
 }
 
-static bool read_quad(FILE *f, struct rast_vec_quad *r)
+bool rast_vectors_read_quad(FILE *f, struct rast_vec_quad *r)
 {
    uint64_t w[VEC_OUT_WORDS];
    if (!read_words(f, w, VEC_OUT_WORDS))
@@ -79,7 +79,7 @@ static bool read_quad(FILE *f, struct rast_vec_quad *r)
    return true;
 }
 
-static bool read_triangle(FILE *f, struct rast_vec_tri *t)
+bool rast_vectors_read_triangle(FILE *f, struct rast_vec_tri *t)
 {
    uint64_t w[VEC_IN_WORDS];
    if (!read_words(f, w, VEC_IN_WORDS))
@@ -88,6 +88,7 @@ static bool read_triangle(FILE *f, struct rast_vec_tri *t)
    t->half_pixel = w[0] & 1u;
    t->bottom_rule = (w[0] >> 1) & 1u;
    t->front_ccw = (w[0] >> 2) & 1u;
+   t->front = (w[0] >> 3) & 1u;
    t->ncolor = (unsigned)(w[0] >> 8) & 0xffu;
    t->npersp = (unsigned)(w[0] >> 16) & 0xffu;
    t->org_x = (int32_t)(uint32_t)w[1];
@@ -338,20 +339,22 @@ static long replay_tex(const char *dir, const struct numsys *ns, FILE *log,
    return bad;
 }
 
-long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts *counts)
+bool rast_vectors_read_header(const char *dir, struct rast_vectors_header *hd, FILE *log)
 {
-   char path[600], line[256], profile[200] = "", interp[32] = "scanline", texfmt[32] = "";
+   char path[600], line[256];
    snprintf(path, sizeof(path), "%s/scan.txt", dir);
    FILE *h = fopen(path, "r");
    if (!h) {
       fprintf(log, "cannot read %s: %s\n", path, strerror(errno));
-      return -1;
+      return false;
    }
+   memset(hd, 0, sizeof(*hd));
+   strcpy(hd->interp, "scanline");
    unsigned in_words = 0, out_words = 0, tex_in = 0, tex_out = 0;
    while (fgets(line, sizeof(line), h)) {
-      sscanf(line, "profile %199s", profile);
-      sscanf(line, "interp %31s", interp);
-      sscanf(line, "texfmt %31s", texfmt);
+      sscanf(line, "profile %199s", hd->profile);
+      sscanf(line, "interp %31s", hd->interp);
+      sscanf(line, "texfmt %31s", hd->texfmt);
       sscanf(line, "in_words %u", &in_words);
       sscanf(line, "out_words %u", &out_words);
       sscanf(line, "tex_in_words %u", &tex_in);
@@ -363,14 +366,25 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
       fprintf(log, "%s: records of %u, %u, %u and %u words, this replay reads %u, %u, %u and "
               "%u\n", path, in_words, out_words, tex_in, tex_out, VEC_IN_WORDS, VEC_OUT_WORDS,
               VEC_TEX_IN_WORDS, VEC_TEX_OUT_WORDS);
-      return -1;
+      return false;
    }
-   static struct rast_profile_buf buf;
    char err[256];
-   if (!rast_profile_parse(profile, &buf, err, sizeof(err))) {
-      fprintf(log, "%s: profile '%s': %s\n", path, profile, err);
-      return -1;
+   if (!rast_profile_parse(hd->profile, &hd->profile_buf, err, sizeof(err))) {
+      fprintf(log, "%s: profile '%s': %s\n", path, hd->profile, err);
+      return false;
    }
+   return true;
+}
+
+long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts *counts)
+{
+   char path[600];
+   static struct rast_vectors_header hd;
+   if (!rast_vectors_read_header(dir, &hd, log))
+      return -1;
+   struct rast_profile_buf *const bp = &hd.profile_buf;
+   const char *const interp = hd.interp, *const texfmt = hd.texfmt;
+   snprintf(path, sizeof(path), "%s/scan.txt", dir);
    const struct numsys *ns = numsys_by_name(texfmt);
    if (!ns) {
       fprintf(log, "%s: unknown texfmt '%s'\n", path, texfmt);
@@ -395,7 +409,7 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
          fclose(fin);
       return -1;
    }
-   struct rast_context *rc = rast_create(&buf.p);
+   struct rast_context *rc = rast_create(&bp->p);
    struct replay_check chk = { .log = log };
    struct replay_check *v = &chk;
    size_t cap = 1024;
@@ -412,7 +426,7 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
    rast_set_texfmt(rc, ns);
    struct rast_framebuffer fb;
    memset(&fb, 0, sizeof(fb));
-   fb.width = fb.height = buf.p.max_target;
+   fb.width = fb.height = bp->p.max_target;
    rast_set_framebuffer(rc, &fb);
    struct rast_shader fs;
    memset(&fs, 0, sizeof(fs));
@@ -421,11 +435,11 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
    rast_set_shader(rc, &fs);
 
    struct rast_vec_quad next;
-   bool have_next = read_quad(fout, &next);
+   bool have_next = rast_vectors_read_quad(fout, &next);
    long result = 0;
    uint64_t tri = 0, quads = 0;
    struct rast_vec_tri t;
-   while (read_triangle(fin, &t)) {
+   while (rast_vectors_read_triangle(fin, &t)) {
       size_t n = 0;
       while (have_next && next.tri == tri) {
          if (n == cap) {
@@ -439,7 +453,7 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
             cap *= 2;
          }
          expect[n++] = next;
-         have_next = read_quad(fout, &next);
+         have_next = rast_vectors_read_quad(fout, &next);
       }
       if (result < 0)
          break;

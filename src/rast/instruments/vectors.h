@@ -28,6 +28,7 @@ struct rast_front;
  * the registers of its three vertices. */
 struct rast_vec_tri {
    bool half_pixel, bottom_rule, front_ccw;
+   bool front;                        /* the cull's result: facing front */
    unsigned ncolor;
    int64_t org_x, org_y;
    struct rast_scissor clip;
