@@ -13,6 +13,7 @@
 #include "pipe/p_format.h"
 #include "fp_screen.h"
 #include "fixed/numsys.h"
+#include "rast/host/settings.h"
 #include "rast/instruments/cycles.h"
 
 static struct fp_options env;
@@ -63,6 +64,45 @@ static void fp_env_check_flags(const char *var, const char *value,
          fprintf(stderr, " %s", f->name);
       fprintf(stderr, ", help); ignored\n");
    }
+}
+
+static const char vectors_keys[] =
+   "frames=A-B with A <= B, frames counted from 0 by presents, and units=scan, tex or scan+tex";
+
+static bool vectors_option(void *ctx, const char *key, const char *val, char *err, size_t errlen)
+{
+   struct fp_vectors_option *v = ctx;
+   char *end;
+   if (!strcmp(key, "frames")) {
+      v->first = strtoul(val, &end, 10);
+      if (end != val && *end == '-') {
+         const char *b = end + 1;
+         v->last = strtoul(b, &end, 10);
+         if (end != b && !*end && v->first <= v->last)
+            return true;
+      }
+   } else if (!strcmp(key, "units")) {
+      v->units = 0;
+      for (const char *u = val; *u;) {
+         const size_t n = strcspn(u, "+");
+         if (n == 4 && !strncmp(u, "scan", 4))
+            v->units |= RAST_VEC_SCAN;
+         else if (n == 3 && !strncmp(u, "tex", 3))
+            v->units |= RAST_VEC_TEX;
+         else
+            break;
+         u += n;
+         if (*u == '+' && *++u == '\0')
+            break;
+         if (!*u)
+            return true;
+      }
+   } else {
+      snprintf(err, errlen, "unknown key '%s' (accepted: %s)", key, vectors_keys);
+      return false;
+   }
+   snprintf(err, errlen, "%s=%s (accepted: %s)", key, val, vectors_keys);
+   return false;
 }
 
 static void fp_env_parse(void)
@@ -139,54 +179,25 @@ static void fp_env_parse(void)
    /* FIXPIPE_VECTORS=DIR[,frames=A-B][,units=scan+tex] (docs/vectors.md) */
    const char *vec = getenv("FIXPIPE_VECTORS");
    if (vec && *vec) {
-      char buf[sizeof(env.vectors.dir)];
-      unsigned long a = 0, b = ~0ul;
-      unsigned units = RAST_VEC_SCAN | RAST_VEC_TEX;
-      bool ok = strlen(vec) < sizeof(buf);
+      struct fp_vectors_option v = { .first = 0, .last = ~0ul,
+                                      .units = RAST_VEC_SCAN | RAST_VEC_TEX };
+      const char *comma = strchr(vec, ',');
+      const size_t dlen = comma ? (size_t)(comma - vec) : strlen(vec);
+      char verr[384];
+      snprintf(verr, sizeof(verr), "a directory of 1 to %zu characters first, then optionally "
+               "%s", sizeof(v.dir) - 1, vectors_keys);
+      bool ok = dlen > 0 && dlen < sizeof(v.dir);
       if (ok) {
-         strcpy(buf, vec);
-         char *save = NULL, *dir = strtok_r(buf, ",", &save);
-         ok = dir && vec[0] != ',';
-         for (char *opt = strtok_r(NULL, ",", &save); ok && opt;
-              opt = strtok_r(NULL, ",", &save)) {
-            char *end;
-            if (!strncmp(opt, "frames=", 7)) {
-               a = strtoul(opt + 7, &end, 10);
-               ok = end != opt + 7 && *end == '-';
-               if (ok) {
-                  const char *bs = end + 1;
-                  b = strtoul(bs, &end, 10);
-                  ok = end != bs && !*end && a <= b;
-               }
-            } else if (!strncmp(opt, "units=", 6)) {
-               units = 0;
-               char *usave = NULL;
-               for (char *u = strtok_r(opt + 6, "+", &usave); ok && u;
-                    u = strtok_r(NULL, "+", &usave))
-                  if (!strcmp(u, "scan"))
-                     units |= RAST_VEC_SCAN;
-                  else if (!strcmp(u, "tex"))
-                     units |= RAST_VEC_TEX;
-                  else
-                     ok = false;
-               ok = ok && units;
-            } else {
-               ok = false;
-            }
-         }
-         if (ok)
-            strcpy(env.vectors.dir, dir);
+         memcpy(v.dir, vec, dlen);
+         v.dir[dlen] = '\0';
+         ok = !comma || rast_settings_each(comma + 1, vectors_keys, vectors_option, &v, verr,
+                                           sizeof(verr));
       }
-      if (ok) {
-         env.vectors.first = a;
-         env.vectors.last = b;
-         env.vectors.units = units;
-      } else {
-         env.vectors.dir[0] = '\0';
-         fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s' (accepted: DIR, then optionally "
-                 ",frames=A-B with A <= B, frames counted from 0 by presents, and "
-                 ",units=scan, tex or scan+tex); no vectors written\n", vec);
-      }
+      if (ok)
+         env.vectors = v;
+      else
+         fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s': %s; no vectors written\n", vec,
+                 verr);
    }
 
    /* FIXPIPE_CYCLES=KEY=VALUE,... over the cycle model's defaults (docs/cycles.md) */

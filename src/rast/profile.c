@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rast/host/settings.h"
 #include "rast/rast.h"
 
 static const struct rast_profile profile_seed = {
@@ -130,40 +131,42 @@ static bool parse_mn(const char *v, unsigned *m, unsigned *n)
    return true;
 }
 
-static bool parse_setting(struct rast_profile *p, const struct rast_profile *base,
-                          const char *item, bool *dxdy_given, char *err, size_t size)
+static const char profile_keys[] = "xy, dxdy, z, color, weight as M.N; walk=exact|literal";
+
+/* The list being applied to a copy of its base profile. */
+struct profile_edit {
+   struct rast_profile *p;
+   const struct rast_profile *base;
+   bool dxdy_given;
+};
+
+static bool profile_setting(void *ctx, const char *key, const char *val, char *err, size_t size)
 {
-   const char *eq = strchr(item, '=');
-   const size_t klen = eq ? (size_t)(eq - item) : strlen(item);
-   if (!eq)
-      return fail(err, size, "'%s' is not KEY=VALUE (keys: xy, dxdy, z, color, weight as M.N; "
-                  "walk=exact|literal)", item);
-   const char *val = eq + 1;
-   if (klen == 4 && !strncmp(item, "walk", 4)) {
+   struct profile_edit *e = ctx;
+   if (!strcmp(key, "walk")) {
       if (!strcmp(val, "exact") || !strcmp(val, "literal")) {
-         p->literal_walk = !strcmp(val, "literal");
+         e->p->literal_walk = !strcmp(val, "literal");
          return true;
       }
       return fail(err, size, "walk=%s (accepted: exact, literal)", val);
    }
    for (unsigned i = 0; i < N_FRAC_KEYS; i++) {
       const struct frac_key *k = &frac_keys[i];
-      const bool colour = klen == 6 && !strncmp(item, "colour", 6) && !strcmp(k->key, "color");
-      if (!colour && (strlen(k->key) != klen || strncmp(item, k->key, klen)))
+      const bool colour = !strcmp(key, "colour") && !strcmp(k->key, "color");
+      if (!colour && strcmp(key, k->key))
          continue;
-      const struct fx_format b = *key_format((struct rast_profile *)base, k);
+      const struct fx_format b = *key_format((struct rast_profile *)e->base, k);
       const unsigned hi = k->max_total - b.int_bits;
       unsigned m, n;
       if (!parse_mn(val, &m, &n) || m != b.int_bits || n < k->min_frac || n > hi)
          return fail(err, size, "%s=%s (accepted: %u.N with N from %u to %u: %s keeps its "
-                     "%u integer bits)", k->key, val, b.int_bits, k->min_frac, hi, base->name,
+                     "%u integer bits)", k->key, val, b.int_bits, k->min_frac, hi, e->base->name,
                      b.int_bits);
-      key_format(p, k)->frac_bits = (uint8_t)n;
-      *dxdy_given |= !strcmp(k->key, "dxdy");
+      key_format(e->p, k)->frac_bits = (uint8_t)n;
+      e->dxdy_given |= !strcmp(k->key, "dxdy");
       return true;
    }
-   return fail(err, size, "unknown key '%.*s' (accepted: xy, dxdy, z, color, weight as M.N; "
-               "walk=exact|literal)", (int)klen, item);
+   return fail(err, size, "unknown key '%s' (accepted: %s)", key, profile_keys);
 }
 
 bool rast_profile_parse(const char *spec, struct rast_profile_buf *out, char *err,
@@ -188,23 +191,12 @@ bool rast_profile_parse(const char *spec, struct rast_profile_buf *out, char *er
                   rast_profile_names());
 
    struct rast_profile p = *base;
-   bool dxdy_given = false;
-   if (colon) {
-      char items[256];
-      if (strlen(colon + 1) >= sizeof(items))
-         return fail(err, err_size, "settings longer than %zu characters", sizeof(items) - 1);
-      strcpy(items, colon + 1);
-      if (!items[0])
-         return fail(err, err_size, "nothing after ':' (keys: xy, dxdy, z, color, weight as M.N; "
-                     "walk=exact|literal)");
-      const size_t len = strlen(items);
-      if (items[0] == ',' || items[len - 1] == ',' || strstr(items, ",,"))
-         return fail(err, err_size, "an empty setting in '%s' (KEY=VALUE,...)", items);
-      for (char *save = NULL, *it = strtok_r(items, ",", &save); it;
-           it = strtok_r(NULL, ",", &save))
-         if (!parse_setting(&p, base, it, &dxdy_given, err, err_size))
-            return false;
-   }
+   struct profile_edit edit = { &p, base, false };
+   if (colon && !colon[1])
+      return fail(err, err_size, "nothing after ':' (keys: %s)", profile_keys);
+   if (colon && !rast_settings_each(colon + 1, profile_keys, profile_setting, &edit, err, err_size))
+      return false;
+   const bool dxdy_given = edit.dxdy_given;
    /* The exact walk's slope register holds Δx/Δy on X's grid and the
     * remainder the rest, so its fraction is X's; only the literal walk
     * has a slope of its own precision. */

@@ -11,7 +11,9 @@
 #     texture unit) writes vectors that fp-vectors replays bit-exactly, and with one
 #     output bit flipped (a Z word, a filtered texel) it fails; their coverage is the
 #     exact reference's (test_vectors_ref), and not once a pixel is flipped; units=tex
-#     writes the texture unit's alone.
+#     writes the texture unit's alone;
+#   a malformed FIXPIPE_VECTORS or FIXPIPE_CYCLES list is reported once with the
+#     accepted keys, and none of it takes effect.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=observability
 . "$(dirname "$0")/checks.sh"
@@ -130,5 +132,27 @@ if [ "$tr" = 0 ] && [ "${tq:-0}" -gt 0 ] && "$build/tools/fp-vectors" "$out/vec-
     pass "vectors with units=tex: $tq texture quads, no triangle, replayed bit-exactly"
 else
     fail "vectors with units=tex: triangles '$tr', texture quads '$tq' ($(tail -n 1 "$out/vec-units-replay.log" 2>/dev/null))"
+fi
+# 7. a malformed list in a setting: reported once, with the accepted keys, and
+# nothing of it takes effect (no vectors directory; the cycle model's defaults)
+bad_setting() { # NAME VALUE MUST_SAY
+    rm -rf "$out/bad-vec"
+    run --no-xvfb -- env "$1=$2" FIXPIPE_STATS=1 "$build/tools/fp-demo" --frames 1 --size 64x64 \
+        > "$out/bad-$1.log" 2>&1
+    n=$(grep -c "^fixpipe: bad $1 " "$out/bad-$1.log")
+    if [ "$n" = 1 ] && grep -q -- "$3" "$out/bad-$1.log" && [ ! -e "$out/bad-vec" ]; then
+        pass "$1='$2' reported once: $(grep "^fixpipe: bad $1 " "$out/bad-$1.log" | cut -c1-100)..."
+    else
+        fail "$1='$2': $n reports, or none saying '$3', or its directory written (log: $out/bad-$1.log)"
+    fi
+}
+bad_setting FIXPIPE_VECTORS "$out/bad-vec,frames=3-1" "frames=3-1 (accepted: frames=A-B"
+bad_setting FIXPIPE_VECTORS "$out/bad-vec,,units=tex" "an empty item"
+bad_setting FIXPIPE_CYCLES "clock=100,warp=9" "unknown key 'warp' (accepted: clock=MHZ"
+defaults="clock=100,setup=24,cull=2,span=1,pixel=1,cores=6,texels=4,fragments=1"
+if grep -qF "cycles ($defaults)" "$out/bad-FIXPIPE_CYCLES.log"; then
+    pass "FIXPIPE_CYCLES refused: the cycle model keeps its defaults"
+else
+    fail "FIXPIPE_CYCLES refused: not the defaults ($(grep -o 'cycles ([^)]*)' "$out/bad-FIXPIPE_CYCLES.log"))"
 fi
 checks_end

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rast/host/settings.h"
 #include "rast/instruments/cycles.h"
 #include "rast/rast.h"
 
@@ -32,6 +33,40 @@ static const char accepted[] =
    "clock=MHZ (> 0, at most 100000), setup, cull, span, pixel (clocks, 0..1000000), "
    "cores, texels, fragments (1..4096)";
 
+static bool cycle_param(void *ctx, const char *key, const char *val, char *err, size_t errlen)
+{
+   struct rast_cycle_params *q = ctx;
+   char *end;
+   if (!strcmp(key, "clock")) {
+      const double d = strtod(val, &end);
+      if (*end || !(d > 0.0 && d <= 100000.0)) {
+         snprintf(err, errlen, "clock=%s (accepted: %s)", val, accepted);
+         return false;
+      }
+      q->clock_mhz = d;
+      return true;
+   }
+   const struct { const char *name; uint32_t *field; unsigned long lo, hi; } keys[] = {
+      { "setup", &q->setup, 0, 1000000 },   { "cull", &q->cull, 0, 1000000 },
+      { "span", &q->span, 0, 1000000 },     { "pixel", &q->pixel, 0, 1000000 },
+      { "cores", &q->cores, 1, 4096 },      { "texels", &q->texels, 1, 4096 },
+      { "fragments", &q->fragments, 1, 4096 },
+   };
+   for (size_t i = 0; i < sizeof(keys) / sizeof(keys[0]); i++) {
+      if (strcmp(key, keys[i].name))
+         continue;
+      const unsigned long v = strtoul(val, &end, 10);
+      if (*end || val[0] == '-' || v < keys[i].lo || v > keys[i].hi) {
+         snprintf(err, errlen, "%s=%s (accepted: %s)", key, val, accepted);
+         return false;
+      }
+      *keys[i].field = (uint32_t)v;
+      return true;
+   }
+   snprintf(err, errlen, "unknown key '%s' (accepted: %s)", key, accepted);
+   return false;
+}
+
 bool rast_cycle_params_parse(const char *spec, struct rast_cycle_params *p, char *err,
                              size_t errlen)
 {
@@ -40,54 +75,8 @@ bool rast_cycle_params_parse(const char *spec, struct rast_cycle_params *p, char
    rast_cycle_params_default(p);
    if (!spec || !*spec)
       return true;
-   char buf[256];
-   if (strlen(spec) >= sizeof(buf)) {
-      snprintf(err, errlen, "too long (accepted: %s)", accepted);
+   if (!rast_settings_each(spec, accepted, cycle_param, &q, err, errlen))
       return false;
-   }
-   strcpy(buf, spec);
-   for (char *save = NULL, *item = strtok_r(buf, ",", &save); item;
-        item = strtok_r(NULL, ",", &save)) {
-      char *eq = strchr(item, '=');
-      if (!eq || eq == item || !eq[1]) {
-         snprintf(err, errlen, "'%s' is not KEY=VALUE (accepted: %s)", item, accepted);
-         return false;
-      }
-      *eq = '\0';
-      const char *key = item, *val = eq + 1;
-      char *end;
-      if (!strcmp(key, "clock")) {
-         double d = strtod(val, &end);
-         if (*end || !(d > 0.0 && d <= 100000.0)) {
-            snprintf(err, errlen, "clock=%s (accepted: %s)", val, accepted);
-            return false;
-         }
-         q.clock_mhz = d;
-         continue;
-      }
-      struct { const char *name; uint32_t *field; unsigned long lo, hi; } keys[] = {
-         { "setup", &q.setup, 0, 1000000 },   { "cull", &q.cull, 0, 1000000 },
-         { "span", &q.span, 0, 1000000 },     { "pixel", &q.pixel, 0, 1000000 },
-         { "cores", &q.cores, 1, 4096 },      { "texels", &q.texels, 1, 4096 },
-         { "fragments", &q.fragments, 1, 4096 },
-      };
-      bool known = false;
-      for (size_t i = 0; i < sizeof(keys) / sizeof(keys[0]); i++) {
-         if (strcmp(key, keys[i].name))
-            continue;
-         unsigned long v = strtoul(val, &end, 10);
-         if (*end || val[0] == '-' || v < keys[i].lo || v > keys[i].hi) {
-            snprintf(err, errlen, "%s=%s (accepted: %s)", key, val, accepted);
-            return false;
-         }
-         *keys[i].field = (uint32_t)v;
-         known = true;
-      }
-      if (!known) {
-         snprintf(err, errlen, "unknown key '%s' (accepted: %s)", key, accepted);
-         return false;
-      }
-   }
    *p = q;
    return true;
 }
