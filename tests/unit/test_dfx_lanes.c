@@ -14,7 +14,7 @@
 #include "tutil.h"
 
 #ifndef TEST_ISA
-#define TEST_ISA "baseline"
+#define TEST_ISA "sse2"
 #endif
 
 static const struct dfx_format F = { DFX_MANT_BITS_SEED };
