@@ -81,25 +81,17 @@ ratio() {   # a / b with two decimals, or n/a
     done
 } | tee "$out/table.md"
 
-# Run time against error: the demo's ms/frame and its mean error against llvmpipe.
+# Run time against error: the demo's ms/frame and its mean error against
+# llvmpipe, a row per configuration (empty where not measured).
 {
-    echo "title demo 512x512: run time against error"
-    echo "xlabel ms per frame"
-    echo "ylabel mean error vs llvmpipe (0-255)"
-    echo "logx"
-    echo "legend tl"
-    colours=(220,60,40 240,150,30 160,80,200 40,120,220 40,160,60)
-    i=0
+    printf 'name\tms_per_frame\tmean_error\n'
     for c in "${configs[@]}"; do
         n=${c%%|*}; k=${n// /-}
-        if [ -n "${ms[$k]:-}" ] && [ -n "${mean[$k]:-}" ]; then
-            echo "series ${colours[$i]} points $n"
-            echo "${ms[$k]} ${mean[$k]}"
-        fi
-        i=$((i + 1))
+        printf '%s\t%s\t%s\n' "$n" "${ms[$k]:-}" "${mean[$k]:-}"
     done
-} > "$out/chart.txt"
-"$root/tools/fp-plot" "$out/chart.txt" "$out/time-vs-error.png" --size 640x400 || echo "bench: no chart (fp-plot failed)" >&2
+} > "$out/time-vs-error.tsv"
+/usr/bin/python3 "$root/tools/bench-chart" "$out/time-vs-error.tsv" "$out/time-vs-error.png" ||
+    echo "bench: no chart (bench-chart failed)" >&2
 
 if [ $doc = 1 ]; then
     mkdir -p "$root/docs/img"

@@ -58,7 +58,7 @@ case $scale in ''|*[!0-9.]*) echo "texfmt.sh: bad --repeat-scale '$scale'" >&2; 
 persp=$build/tools/fp-persp
 compare=$build/tools/fp-compare
 thumb=$build/tools/fp-thumb
-chart=$root/tools/fp-plot        # matplotlib
+chart=$root/tools/texfmt-charts   # matplotlib
 for b in "$persp" "$compare" "$thumb" "$chart"; do
     [ -x "$b" ] || { echo "texfmt.sh: $b is not built (meson in $build, or --build-dir)" >&2; exit 2; }
 done
@@ -314,59 +314,26 @@ md=$out/texfmt.md
 } >"$md"
 
 # ------------------------------------------------------------------ charts
+# The charts' figures, a row per render (tools/texfmt-charts describes them).
+tab=$(printf '\t')
 {
-    echo "title run time against error, fp-persp $size ($filter)"
-    echo "xlabel fixpipe run time, ms/frame (median of $((frames - 1)))"
-    echo "ylabel ground: mean error vs float (0-255)"
-    echo "logy"
-    echo "legend bl"
-    echo "series 200,40,40 points formats (float: identical, drawn at 0.001)"
+    printf 'series\tname\tmantissa_bits\tms_median\tground_mean\tpanel0_mean\tpanel1_mean\n'
     for f in $formats; do
         echo " $names " | grep -q " $f " || continue
-        e=$(mean "$f" float ground)
-        [ "$f" = float ] && e=0.001
-        echo "$(msmed "$f") $e $f"
+        echo "format$tab$f$tab$tab$(msmed "$f")$tab$(mean "$f" float ground)$tab$tab"
     done
-    if [ -n "$sweep_done" ]; then
-        echo "series 40,90,200 points dfx17..dfx29 (labels: mantissa bits)"
-        for n in $sweep_done; do
-            e=$(mean "dfx$n" float ground)
-            awk "BEGIN{exit !($e < 0.001)}" && e=0.001
-            case $n in 17|19|21|23|25|27|29) l=$((n - 5)) ;; *) l="" ;; esac
-            echo "$(msmed "dfx$n") $e $l"
-        done
-    fi
-} >"$out/chart.txt"
-if [ -n "$sweep_done" ]; then
-    {
-        echo "title dfx mantissa sweep: error against mantissa bits"
-        echo "xlabel mantissa bits (dfxNN: NN-5)"
-        echo "ylabel mean error (0-255)"
-        echo "logy"
-        echo "legend bl"
-        echo "series 40,90,200 line ground vs float (perspective division)"
-        for n in $sweep_done; do
-            e=$(mean "dfx$n" float ground)
-            awk "BEGIN{exit !($e < 0.001)}" && e=0.001
-            echo "$((n - 5)) $e"
-        done
-        # The first two offset panels: where the sweep still separates the widths.
-        # shellcheck disable=SC2086  # the exponents, one word each
-        set -- $exps
-        for p in 0 1; do
-            [ $p = 0 ] && c=200,120,0 || c=160,40,160
-            echo "series $c line offset panel 2^$1 vs no offset"
-            shift
-            for n in $sweep_done; do
-                e=$(fig "dfx$n" ideal "p$p" mean_err)
-                awk "BEGIN{exit !($e < 0.001)}" && e=0.001
-                echo "$((n - 5)) $e"
-            done
-        done
-    } >"$out/chart-sweep.txt"
-fi
-"$chart" "$out/chart.txt" "$out/chart.png" || status=1
-[ -z "$sweep_done" ] || "$chart" "$out/chart-sweep.txt" "$out/chart-sweep.png" || status=1
+    for n in $sweep_done; do
+        echo "sweep${tab}dfx$n$tab$((n - 5))$tab$(msmed "dfx$n")$tab$(mean "dfx$n" float ground)$tab$(fig "dfx$n" ideal p0 mean_err)$tab$(fig "dfx$n" ideal p1 mean_err)"
+    done
+} >"$out/charts.tsv"
+# The sweep chart follows the first two offset panels: where the sweep still
+# separates the widths.
+# shellcheck disable=SC2086  # the exponents, one word each
+set -- $exps
+panels=$1,${2:-}
+if [ -n "$sweep_done" ]; then set -- "$out/chart-sweep.png" --panels "$panels"; else set --; fi
+/usr/bin/python3 "$chart" "$out/charts.tsv" "$out/chart.png" "$@" \
+    --setup "fp-persp $size ($filter)" --frames $((frames - 1)) || status=1
 cat "$md"
 
 [ $docs = 1 ] || exit $status

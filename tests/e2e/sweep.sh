@@ -9,8 +9,8 @@
 #   the measurement sees precision: seed:xy=12.4 is further from the maximal model
 #     than seed is;
 #   the two charts are PNG files;
-#   tools/fp-plot (the figure scripts' charts) draws a PNG from its data file and
-#     refuses a point outside a series.
+#   the figure scripts' charts (tools/bench-chart, tools/texfmt-charts) are 640x400
+#     PNG files from a good data file, and a malformed data file is refused.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=sweep
 . "$(dirname "$0")/checks.sh"
@@ -68,13 +68,50 @@ for f in pareto bits; do
         fail "$f.png missing or not a PNG"
     fi
 done
-printf 'title t\nlogx\nlegend tl\nseries 200,40,40 line a\n1 2 one\n10 3\n' > "$out/plot.txt"
-printf 'title t\n1 2\n' > "$out/bad.txt"
-if "$root/tools/fp-plot" "$out/plot.txt" "$out/plot.png" --size 320x200 &&
-   [ "$(head -c 4 "$out/plot.png" | od -An -tx1 | tr -d ' \n')" = 89504e47 ] &&
-   ! "$root/tools/fp-plot" "$out/bad.txt" "$out/bad.png" 2>/dev/null; then
-    pass "fp-plot draws a chart and refuses a point outside a series"
+
+# png_size FILE: "PNG WxH", or nothing for a file that is not an image
+png_size() {
+    /usr/bin/python3 -c 'import sys
+from PIL import Image
+im = Image.open(sys.argv[1])
+print(im.format, "%dx%d" % im.size)' "$1" 2>/dev/null
+}
+# refused SCRIPT ARGS...: tools/SCRIPT exits non-zero and writes none of the PNGs
+# named in ARGS
+refused() {
+    _s=$1
+    shift
+    ! /usr/bin/python3 "$root/tools/$_s" "$@" 2>/dev/null || return 1
+    for _p in "$@"; do case $_p in *.png) [ ! -e "$_p" ] || return 1 ;; esac; done
+}
+# softpipe not measured: left off the chart
+printf 'name\tms_per_frame\tmean_error\nfixpipe seed\t41.2\t0.84\nsoftpipe\t\t\nllvmpipe\t6.3\t0\n' \
+    > "$out/bench.tsv"
+printf 'name\tms_per_frame\tmean_error\nfixpipe seed\tn/a\t0.84\n' > "$out/bench-bad.tsv"
+if /usr/bin/python3 "$root/tools/bench-chart" "$out/bench.tsv" "$out/bench.png" &&
+   [ "$(png_size "$out/bench.png")" = "PNG 640x400" ] &&
+   refused bench-chart "$out/bench-bad.tsv" "$out/bench-bad.png"; then
+    pass "bench-chart draws a 640x400 PNG and refuses a run time that is not a number"
 else
-    fail "fp-plot: no PNG from a good file, or a bad file accepted"
+    fail "bench-chart: no 640x400 PNG from a good file (got '$(png_size "$out/bench.png")'), or a bad file accepted"
+fi
+hdr() { printf 'series\tname\tmantissa_bits\tms_median\tground_mean\tpanel0_mean\tpanel1_mean\n'; }
+{
+    hdr
+    printf 'format\tfloat\t\t30.1\t0\t\t\n'
+    printf 'format\tfx16.16\t\t31.0\t2.7\t\t\n'
+    printf 'sweep\tdfx17\t12\t32.1\t40\t60\t30\n'
+    printf 'sweep\tdfx18\t13\t32.2\t21\t36\t20\n'
+    printf 'sweep\tdfx19\t14\t32.3\t0.0004\t23\t15\n'
+} > "$out/texfmt.tsv"
+# a sweep row without its second panel
+{ hdr; printf 'sweep\tdfx17\t12\t32.1\t40\t60\t\n'; } > "$out/texfmt-bad.tsv"
+set -- --setup "fp-persp 640x480 (mipmap)" --frames 9 --panels 4,8
+if /usr/bin/python3 "$root/tools/texfmt-charts" "$out/texfmt.tsv" "$out/texfmt.png" "$out/texfmt-sweep.png" "$@" &&
+   [ "$(png_size "$out/texfmt.png") $(png_size "$out/texfmt-sweep.png")" = "PNG 640x400 PNG 640x400" ] &&
+   refused texfmt-charts "$out/texfmt-bad.tsv" "$out/texfmt-bad.png" "$out/texfmt-bad-sweep.png" "$@"; then
+    pass "texfmt-charts draws its two 640x400 PNGs and refuses a sweep row without a panel"
+else
+    fail "texfmt-charts: no two 640x400 PNGs from a good file, or a bad file accepted"
 fi
 checks_end
