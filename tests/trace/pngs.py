@@ -1,27 +1,16 @@
-"""Synthetic test images for the comparison tests: a PNG writer (stdlib only) and a
-base picture to plant known differences into; and a reader of 8-bit RGB(A) PNGs, the
-snapshots eglretrace writes, for planting differences into real frames."""
-import struct
-import zlib
+"""Synthetic test images for the comparison tests: a PNG writer and a base picture to
+plant known differences into; and a reader of 8-bit RGB(A) PNGs, the snapshots
+eglretrace writes, for planting differences into real frames.  PNG through Pillow
+(Debian: python3-pil), so its importers run under /usr/bin/python3."""
+from PIL import Image
 
 
 def write_png(path, w, h, px, alpha=True):
-    """px: list of (r, g, b, a) rows top to bottom, w*h tuples in row order."""
-    raw = bytearray()
-    for y in range(h):
-        raw.append(0)
-        for x in range(w):
-            p = px[y * w + x]
-            raw += bytes(p if alpha else p[:3])
-
-    def chunk(kind, data):
-        c = struct.pack(">I", len(data)) + kind + data
-        return c + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    hdr = struct.pack(">IIBBBBB", w, h, 8, 6 if alpha else 2, 0, 0, 0)
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", hdr) + chunk(b"IDAT", zlib.compress(bytes(raw)))
-                + chunk(b"IEND", b""))
+    """px: list of (r, g, b, a) rows top to bottom, w*h tuples in row order; alpha=False
+    drops the fourth value and writes RGB."""
+    img = Image.new("RGBA" if alpha else "RGB", (w, h))
+    img.putdata(px if alpha else [tuple(p[:3]) for p in px])
+    img.save(path, format="PNG")
 
 
 def base(w, h):
@@ -41,51 +30,18 @@ def plant(px, w, changes):
 
 
 def read_rgb(path):
-    """(w, h, bytearray of R, G, B per pixel) of an 8-bit, non-interlaced RGB or RGBA
-    PNG; None for anything else."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
+    """(w, h, bytearray of R, G, B per pixel) of an RGB or RGBA PNG (alpha dropped);
+    None for anything else."""
+    try:
+        with Image.open(path) as img:
+            if img.format != "PNG" or img.mode not in ("RGB", "RGBA"):
+                return None
+            w, h = img.size
+            return w, h, bytearray(img.convert("RGB").tobytes())
+    except OSError:  # not an image Pillow reads
         return None
-    pos, idat, hdr = 8, bytearray(), None
-    while pos + 8 <= len(data):
-        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            hdr = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    if not hdr or hdr[2] != 8 or hdr[3] not in (2, 6) or hdr[6] != 0:
-        return None
-    w, h, bpp = hdr[0], hdr[1], 3 if hdr[3] == 2 else 4
-    raw, stride = zlib.decompress(bytes(idat)), w * bpp
-    prev, rows, i = bytearray(stride), [], 0
-    for _ in range(h):
-        ft, line = raw[i], bytearray(raw[i + 1:i + 1 + stride])
-        i += 1 + stride
-        for x in range(stride):
-            a = line[x - bpp] if x >= bpp else 0
-            b = prev[x]
-            c = prev[x - bpp] if x >= bpp else 0
-            if ft == 1:
-                line[x] = (line[x] + a) & 255
-            elif ft == 2:
-                line[x] = (line[x] + b) & 255
-            elif ft == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
-            elif ft == 4:
-                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
-                pr = a if pa <= pb and pa <= pc else b if pb <= pc else c
-                line[x] = (line[x] + pr) & 255
-        rows.append(line)
-        prev = line
-    out = bytearray()
-    for line in rows:
-        out += line if bpp == 3 else bytes(v for k, v in enumerate(line) if k % 4 != 3)
-    return w, h, out
 
 
 def write_rgb(path, w, h, buf):
     """An 8-bit RGB PNG of `buf` (R, G, B per pixel)."""
-    write_png(path, w, h, [tuple(buf[3 * k:3 * k + 3]) for k in range(w * h)], alpha=False)
+    Image.frombytes("RGB", (w, h), bytes(buf)).save(path, format="PNG")
