@@ -19,6 +19,7 @@
  * the AVX-512 set takes three or four quads on binary32 lanes.
  */
 #define _POSIX_C_SOURCE 199309L
+#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -134,28 +135,32 @@ static int run(const char *sys, int ntri)
    return 0;
 }
 
+static int usage(FILE *f)
+{
+   fprintf(f, "usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [--nof32] "
+              "[SYSTEM ...]  (%s)\n", numsys_names());
+   return f == stdout ? 0 : 2;
+}
+
 int main(int argc, char **argv)
 {
-   int ntri = 800, first = 1, rc = 0;
-   /* the options, in any order, before the systems */
-   for (; first < argc && !strncmp(argv[first], "-", 1); first++) {
-      if (!strcmp(argv[first], "-h") || !strcmp(argv[first], "--help")) {
-         printf("usage: fp-bench-persp [--triangles N] [--components C] [--scalar] [--nof32] "
-                "[SYSTEM ...]  (%s)\n",
-                numsys_names());
-         return 0;
-      } else if (!strcmp(argv[first], "--triangles") && first + 1 < argc) {
-         ntri = atoi(argv[++first]);
-      } else if (!strcmp(argv[first], "--components") && first + 1 < argc) {
-         ncomp = atoi(argv[++first]);
-      } else if (!strcmp(argv[first], "--scalar")) {
-         opts |= RAST_OPT_SCALAR | RAST_OPT_NOSKIP;
-      } else if (!strcmp(argv[first], "--nof32")) {
-         opts |= RAST_OPT_NOF32;
-      } else {
-         fprintf(stderr, "fp-bench-persp: unknown option '%s' (accepted: --triangles N, "
-                 "--components C, --scalar, --nof32, --help)\n", argv[first]);
-         return 2;
+   static const struct option longopts[] = {
+      { "triangles", required_argument, NULL, 't' },
+      { "components", required_argument, NULL, 'c' },
+      { "scalar", no_argument, NULL, 's' },
+      { "nof32", no_argument, NULL, 'n' },
+      { "help", no_argument, NULL, 'h' },
+      { NULL, 0, NULL, 0 },
+   };
+   int ntri = 800, rc = 0;
+   for (int c; (c = getopt_long(argc, argv, "h", longopts, NULL)) != -1;) {
+      switch (c) {
+      case 't': ntri = atoi(optarg); break;
+      case 'c': ncomp = atoi(optarg); break;
+      case 's': opts |= RAST_OPT_SCALAR | RAST_OPT_NOSKIP; break;
+      case 'n': opts |= RAST_OPT_NOF32; break;
+      case 'h': return usage(stdout);
+      default: return usage(stderr);
       }
    }
    if (ncomp < 1 || ncomp > 16) {
@@ -163,14 +168,14 @@ int main(int argc, char **argv)
       return 2;
    }
    if (ntri < 1) {
-      fprintf(stderr, "fp-bench-persp: bad --triangles\n");
+      fprintf(stderr, "fp-bench-persp: bad --triangles (1 or more)\n");
       return 2;
    }
    static const char *const def[] = { "float", "dfx24", "fx8.24", "fx16.16" };
-   if (first >= argc)
+   if (optind >= argc)
       for (unsigned i = 0; i < sizeof(def) / sizeof(def[0]); i++)
          rc |= run(def[i], ntri);
-   for (int i = first; i < argc; i++)
+   for (int i = optind; i < argc; i++)
       rc |= run(argv[i], ntri);
    return rc;
 }

@@ -34,6 +34,7 @@
  * the noise.
  */
 #define _POSIX_C_SOURCE 199309L
+#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -175,44 +176,47 @@ static void plane_quad(struct tex_quad *q, int qx, int qy, int turn)
    }
 }
 
+static int usage(void)
+{
+   fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]\n"
+                   "       fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] "
+                   "[--fresh] [--runs N] [--scalar] [--noskip]\n");
+   return 2;
+}
+
 int main(int argc, char **argv)
 {
    long nquads = 2000000;
    int runs = 5, only = 0, taps = 1, nrows = WH / 2;
-   bool scalar = false, noskip = false, window = false, hot = false, vertical = false;
-   bool fresh = false;
+   int scalar = 0, noskip = 0, window = 0, hot = 0, vertical = 0, fresh = 0;
    bool quads_set = false;
-   for (int i = 1; i < argc; i++) {
-      if (!strcmp(argv[i], "--quads") && i + 1 < argc) {
-         nquads = atol(argv[++i]);
-         quads_set = true;
-      }
-      else if (!strcmp(argv[i], "--runs") && i + 1 < argc)
-         runs = atoi(argv[++i]);
-      else if (!strcmp(argv[i], "--case") && i + 1 < argc)
-         only = atoi(argv[++i]);
-      else if (!strcmp(argv[i], "--taps") && i + 1 < argc)
-         taps = atoi(argv[++i]);
-      else if (!strcmp(argv[i], "--window"))
-         window = true;
-      else if (!strcmp(argv[i], "--hot"))
-         hot = true;
-      else if (!strcmp(argv[i], "--rows") && i + 1 < argc)
-         nrows = atoi(argv[++i]);
-      else if (!strcmp(argv[i], "--vertical"))
-         vertical = true;
-      else if (!strcmp(argv[i], "--fresh"))
-         fresh = true;
-      else if (!strcmp(argv[i], "--scalar"))
-         scalar = true;
-      else if (!strcmp(argv[i], "--noskip"))
-         noskip = true;
-      else {
-         fprintf(stderr, "usage: fp-bench-tex [--quads N] [--runs N] [--case N] [--scalar] [--noskip]\n"
-                         "       fp-bench-tex --window [--taps N] [--rows N] [--vertical] [--hot] [--fresh] [--runs N] [--scalar] [--noskip]\n");
-         return 2;
+   const struct option longopts[] = {
+      { "quads", required_argument, NULL, 'q' },
+      { "runs", required_argument, NULL, 'r' },
+      { "case", required_argument, NULL, 'c' },
+      { "taps", required_argument, NULL, 't' },
+      { "rows", required_argument, NULL, 'R' },
+      { "window", no_argument, &window, 1 },
+      { "hot", no_argument, &hot, 1 },
+      { "vertical", no_argument, &vertical, 1 },
+      { "fresh", no_argument, &fresh, 1 },
+      { "scalar", no_argument, &scalar, 1 },
+      { "noskip", no_argument, &noskip, 1 },
+      { NULL, 0, NULL, 0 },
+   };
+   for (int c; (c = getopt_long(argc, argv, "", longopts, NULL)) != -1;) {
+      switch (c) {
+      case 0: break;
+      case 'q': nquads = atol(optarg); quads_set = true; break;
+      case 'r': runs = atoi(optarg); break;
+      case 'c': only = atoi(optarg); break;
+      case 't': taps = atoi(optarg); break;
+      case 'R': nrows = atoi(optarg); break;
+      default: return usage();
       }
    }
+   if (optind < argc)
+      return usage();
    nquads &= ~3L;
    if (nquads < 4 || nquads > 1000000000 || runs < 1 || runs > 1000) {
       fprintf(stderr, "fp-bench-tex: --quads takes 4 to 10^9, --runs 1 to 1000\n");

@@ -15,6 +15,7 @@
 #include "fp_heatmap.h"
 #include "fp_png.h"
 
+#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,12 +32,13 @@ struct stats {
    int bbox[4];   /* x0 y0 x1 y1 of differing pixels, inclusive */
 };
 
-static void usage(FILE *f)
+static int usage(FILE *f)
 {
    fprintf(f,
       "usage: fp-compare A.png B.png [--heatmap out.png] [--threshold T] [--mask M.png]\n"
       "                  [--format=text|kv] [--max-diff-pixels N] [--max-diff-percent P]\n"
       "                  [--max-error E] [--max-mean M] [--min-psnr DB]\n");
+   return f == stdout ? 0 : 2;
 }
 
 static int bad(const char *msg)
@@ -63,11 +65,9 @@ static void fmt_psnr(char *buf, size_t len, double p)
 static int parse_num(const char *opt, const char *v, double *out)
 {
    char *end;
-   if (!v)
-      return -1;
    *out = strtod(v, &end);
    if (end == v || *end != '\0') {
-      fprintf(stderr, "fp-compare: %s needs a number, got '%s'\n", opt, v);
+      fprintf(stderr, "fp-compare: --%s needs a number, got '%s'\n", opt, v);
       return -1;
    }
    return 0;
@@ -75,64 +75,51 @@ static int parse_num(const char *opt, const char *v, double *out)
 
 int main(int argc, char **argv)
 {
-   const char *files[2] = { NULL, NULL }, *heatmap = NULL, *mask_path = NULL;
-   int nfiles = 0, kv = 0;
+   const char *heatmap = NULL, *mask_path = NULL;
+   int kv = 0;
    double threshold = 0;
    struct limits lim = { -1, -1, -1, -1, NAN };
+   /* the numbers first, in the order of num[] */
+   static const struct option longopts[] = {
+      { "threshold", required_argument, NULL, 'n' },
+      { "max-diff-pixels", required_argument, NULL, 'n' },
+      { "max-diff-percent", required_argument, NULL, 'n' },
+      { "max-error", required_argument, NULL, 'n' },
+      { "max-mean", required_argument, NULL, 'n' },
+      { "min-psnr", required_argument, NULL, 'n' },
+      { "format", required_argument, NULL, 'f' },
+      { "heatmap", required_argument, NULL, 'H' },
+      { "mask", required_argument, NULL, 'm' },
+      { "help", no_argument, NULL, 'h' },
+      { NULL, 0, NULL, 0 },
+   };
+   double *const num[] = { &threshold, &lim.diff_pixels, &lim.diff_percent, &lim.error,
+                           &lim.mean, &lim.psnr };
 
-   for (int i = 1; i < argc; i++) {
-      const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-      double *num = NULL;
-      if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-         usage(stdout);
-         return 0;
-      } else if (!strcmp(a, "--format=kv")) {
-         kv = 1;
-         continue;
-      } else if (!strcmp(a, "--format=text")) {
-         kv = 0;
-         continue;
-      } else if (!strcmp(a, "--heatmap") && v) {
-         heatmap = argv[++i];
-         continue;
-      } else if (!strcmp(a, "--mask") && v) {
-         mask_path = argv[++i];
-         continue;
-      }
-      /* --opt=value and --opt value both work for the numeric options. */
-      char name[64];
-      const char *eq = strchr(a, '=');
-      size_t nlen = eq ? (size_t)(eq - a) : strlen(a);
-      if (nlen >= sizeof(name))
-         nlen = sizeof(name) - 1;
-      memcpy(name, a, nlen);
-      name[nlen] = '\0';
-      if (!strcmp(name, "--threshold")) num = &threshold;
-      else if (!strcmp(name, "--max-diff-pixels")) num = &lim.diff_pixels;
-      else if (!strcmp(name, "--max-diff-percent")) num = &lim.diff_percent;
-      else if (!strcmp(name, "--max-error")) num = &lim.error;
-      else if (!strcmp(name, "--max-mean")) num = &lim.mean;
-      else if (!strcmp(name, "--min-psnr")) num = &lim.psnr;
-      if (num) {
-         const char *val = eq ? eq + 1 : v;
-         if (!eq)
-            i++;
-         if (parse_num(name, val, num) != 0)
+   for (int c, li; (c = getopt_long(argc, argv, "h", longopts, &li)) != -1;) {
+      switch (c) {
+      case 'n':
+         if (parse_num(longopts[li].name, optarg, num[li]) != 0)
             return 2;
-      } else if (a[0] == '-' && a[1] != '\0') {
-         usage(stderr);
-         return bad("unknown option");
-      } else if (nfiles < 2) {
-         files[nfiles++] = a;
-      } else {
-         usage(stderr);
-         return bad("more than two images given");
+         break;
+      case 'f':
+         if (strcmp(optarg, "text") && strcmp(optarg, "kv")) {
+            fprintf(stderr, "fp-compare: bad --format '%s' (text or kv)\n", optarg);
+            return 2;
+         }
+         kv = !strcmp(optarg, "kv");
+         break;
+      case 'H': heatmap = optarg; break;
+      case 'm': mask_path = optarg; break;
+      case 'h': return usage(stdout);
+      default: return usage(stderr);
       }
    }
-   if (nfiles != 2) {
+   if (argc - optind != 2) {
       usage(stderr);
-      return bad("two images are needed");
+      return bad(argc - optind > 2 ? "more than two images given" : "two images are needed");
    }
+   const char *const files[2] = { argv[optind], argv[optind + 1] };
 
    char err[512];
    int w[3], h[3];

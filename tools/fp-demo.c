@@ -12,11 +12,9 @@
 #include "fp_scenes.h"
 
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 enum scene { SCENE_GOURAUD, SCENE_MESH, SCENE_TEXTURED, SCENE_ALL };
-static const char *const scene_names[] = { "gouraud", "mesh", "textured", "all" };
+static const char *const scene_names[] = { "gouraud", "mesh", "textured", "all", NULL };
 
 static void usage(FILE *f)
 {
@@ -103,71 +101,45 @@ static void modeled_frame(struct demo_frame *df)
 
 int main(int argc, char **argv)
 {
+   static const struct option opts[] = {
+      FP_GL_OPTIONS,
+      { "scene", required_argument, NULL, 's' },
+      { "warmup", required_argument, NULL, 'w' },
+      { NULL, 0, NULL, 0 },
+   };
    enum scene which = SCENE_ALL;
-   int w = 512, h = 512, frames = 1, warmup = 1;
-   const char *out = NULL;
-
-   for (int i = 1; i < argc; i++) {
-      const char *a = argv[i];
-      const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-      if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-         usage(stdout);
-         return 0;
-      } else if (!strcmp(a, "--scene") && v) {
-         int found = -1;
-         for (int k = 0; k < 4; k++)
-            if (!strcmp(v, scene_names[k]))
-               found = k;
-         if (found < 0) {
-            fprintf(stderr, "fp-demo: unknown scene '%s'\n", v);
-            return 2;
-         }
-         which = (enum scene)found;
-         i++;
-      } else if (!strcmp(a, "--size") && v) {
-         if (!fp_arg_size("fp-demo", v, 16, &w, &h))
-            return 2;
-         i++;
-      } else if (!strcmp(a, "-o") && v) {
-         out = v;
-         i++;
-      } else if (!strcmp(a, "--frames") && v) {
-         if (!fp_arg_frames("fp-demo", v, &frames))
-            return 2;
-         i++;
-      } else if (!strcmp(a, "--warmup") && v) {
-         if (!fp_arg_count("fp-demo", "--warmup", v, &warmup))
-            return 2;
-         i++;
-      } else {
-         usage(stderr);
-         return 2;
-      }
+   struct fp_gl_args a = { .w = 512, .h = 512, .frames = 1 };
+   int warmup = 1;
+   for (int c; (c = fp_gl_getopt(argc, argv, opts, "fp-demo", 16, &a, usage)) != -1;) {
+      if (c == 's')
+         which = (enum scene)fp_arg_name("fp-demo", "--scene", scene_names, optarg);
+      else
+         warmup = fp_arg_count("fp-demo", "--warmup", optarg);
    }
 
-   if (frames > 1 && warmup >= frames) {
+   if (a.frames > 1 && warmup >= a.frames) {
       fprintf(stderr, "fp-demo: --warmup %d leaves no frame of --frames %d to time\n", warmup,
-              frames);
+              a.frames);
       return 2;
    }
 
    struct fp_gl g;
-   fp_gl_init(&g, w, h);
+   fp_gl_init(&g, a.w, a.h);
    printf("renderer: %s\n", fp_gl_renderer());
    struct fp_scenes s;
    fp_scenes_init(&s);
 
-   struct demo_frame df = { &s, which, w, h };
+   struct demo_frame df = { &s, which, a.w, a.h };
    struct fp_frame_times times;
-   fp_gl_time_frames(frames, warmup, draw_demo_frame, &df, &times);
+   fp_gl_time_frames(a.frames, warmup, draw_demo_frame, &df, &times);
    fp_gl_check("drawing");
-   printf("scene: %s %dx%d\n", scene_names[which], w, h);
+   printf("scene: %s %dx%d\n", scene_names[which], a.w, a.h);
    fp_print_frame_times(&times);
    modeled_frame(&df);
 
-   if (out) {
-      fp_gl_write_png(&g, out);
-      printf("wrote: %s\n", out);
+   if (a.out) {
+      fp_gl_write_png(&g, a.out);
+      printf("wrote: %s\n", a.out);
    }
    fp_scenes_fini(&s);
    fp_gl_fini(&g);

@@ -17,6 +17,7 @@
  */
 #define _GNU_SOURCE
 #include <errno.h>
+#include <getopt.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,13 +76,15 @@ static uint64_t load_base(pid_t pid, const char *prog)
 
 int main(int argc, char **argv)
 {
+   static const struct option longopts[] = { { "lines", required_argument, NULL, 'l' },
+                                              { NULL, 0, NULL, 0 } };
    const char *lines = NULL;
-   int a = 1;
-   if (a + 1 < argc && !strcmp(argv[a], "--lines")) {
-      lines = argv[a + 1];
-      a += 2;
-   }
-   if (argc - a < 2) {
+   int c;
+   /* '+': the options end at FUNCTION, the rest are the program's */
+   while ((c = getopt_long(argc, argv, "+", longopts, NULL)) == 'l')
+      lines = optarg;
+   const int a = optind;
+   if (c != -1 || argc - a < 2) {
       fprintf(stderr, "usage: fp-icount [--lines FILE] FUNCTION PROGRAM [ARGS...]\n");
       return 2;
    }

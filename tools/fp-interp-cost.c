@@ -15,6 +15,7 @@
  * seed 000 takes one clock per covered pixel and one per span), and prints
  * both as tables.
  */
+#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -93,24 +94,22 @@ static void make_triangle(double area, float v[3][2][4])
 
 int main(int argc, char **argv)
 {
-   const char *outdir = NULL;
+   /* both take a number: val[] in the same order */
+   static const struct option longopts[] = {
+      { "tris", required_argument, NULL, 0 },
+      { "setup", required_argument, NULL, 0 },
+      { NULL, 0, NULL, 0 },
+   };
    unsigned ntris = 200, setup_clocks = 16;
-   for (int i = 1; i < argc; i++) {
-      if (!strcmp(argv[i], "--tris") && i + 1 < argc)
-         ntris = (unsigned)atoi(argv[++i]);
-      else if (!strcmp(argv[i], "--setup") && i + 1 < argc)
-         setup_clocks = (unsigned)atoi(argv[++i]);
-      else if (!outdir && argv[i][0] != '-')
-         outdir = argv[i];
-      else {
-         fprintf(stderr, "usage: fp-interp-cost OUTDIR [--tris N] [--setup CLOCKS]\n");
-         return 2;
-      }
-   }
-   if (!outdir || !ntris) {
+   unsigned *const val[] = { &ntris, &setup_clocks };
+   int opt, li;
+   while ((opt = getopt_long(argc, argv, "", longopts, &li)) == 0)
+      *val[li] = (unsigned)atoi(optarg);
+   if (opt != -1 || argc - optind != 1 || !ntris) {
       fprintf(stderr, "usage: fp-interp-cost OUTDIR [--tris N] [--setup CLOCKS]\n");
       return 2;
    }
+   const char *outdir = argv[optind];
    char path[4096];
    snprintf(path, sizeof(path), "%s/cost.csv", outdir);
    FILE *cost = fopen(path, "w");

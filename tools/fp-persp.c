@@ -20,7 +20,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #define TEX_SIZE 64
 #define CHECK 8              /* texels per checker square */
@@ -91,15 +90,6 @@ static void usage(FILE *f)
       "  --no-offset  draw the offset planes without their offset: what REPEAT\n"
       "             should make of them (an integer offset changes nothing)\n"
       "  -o         PNG to write (default: none)\n");
-}
-
-static int pick(const char *const *names, const char *v, const char *opt)
-{
-   for (int k = 0; names[k]; k++)
-      if (!strcmp(v, names[k]))
-         return k;
-   fprintf(stderr, "fp-persp: unknown %s '%s'\n", opt, v);
-   exit(2);
 }
 
 /* A checkerboard with one-texel grid lines and both diagonals in each
@@ -304,53 +294,37 @@ static void draw_persp_frame(void *ctx)
 
 int main(int argc, char **argv)
 {
+   static const struct option opts[] = {
+      FP_GL_OPTIONS,
+      { "view", required_argument, NULL, 'v' },
+      { "wrap", required_argument, NULL, 'w' },
+      { "filter", required_argument, NULL, 'f' },
+      { "repeat-scale", required_argument, NULL, 'r' },
+      { "no-offset", no_argument, &no_offset, 1 },
+      { NULL, 0, NULL, 0 },
+   };
    enum view view = VIEW_BOTH;
    enum wrap wrap = WRAP_SPLIT;
    enum filter filter = FILTER_LINEAR;
-   int w = 640, h = 480, frames = 1;
-   const char *out = NULL;
-
-   for (int i = 1; i < argc; i++) {
-      const char *a = argv[i];
-      const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-      if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-         usage(stdout);
-         return 0;
-      } else if (!strcmp(a, "--view") && v) {
-         view = (enum view)pick(view_names, v, "view");
-         i++;
-      } else if (!strcmp(a, "--wrap") && v) {
-         wrap = (enum wrap)pick(wrap_names, v, "wrap mode");
-         i++;
-      } else if (!strcmp(a, "--filter") && v) {
-         filter = (enum filter)pick(filter_names, v, "filter");
-         i++;
-      } else if (!strcmp(a, "--size") && v) {
-         if (!fp_arg_size("fp-persp", v, 48, &w, &h))
-            return 2;
-         i++;
-      } else if (!strcmp(a, "--repeat-scale") && v) {
-         char *end;
-         repeat_scale = strtof(v, &end);
+   struct fp_gl_args a = { .w = 640, .h = 480, .frames = 1 };
+   char *end;
+   for (int c; (c = fp_gl_getopt(argc, argv, opts, "fp-persp", 48, &a, usage)) != -1;) {
+      switch (c) {
+      case 'v': view = (enum view)fp_arg_name("fp-persp", "--view", view_names, optarg); break;
+      case 'w': wrap = (enum wrap)fp_arg_name("fp-persp", "--wrap", wrap_names, optarg); break;
+      case 'f':
+         filter = (enum filter)fp_arg_name("fp-persp", "--filter", filter_names, optarg);
+         break;
+      case 'r':
+         repeat_scale = strtof(optarg, &end);
          if (*end || !(repeat_scale >= 1.0f / 1024 && repeat_scale <= 65536)) {
-            fprintf(stderr, "fp-persp: bad --repeat-scale '%s' (1/1024..65536)\n", v);
+            fprintf(stderr, "fp-persp: bad --repeat-scale '%s' (1/1024..65536)\n", optarg);
             return 2;
          }
-         i++;
-      } else if (!strcmp(a, "--no-offset")) {
-         no_offset = 1;
-      } else if (!strcmp(a, "-o") && v) {
-         out = v;
-         i++;
-      } else if (!strcmp(a, "--frames") && v) {
-         if (!fp_arg_frames("fp-persp", v, &frames))
-            return 2;
-         i++;
-      } else {
-         usage(stderr);
-         return 2;
+         break;
       }
    }
+   const int w = a.w, h = a.h;
 
    struct fp_gl g;
    fp_gl_init(&g, w, h);
@@ -364,7 +338,7 @@ int main(int argc, char **argv)
 
    struct persp_frame pf = { &s, view, wrap, w, h };
    struct fp_frame_times times;
-   fp_gl_time_frames(frames, 1, draw_persp_frame, &pf, &times);
+   fp_gl_time_frames(a.frames, 1, draw_persp_frame, &pf, &times);
    fp_gl_check("drawing");
    double wmin, wmax;
    ground_w_range(&wmin, &wmax);
@@ -395,9 +369,9 @@ int main(int argc, char **argv)
    printf("%s\n", no_offset ? " (offsets removed)" : "");
    fp_print_frame_times(&times);
 
-   if (out) {
-      fp_gl_write_png(&g, out);
-      printf("wrote: %s\n", out);
+   if (a.out) {
+      fp_gl_write_png(&g, a.out);
+      printf("wrote: %s\n", a.out);
    }
    scene_fini(&s);
    fp_gl_fini(&g);

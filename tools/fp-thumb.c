@@ -8,6 +8,7 @@
  */
 #include "fp_png.h"
 
+#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,33 +22,39 @@ static int usage(void)
    return 2;
 }
 
+static int bad(const char *option, const char *v)
+{
+   fprintf(stderr, "fp-thumb: bad %s '%s'\n", option, v);
+   return usage();
+}
+
 int main(int argc, char **argv)
 {
+   static const struct option longopts[] = {
+      { "crop", required_argument, NULL, 'c' },
+      { "shrink", required_argument, NULL, 's' },
+      { "max", no_argument, NULL, 'm' },
+      { NULL, 0, NULL, 0 },
+   };
    int cx = 0, cy = 0, cw = -1, ch = -1, n = 1, use_max = 0;
-   const char *files[2];
-   int nfiles = 0;
-   for (int i = 1; i < argc; i++) {
-      const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-      if (!strcmp(a, "--crop") && v) {
-         if (sscanf(v, "%d,%d,%d,%d", &cx, &cy, &cw, &ch) != 4 || cx < 0 || cy < 0 ||
+   for (int c; (c = getopt_long(argc, argv, "", longopts, NULL)) != -1;) {
+      switch (c) {
+      case 'c':
+         if (sscanf(optarg, "%d,%d,%d,%d", &cx, &cy, &cw, &ch) != 4 || cx < 0 || cy < 0 ||
              cw < 1 || ch < 1)
-            return usage();
-         i++;
-      } else if (!strcmp(a, "--shrink") && v) {
-         n = atoi(v);
-         if (n < 1)
-            return usage();
-         i++;
-      } else if (!strcmp(a, "--max")) {
-         use_max = 1;
-      } else if (a[0] != '-' && nfiles < 2) {
-         files[nfiles++] = a;
-      } else {
-         return usage();
+            return bad("--crop", optarg);
+         break;
+      case 's':
+         if ((n = atoi(optarg)) < 1)
+            return bad("--shrink", optarg);
+         break;
+      case 'm': use_max = 1; break;
+      default: return usage();
       }
    }
-   if (nfiles != 2)
+   if (argc - optind != 2)
       return usage();
+   const char *const files[2] = { argv[optind], argv[optind + 1] };
 
    char err[512];
    int w, h;

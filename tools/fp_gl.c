@@ -267,28 +267,60 @@ void fp_print_frame_times(const struct fp_frame_times *t)
    }
 }
 
-bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h)
+_Noreturn static void bad_value(const char *prog, const char *option, const char *v,
+                                const char *accepted)
 {
-   if (sscanf(v, "%dx%d", w, h) != 2 || *w < min || *h < min || *w > 8192 || *h > 8192) {
-      fprintf(stderr, "%s: bad --size '%s' (WxH, %d..8192)\n", prog, v, min);
-      return false;
-   }
-   return true;
+   fprintf(stderr, "%s: bad %s '%s' (%s)\n", prog, option, v, accepted);
+   exit(2);
 }
 
-bool fp_arg_count(const char *prog, const char *option, const char *v, int *count)
+int fp_arg_count(const char *prog, const char *option, const char *v)
 {
    char *end;
    long n = strtol(v, &end, 10);
-   if (*end || n < 1 || n > 1000000) {
-      fprintf(stderr, "%s: bad %s '%s' (1..1000000)\n", prog, option, v);
-      return false;
-   }
-   *count = (int)n;
-   return true;
+   if (*end || n < 1 || n > 1000000)
+      bad_value(prog, option, v, "1..1000000");
+   return (int)n;
 }
 
-bool fp_arg_frames(const char *prog, const char *v, int *frames)
+int fp_arg_name(const char *prog, const char *option, const char *const *names, const char *v)
 {
-   return fp_arg_count(prog, "--frames", v, frames);
+   char accepted[256] = "";
+   for (int k = 0; names[k]; k++) {
+      if (!strcmp(v, names[k]))
+         return k;
+      snprintf(accepted + strlen(accepted), sizeof(accepted) - strlen(accepted), "%s%s",
+               k ? ", " : "", names[k]);
+   }
+   bad_value(prog, option, v, accepted);
+}
+
+int fp_gl_getopt(int argc, char **argv, const struct option *opts, const char *prog,
+                 int min_size, struct fp_gl_args *a, void (*usage)(FILE *))
+{
+   int c;
+   char junk;
+   while ((c = getopt_long(argc, argv, "ho:", opts, NULL)) != -1) {
+      switch (c) {
+      case 'o': a->out = optarg; break;
+      case FP_OPT_FRAMES: a->frames = fp_arg_count(prog, "--frames", optarg); break;
+      case FP_OPT_SIZE:
+         if (sscanf(optarg, "%dx%d%c", &a->w, &a->h, &junk) != 2 || a->w < min_size ||
+             a->h < min_size || a->w > 8192 || a->h > 8192) {
+            char accepted[32];
+            snprintf(accepted, sizeof(accepted), "WxH, %d..8192", min_size);
+            bad_value(prog, "--size", optarg, accepted);
+         }
+         break;
+      case 'h': usage(stdout); exit(0);
+      case '?': usage(stderr); exit(2);
+      default: return c;
+      }
+   }
+   if (optind < argc) {
+      fprintf(stderr, "%s: unexpected argument '%s'\n", prog, argv[optind]);
+      usage(stderr);
+      exit(2);
+   }
+   return -1;
 }

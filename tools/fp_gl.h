@@ -9,7 +9,9 @@
 #define FP_GL_H
 
 #include <GLES2/gl2.h>
+#include <getopt.h>
 #include <stdbool.h>
+#include <stdio.h>
 
 struct fp_gl {
    void *dpy, *ctx;            /* EGLDisplay, EGLContext */
@@ -52,13 +54,31 @@ void fp_gl_time_frames(int frames, int warmup, void (*draw)(void *ctx), void *ct
  * lines the scripts read. */
 void fp_print_frame_times(const struct fp_frame_times *t);
 
-/* Command-line values shared by the GL programs: WxH (each in [min, 8192])
- * and a frame count >= 1.  Print a message naming prog and return false on
- * a bad value. */
-bool fp_arg_size(const char *prog, const char *v, int min, int *w, int *h);
-bool fp_arg_frames(const char *prog, const char *v, int *frames);
-/* A count of option `option` (e.g. "--warmup") in [1, 1000000]. */
-bool fp_arg_count(const char *prog, const char *option, const char *v, int *count);
+/* The command line of the GL programs, through getopt_long: -o PNG,
+ * --size WxH (each in [min_size, 8192]), --frames N and -h/--help are
+ * shared; FP_GL_OPTIONS heads each program's table of long options.
+ * fp_gl_getopt returns the next of the program's own options (optarg
+ * holds its value) or -1 at the end, and sets the shared ones in a (which
+ * holds their defaults).
+ * It ends the program after --help (usage on stdout, status 0), and after
+ * an option getopt_long refuses, a bad value or an operand (status 2). */
+struct fp_gl_args {
+   int w, h, frames;
+   const char *out;
+};
+enum { FP_OPT_SIZE = 0x100, FP_OPT_FRAMES };
+#define FP_GL_OPTIONS                                       \
+   { "size", required_argument, NULL, FP_OPT_SIZE },        \
+   { "frames", required_argument, NULL, FP_OPT_FRAMES },    \
+   { "help", no_argument, NULL, 'h' }
+int fp_gl_getopt(int argc, char **argv, const struct option *opts, const char *prog,
+                 int min_size, struct fp_gl_args *a, void (*usage)(FILE *));
+
+/* Values of the programs' own options; on a bad one they print a message
+ * naming prog, option and the accepted values, and exit(2).  A count is
+ * in [1, 1000000]; a name one of names (NULL-terminated), its index. */
+int fp_arg_count(const char *prog, const char *option, const char *v);
+int fp_arg_name(const char *prog, const char *option, const char *const *names, const char *v);
 
 /* Reads the FBO and writes it to a PNG file; exits with a message on failure. */
 void fp_gl_write_png(const struct fp_gl *g, const char *path);

@@ -9,6 +9,7 @@
  *   e2e-osmesa -o out.png [--mask mask.png] [--size N]
  */
 #include <dlfcn.h>
+#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -71,26 +72,31 @@ static void *proc(const struct osmesa *os, const char *name)
    return p;
 }
 
+static int usage(const char *prog)
+{
+   fprintf(stderr, "usage: %s -o out.png [--mask mask.png] [--size N (16..4096)]\n", prog);
+   return 2;
+}
+
 int main(int argc, char **argv)
 {
+   static const struct option longopts[] = {
+      { "mask", required_argument, NULL, 'm' },
+      { "size", required_argument, NULL, 's' },
+      { NULL, 0, NULL, 0 },
+   };
    const char *out = NULL, *mask = NULL;
    int size = 256;
-   for (int i = 1; i < argc; i++) {
-      if (!strcmp(argv[i], "-o") && i + 1 < argc)
-         out = argv[++i];
-      else if (!strcmp(argv[i], "--mask") && i + 1 < argc)
-         mask = argv[++i];
-      else if (!strcmp(argv[i], "--size") && i + 1 < argc)
-         size = atoi(argv[++i]);
-      else {
-         fprintf(stderr, "usage: %s -o out.png [--mask mask.png] [--size N]\n", argv[0]);
-         return 2;
+   for (int c; (c = getopt_long(argc, argv, "o:", longopts, NULL)) != -1;) {
+      switch (c) {
+      case 'o': out = optarg; break;
+      case 'm': mask = optarg; break;
+      case 's': size = atoi(optarg); break;
+      default: return usage(argv[0]);
       }
    }
-   if (!out || size < 16 || size > 4096) {
-      fprintf(stderr, "usage: %s -o out.png [--mask mask.png] [--size N (16..4096)]\n", argv[0]);
-      return 2;
-   }
+   if (optind < argc || !out || size < 16 || size > 4096)
+      return usage(argv[0]);
 
    void *lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
    if (!lib) {
