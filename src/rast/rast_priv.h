@@ -71,7 +71,7 @@ struct rast_context {
     * validation lets its quad function be wrapped. */
    void (*observe_triangle)(struct rast_context *rc, const struct rast_front *fr, bool front);
    void (*observe_backend)(struct rast_context *rc);
-   bool vec_tri;
+   bool scanning_triangle;          /* set-up's: the quads under way are a triangle's */
    rast_quad_func vec_next_quad;
    struct rast_msaa *msaa;          /* a multisampled target's passes (msaa.c) */
    bool msaa_busy;                  /* inside them: a pass is one walk */

@@ -3,7 +3,7 @@
  * new context and texture units, every output bit compared with the
  * recorded one.  Verification, not the model: tools (fp-vectors) and tests
  * link it, the driver does not.  The triangles enter set-up from their
- * registers (rast_vec_replay_triangle); each quad leaving the scan converter
+ * registers (rast_setup_from_registers); each quad leaving the scan converter
  * reaches check_quad through the recorder's observer in check mode.
  */
 #include <errno.h>
@@ -79,7 +79,7 @@ bool rast_vectors_read_quad(FILE *f, struct rast_vec_quad *r)
    return true;
 }
 
-bool rast_vectors_read_triangle(FILE *f, struct rast_vec_tri *t)
+bool rast_vectors_read_triangle(FILE *f, struct rast_tri_regs *t)
 {
    uint64_t w[VEC_IN_WORDS];
    if (!read_words(f, w, VEC_IN_WORDS))
@@ -130,7 +130,7 @@ static unsigned shade_nothing(void *ctx, const struct rast_quad *q, struct rast_
 /* The replay context's state for a triangle: its flags and its colour
  * components as COLOR varyings (the layout decides the components' order:
  * by varying, then channel, as recorded). */
-static void replay_state(struct rast_context *rc, const struct rast_vec_tri *t)
+static void replay_state(struct rast_context *rc, const struct rast_tri_regs *t)
 {
    struct rast_raster_state rs;
    memset(&rs, 0, sizeof(rs));
@@ -438,7 +438,7 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
    bool have_next = rast_vectors_read_quad(fout, &next);
    long result = 0;
    uint64_t tri = 0, quads = 0;
-   struct rast_vec_tri t;
+   struct rast_tri_regs t;
    while (rast_vectors_read_triangle(fin, &t)) {
       size_t n = 0;
       while (have_next && next.tri == tri) {
@@ -463,7 +463,7 @@ long rast_vectors_replay(const char *dir, FILE *log, struct rast_vectors_counts 
       v->seen = 0;
       v->tri_index = tri;
       rast_vectors_check_triangle(rc, tri);
-      rast_vec_replay_triangle(rc, &t);
+      rast_setup_from_registers(rc, &t);
       if (v->seen != n && v->mismatches++ < 10)
          fprintf(log, "triangle %" PRIu64 ": %" PRIu64 " quads of the %zu recorded\n", tri,
                  v->seen, n);

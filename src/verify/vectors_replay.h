@@ -11,7 +11,7 @@
 
 #include "rast/rast.h"
 
-struct rast_vec_tri;
+struct rast_tri_regs;
 struct rast_vec_quad;
 
 /* Replays DIR's vectors through a new context and texture units: every
@@ -32,7 +32,7 @@ struct rast_vectors_header {
    struct rast_profile_buf profile_buf;
 };
 bool rast_vectors_read_header(const char *dir, struct rast_vectors_header *h, FILE *log);
-bool rast_vectors_read_triangle(FILE *f, struct rast_vec_tri *t);
+bool rast_vectors_read_triangle(FILE *f, struct rast_tri_regs *t);
 bool rast_vectors_read_quad(FILE *f, struct rast_vec_quad *r);
 
 #endif

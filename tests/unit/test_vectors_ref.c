@@ -56,7 +56,7 @@ static void visit(void *ctx, int x, int y)
  * ahead), their pixels relative to the pass's origin into model; false if
  * a quad faces otherwise than the triangle. */
 static bool quads_of(FILE *out, struct rast_vec_quad *next, bool *have, uint64_t t,
-                     const struct rast_vec_tri *tri, struct pixels *model, uint64_t *nquad)
+                     const struct rast_tri_regs *tri, struct pixels *model, uint64_t *nquad)
 {
    bool facing_ok = true;
    for (; *have && next->tri == t; *have = rast_vectors_read_quad(out, next)) {
@@ -92,7 +92,7 @@ int main(int argc, char **argv)
    const int64_t S = fx_one(hd.profile_buf.p.xy);
 
    struct pixels model = { 0 }, ref = { 0 };
-   struct rast_vec_tri tri;
+   struct rast_tri_regs tri;
    struct rast_vec_quad next;
    bool have = rast_vectors_read_quad(out, &next);
    uint64_t ntri = 0, nquad = 0, covered = 0, bad = 0;

@@ -8,7 +8,7 @@
  * when installed: rast_triangle_pass hands the input registers over
  * (vec_triangle) and the back end's quad function is wrapped (vec_quad)
  * while the triangle is scanned.  The replay (src/verify/vectors_replay.c)
- * feeds the registers to rast_vec_replay_triangle (setup.c), the same code
+ * feeds the registers to rast_setup_from_registers (setup.c), the same code
  * from the registers on, and checks the quads' records as they leave.
  *
  * Files in DIR: scan.in.hex (VEC_IN_WORDS words a triangle), scan.out.hex
@@ -42,6 +42,8 @@ struct rast_vectors {
    rast_vec_check_fn check;
    void *check_ctx;
    uint64_t tri_index;
+   /* the triangle being scanned has a record: its quads get theirs */
+   bool tri_recorded;
    /* the texture unit's: bindings written in this draw (serial -> index) */
    FILE *tbind, *tin, *tout;
    uint32_t dumped_serial[VEC_TEX_DUMPED], dumped_index[VEC_TEX_DUMPED];
@@ -268,6 +270,7 @@ static void vec_triangle(struct rast_context *rc, const struct rast_front *fr, b
 {
    struct rast_vectors *v = rc->vec;
    uint64_t map;
+   v->tri_recorded = false;
    if (!v->in || !v->active || !(v->units & RAST_VEC_SCAN))
       return;
    if (!color_map(fr, &map) || fr->npersp > VEC_MAX_PERSP || rc->vl.num_varyings > 32) {
@@ -318,7 +321,7 @@ static void vec_triangle(struct rast_context *rc, const struct rast_front *fr, b
       put(f, on ? ns_word(ns, t->pl[p].d2) : 0);
    }
    v->tri_index = v->triangles++;
-   rc->vec_tri = true;
+   v->tri_recorded = true;
 }
 
 /* The quad's record, written (recording) or handed to the replay's check;
@@ -326,7 +329,7 @@ static void vec_triangle(struct rast_context *rc, const struct rast_front *fr, b
 static void vec_quad(struct rast_context *rc, struct rast_quad *q)
 {
    struct rast_vectors *v = rc->vec;
-   if (rc->vec_tri) {
+   if (rc->scanning_triangle && v->tri_recorded) {
       const struct rast_front *fr = rast_front(rc);
       struct rast_vec_quad r;
       memset(&r, 0, sizeof(r));
@@ -395,6 +398,7 @@ bool rast_vectors_check_open(struct rast_context *rc, rast_vec_check_fn check, v
 void rast_vectors_check_triangle(struct rast_context *rc, uint64_t index)
 {
    rc->vec->tri_index = index;
+   rc->vec->tri_recorded = true;
 }
 
 /* ---- the texture unit ---- */

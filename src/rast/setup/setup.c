@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "rast/setup/front.h"
-#include "rast/instruments/vectors.h"
+#include "rast/setup/tri_regs.h"
 
 static void add_comp(struct fr_comp *list, unsigned *n, unsigned var, unsigned chan,
                      unsigned slot)
@@ -414,11 +414,12 @@ void rast_triangle_pass(struct rast_context *rc, const float (*v0)[4],
    if (rc->observe_triangle)
       rc->observe_triangle(rc, fr, front);
    rc->stats.tri_type[tri_sections(fr)]++;
+   rc->scanning_triangle = true;
    rast_scan_sections(rc, fr);
-   rc->vec_tri = false;
+   rc->scanning_triangle = false;
 }
 
-void rast_vec_replay_triangle(struct rast_context *rc, const struct rast_vec_tri *t)
+void rast_setup_from_registers(struct rast_context *rc, const struct rast_tri_regs *t)
 {
    struct rast_front *fr = rast_front_begin(rc, false);
    /* the recorded pass: its origin and clip (tiles), after validation */
@@ -444,12 +445,12 @@ void rast_vec_replay_triangle(struct rast_context *rc, const struct rast_vec_tri
       for (unsigned j = 0; j < fr->npersp; j++)
          fr->vflt[k][1 + j] = t->aw[j][k];
    }
-   rc->vec_tri = true;
+   rc->scanning_triangle = true;
    rast_interp_modes_setup(rc, fr, 0, 1, 2);
    tri_gradients(fr);
    if (fr->npersp)
       rast_interp_perspective_setup(rc, fr, 0, 1, 2);
    rc->stats.tri_type[tri_sections(fr)]++;
    rast_scan_sections(rc, fr);
-   rc->vec_tri = false;
+   rc->scanning_triangle = false;
 }
