@@ -125,23 +125,18 @@ static float x_to_float(const struct numsys *ns, ns_val a)
    return (float)fx_to_double(ns->fx, a.x);
 }
 
-static ns_val x_add(const struct numsys *ns, ns_val a, ns_val b, struct ns_stats *st)
-{
-   struct fx_sat s = { 0, 0 };
-   ns_val r;
-   r.x = fx_add(ns->fx, a.x, b.x, &s);
-   fx_count(st, s);
-   return r;
-}
+#define FX_BINOP(name, op)                                                           \
+   static ns_val name(const struct numsys *ns, ns_val a, ns_val b, struct ns_stats *st) \
+   {                                                                                \
+      struct fx_sat s = { 0, 0 };                                                   \
+      ns_val r;                                                                     \
+      r.x = op(ns->fx, a.x, b.x, &s);                                               \
+      fx_count(st, s);                                                              \
+      return r;                                                                     \
+   }
 
-static ns_val x_sub(const struct numsys *ns, ns_val a, ns_val b, struct ns_stats *st)
-{
-   struct fx_sat s = { 0, 0 };
-   ns_val r;
-   r.x = fx_sub(ns->fx, a.x, b.x, &s);
-   fx_count(st, s);
-   return r;
-}
+FX_BINOP(x_add, fx_add)
+FX_BINOP(x_sub, fx_sub)
 
 static ns_val x_mul(const struct numsys *ns, ns_val a, ns_val b, struct ns_stats *st)
 {

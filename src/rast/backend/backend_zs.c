@@ -295,33 +295,25 @@ static RAST_ALWAYS_INLINE void zwrite(enum rast_zfamily fam, uint8_t *p, uint32_
    }
 }
 
-static RAST_ALWAYS_INLINE bool cmp_u(enum rast_func f, uint32_t a, uint32_t b)
-{
-   switch (f) {
-   case RAST_FUNC_NEVER: return false;
-   case RAST_FUNC_LESS: return a < b;
-   case RAST_FUNC_EQUAL: return a == b;
-   case RAST_FUNC_LEQUAL: return a <= b;
-   case RAST_FUNC_GREATER: return a > b;
-   case RAST_FUNC_NOTEQUAL: return a != b;
-   case RAST_FUNC_GEQUAL: return a >= b;
-   default: return true;
+/* The depth and stencil tests' comparison, on the integer registers and
+ * on binary32 depth alike. */
+#define RAST_CMP(name, type)                                                   \
+   static RAST_ALWAYS_INLINE bool name(enum rast_func f, type a, type b)     \
+   {                                                                         \
+      switch (f) {                                                           \
+      case RAST_FUNC_NEVER: return false;                                    \
+      case RAST_FUNC_LESS: return a < b;                                     \
+      case RAST_FUNC_EQUAL: return a == b;                                   \
+      case RAST_FUNC_LEQUAL: return a <= b;                                  \
+      case RAST_FUNC_GREATER: return a > b;                                  \
+      case RAST_FUNC_NOTEQUAL: return a != b;                                \
+      case RAST_FUNC_GEQUAL: return a >= b;                                  \
+      default: return true;                                                  \
+      }                                                                      \
    }
-}
-
-static RAST_ALWAYS_INLINE bool cmp_f(enum rast_func f, float a, float b)
-{
-   switch (f) {
-   case RAST_FUNC_NEVER: return false;
-   case RAST_FUNC_LESS: return a < b;
-   case RAST_FUNC_EQUAL: return a == b;
-   case RAST_FUNC_LEQUAL: return a <= b;
-   case RAST_FUNC_GREATER: return a > b;
-   case RAST_FUNC_NOTEQUAL: return a != b;
-   case RAST_FUNC_GEQUAL: return a >= b;
-   default: return true;
-   }
-}
+RAST_CMP(cmp_u, uint32_t)
+RAST_CMP(cmp_f, float)
+#undef RAST_CMP
 
 static RAST_ALWAYS_INLINE bool ztest(enum rast_zfamily fam, enum rast_func f,
                                     const uint8_t *p, const union rast_zq *z, unsigned i)

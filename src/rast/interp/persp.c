@@ -357,12 +357,21 @@ tex_quad_impl(struct rast_front *fr, struct rast_quad *q, bool divide, const enu
    t->st.flush += ls.flush;
 }
 
-static void tex_quad_dfx19(struct rast_front *fr, struct rast_quad *q, bool divide,
-                           unsigned ahead)
-{
-   (void)ahead;
-   tex_quad_impl(fr, q, divide, TEX_DFX19);
-}
+/* tex_quad_impl for one number system: the entries of the quad table
+ * (fr_tex.quad) that divide each quad alone, so take no look-ahead.
+ * tex_quad_float_ref is binary32's reference: tex_quad_float must give its
+ * bits and range events (test_persp_fast). */
+#define TEX_QUAD_ALONE(name, kind)                                                      \
+   static void name(struct rast_front *fr, struct rast_quad *q, bool divide, unsigned ahead) \
+   {                                                                                    \
+      (void)ahead;                                                                      \
+      tex_quad_impl(fr, q, divide, kind);                                               \
+   }
+TEX_QUAD_ALONE(tex_quad_dfx19, TEX_DFX19)
+TEX_QUAD_ALONE(tex_quad_float_ref, TEX_FLOAT)
+TEX_QUAD_ALONE(tex_quad_dfx, TEX_DFX)
+TEX_QUAD_ALONE(tex_quad_ns, TEX_NS)
+#undef TEX_QUAD_ALONE
 
 /* With the skips taken, two quads of a row that both divide are divided
  * together (persp2_dfx19), the second one's planes kept for its turn. */
@@ -395,28 +404,8 @@ static void tex_quad_dfx19_lanes(struct rast_front *fr, struct rast_quad *q, boo
    tex_numerators_next(t);
 }
 
-/* The reference for binary32: tex_quad_float must give its bits and range
- * events (test_persp_fast). */
-static void tex_quad_float_ref(struct rast_front *fr, struct rast_quad *q, bool divide,
-                               unsigned ahead)
-{
-   (void)ahead;
-   tex_quad_impl(fr, q, divide, TEX_FLOAT);
-}
 
-static void tex_quad_dfx(struct rast_front *fr, struct rast_quad *q, bool divide,
-                         unsigned ahead)
-{
-   (void)ahead;
-   tex_quad_impl(fr, q, divide, TEX_DFX);
-}
 
-static void tex_quad_ns(struct rast_front *fr, struct rast_quad *q, bool divide,
-                        unsigned ahead)
-{
-   (void)ahead;
-   tex_quad_impl(fr, q, divide, TEX_NS);
-}
 
 /* binary32: tex_quad_impl's operations, in the same order, on float[4]
  * vectors, so that the compiler keeps them in SIMD registers (an ns_val
