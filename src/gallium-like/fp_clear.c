@@ -134,6 +134,23 @@ static void clear_zs_planes(struct pipe_context *pipe, struct pipe_surface *ps, 
       }
 }
 
+/* The rectangle of a surface a clear covers: all of it, or its part inside
+ * the scissor; false when that is empty. */
+static bool clear_rect(const struct pipe_surface *ps, const struct pipe_scissor_state *scissor,
+                       unsigned *x, unsigned *y, unsigned *w, unsigned *h)
+{
+   *x = *y = 0;
+   *w = ps->width;
+   *h = ps->height;
+   if (scissor) {
+      *x = MIN2(scissor->minx, *w);
+      *y = MIN2(scissor->miny, *h);
+      *w = MIN2(scissor->maxx, *w) > *x ? MIN2(scissor->maxx, *w) - *x : 0;
+      *h = MIN2(scissor->maxy, *h) > *y ? MIN2(scissor->maxy, *h) - *y : 0;
+   }
+   return *w && *h;
+}
+
 static void fp_clear(struct pipe_context *pipe, unsigned buffers,
                      const struct pipe_scissor_state *scissor,
                      const union pipe_color_union *color, double depth, unsigned stencil)
@@ -149,27 +166,15 @@ static void fp_clear(struct pipe_context *pipe, unsigned buffers,
       struct pipe_surface *ps = fb->cbufs[i];
       if (!ps || !(buffers & (PIPE_CLEAR_COLOR0 << i)))
          continue;
-      unsigned x = 0, y = 0, w = ps->width, h = ps->height;
-      if (scissor) {
-         x = MIN2(scissor->minx, w);
-         y = MIN2(scissor->miny, h);
-         w = MIN2(scissor->maxx, w) > x ? MIN2(scissor->maxx, w) - x : 0;
-         h = MIN2(scissor->maxy, h) > y ? MIN2(scissor->maxy, h) - y : 0;
-      }
-      if (w && h)
+      unsigned x, y, w, h;
+      if (clear_rect(ps, scissor, &x, &y, &w, &h))
          clear_color_planes(pipe, ps, color, x, y, w, h);
    }
 
    struct pipe_surface *zs = fb->zsbuf;
    if (zs && (buffers & PIPE_CLEAR_DEPTHSTENCIL)) {
-      unsigned x = 0, y = 0, w = zs->width, h = zs->height;
-      if (scissor) {
-         x = MIN2(scissor->minx, w);
-         y = MIN2(scissor->miny, h);
-         w = MIN2(scissor->maxx, w) > x ? MIN2(scissor->maxx, w) - x : 0;
-         h = MIN2(scissor->maxy, h) > y ? MIN2(scissor->maxy, h) - y : 0;
-      }
-      if (w && h)
+      unsigned x, y, w, h;
+      if (clear_rect(zs, scissor, &x, &y, &w, &h))
          clear_zs_planes(pipe, zs, buffers & PIPE_CLEAR_DEPTHSTENCIL, depth, stencil, x, y, w,
                          h);
    }

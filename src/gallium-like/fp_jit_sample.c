@@ -297,6 +297,28 @@ static bool fp_plain_2d(enum tgsi_texture_type target, unsigned key)
           fp_control(key) != TGSI_SAMPLER_DERIVS_EXPLICIT;
 }
 
+/* The operands' types of a call from the code into the unit's glue: the
+ * quads of the call, a quad's vector of floats and pointers to it, the
+ * 32-bit integers, the context. */
+struct fp_call_types {
+   unsigned nq;
+   struct lp_type type4;
+   LLVMTypeRef fvec, i32, vp, voidp;
+};
+
+static struct fp_call_types fp_call_types(struct gallivm_state *gallivm,
+                                          const struct lp_sampler_params *params)
+{
+   LLVMContextRef lc = gallivm->context;
+   struct fp_call_types ct = { .nq = fp_quads(params), .type4 = params->type };
+   ct.type4.length = RAST_QUAD_SIZE;
+   ct.fvec = lp_build_vec_type(gallivm, ct.type4);
+   ct.i32 = LLVMInt32TypeInContext(lc);
+   ct.vp = LLVMPointerType(ct.fvec, 0);
+   ct.voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   return ct;
+}
+
 /* The quads of a call laid out by the code as struct tex_quad, the operands
  * fp_tgsi_get_samples would build: s and t; `layer` (NULL: zero) in r and
  * the layer; the reference zero; `lod` (NULL: zero). */
@@ -326,14 +348,9 @@ static LLVMValueRef fp_emit_tex_quads(struct gallivm_state *gallivm,
  * call into the unit's glue. */
 static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_sampler_params *params)
 {
-   LLVMContextRef lc = gallivm->context;
-   const unsigned nq = fp_quads(params);
-   struct lp_type type4 = params->type;
-   type4.length = RAST_QUAD_SIZE;
-   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
-   LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
-   LLVMTypeRef vp = LLVMPointerType(fvec, 0);
-   LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   const struct fp_call_types ct = fp_call_types(gallivm, params);
+   const unsigned nq = ct.nq;
+   LLVMTypeRef fvec = ct.fvec, i32 = ct.i32, vp = ct.vp, voidp = ct.voidp;
    const enum tgsi_sampler_control control = fp_control(params->sample_key);
    LLVMValueRef q = fp_emit_tex_quads(gallivm, params, fvec, NULL,
                                       control == TGSI_SAMPLER_LOD_NONE ? NULL : params->lod,
@@ -349,7 +366,7 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
                            q, rgba };
    fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quads),
                     arg_types, args, ARRAY_SIZE(args));
-   fp_load_texels(gallivm, type4, rgba, nq, params->texel);
+   fp_load_texels(gallivm, ct.type4, rgba, nq, params->texel);
 }
 
 /* Whether an instruction is a gather the code can lay out itself: a
@@ -380,15 +397,10 @@ static void fp_emit_gather_call(struct gallivm_state *gallivm,
                                 const struct lp_sampler_params *params,
                                 enum tgsi_texture_type target, LLVMValueRef texel[4])
 {
-   LLVMContextRef lc = gallivm->context;
    LLVMBuilderRef b = gallivm->builder;
-   const unsigned nq = fp_quads(params);
-   struct lp_type type4 = params->type;
-   type4.length = RAST_QUAD_SIZE;
-   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
-   LLVMTypeRef i32 = LLVMInt32TypeInContext(lc);
-   LLVMTypeRef vp = LLVMPointerType(fvec, 0);
-   LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
+   const struct fp_call_types ct = fp_call_types(gallivm, params);
+   const unsigned nq = ct.nq;
+   LLVMTypeRef fvec = ct.fvec, i32 = ct.i32, vp = ct.vp, voidp = ct.voidp;
    const bool array = target == TGSI_TEXTURE_2D_ARRAY;
    LLVMValueRef q = fp_emit_tex_quads(gallivm, params, fvec,
                                       array ? params->coords[2] : NULL, NULL, "gather_quad");
@@ -411,7 +423,7 @@ static void fp_emit_gather_call(struct gallivm_state *gallivm,
                            lp_build_const_int32(gallivm, nq), q, rgba };
    fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, gather_quads),
                     arg_types, args, ARRAY_SIZE(args));
-   fp_load_texels(gallivm, type4, rgba, nq, texel);
+   fp_load_texels(gallivm, ct.type4, rgba, nq, texel);
 }
 
 /* The same value: one, or elements taken from one aggregate alike (gallivm
@@ -691,14 +703,13 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
 
    /* quad by quad; the later ones only where they are real (not the first
     * again: fp_jit_context.quads), their texels zero otherwise */
-   struct lp_type type4 = params->type;
-   type4.length = RAST_QUAD_SIZE;
-   LLVMTypeRef fvec = lp_build_vec_type(gallivm, type4);
+   const struct fp_call_types ct = fp_call_types(gallivm, params);
+   LLVMTypeRef fvec = ct.fvec;
    LLVMValueRef rgba = fp_vec_array(gallivm, fvec, 4 * nq, "texel");
    fp_emit_tex_general(js, gallivm, params, key, 0, nq, rgba);
    if (nq > 1) {
       LLVMBuilderRef b = gallivm->builder;
-      LLVMTypeRef i32 = LLVMInt32TypeInContext(gallivm->context);
+      LLVMTypeRef i32 = ct.i32;
       for (unsigned i = 4; i < 4 * nq; i++)
          fp_store_vec(gallivm, rgba, fvec, i, NULL);
       LLVMValueRef quads = fp_jit_load(gallivm, params->context_ptr,
@@ -713,7 +724,7 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
          lp_build_endif(&ifs);
       }
    }
-   fp_load_texels(gallivm, type4, rgba, nq, params->texel);
+   fp_load_texels(gallivm, ct.type4, rgba, nq, params->texel);
 }
 
 static void fp_emit_size_query(const struct lp_build_sampler_soa *base,

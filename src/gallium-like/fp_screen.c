@@ -230,7 +230,8 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
    }
    switch (shader) {
    case PIPE_SHADER_FRAGMENT:
-      if (param == PIPE_SHADER_CAP_MAX_INPUTS)
+   case PIPE_SHADER_VERTEX:
+      if (shader == PIPE_SHADER_FRAGMENT && param == PIPE_SHADER_CAP_MAX_INPUTS)
          return RAST_MAX_VARYINGS;
       if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
           param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
@@ -238,15 +239,8 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
       if (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
           param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
          return 0;
-      return tgsi_exec_get_shader_param(param);
-   case PIPE_SHADER_VERTEX:
-      if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
-          param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
-         return 16;
-      if (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
-          param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
-         return 0;
-      return draw_get_shader_param_no_llvm(shader, param);
+      return shader == PIPE_SHADER_FRAGMENT ? tgsi_exec_get_shader_param(param)
+                                            : draw_get_shader_param_no_llvm(shader, param);
    case PIPE_SHADER_COMPUTE:
       if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
           param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
