@@ -10,7 +10,8 @@
 #     than seed is;
 #   the two charts are PNG files;
 #   the figure scripts' charts (tools/bench-chart, tools/texfmt-charts) are 640x400
-#     PNG files from a good data file, and a malformed data file is refused.
+#     PNG files from a good data file, and a malformed data file is refused;
+#   tools/replay-bench-report prints its tables and draws its charts from a made-up OUT.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=sweep
 . "$(dirname "$0")/checks.sh"
@@ -114,4 +115,42 @@ if /usr/bin/python3 "$root/tools/texfmt-charts" "$out/texfmt.tsv" "$out/texfmt.p
 else
     fail "texfmt-charts: no two 640x400 PNGs from a good file, or a bad file accepted"
 fi
+
+# tools/replay-bench-report on a made-up OUT: two rounds of four configurations, a trace
+# of 2 scenes of 3 frames (the last without a swap), fixpipe's counters, two snapshots' kv
+rb=$out/replay-bench; rm -rf "$rb"; mkdir -p "$rb/fixpipe.1.snap"
+{
+    printf 'config\trun\treplay_s\tfirst_frame_s\tmean_err\tworst_psnr\tframes_compared\n'
+    for r in 1 2; do
+        printf 'llvmpipe\t%s\t6.00\t0.10\tn/a\tn/a\t2\n' $r
+        printf 'fixpipe\t%s\t%s\t0.11\t0.0340\t48.25\t2\n' $r "$([ $r = 1 ] && echo 9.00 || echo 9.60)"
+        printf 'fixpipe-1thread\t%s\t16.20\t0.11\t0.0340\t48.25\t2\n' $r
+        printf 'llvmpipe-1thread\t%s\t9.00\t0.12\t0.0000\tinf\t2\n' $r
+    done
+} > "$rb/results.tsv"
+for r in 1 2; do
+    for c in llvmpipe fixpipe llvmpipe-1thread; do
+        printf 'rendering_finished %s\n' 0 1000000000 3000000000 4000000000 4500000000 > "$rb/$c.$r.log"
+    done
+    printf 'rendering_finished %s\n' 0 1700000000 5100000000 6800000000 7650000000 > "$rb/fixpipe-1thread.$r.log"
+done
+printf 'fixpipe work at frame %s: quads %s divided 10 skip_w %s\n' 1 100 5 2 200 5 3 300 5 4 400 5 5 500 9 6 600 10 \
+    > "$rb/fixpipe.stats.log"
+printf 'mean_err_r=0.5000\nmean_err=0.0300\npsnr=inf\n' > "$rb/fixpipe.1.snap/a.kv"
+printf 'mean_err=0.0401\npsnr=41.20\n' > "$rb/fixpipe.1.snap/b.kv"
+report=$root/tools/replay-bench-report
+if "$report" report "$rb" --configs "llvmpipe fixpipe fixpipe-1thread llvmpipe-1thread" --frames 6 \
+       --scenes "one two" --nproc 2 > "$rb/report.md" &&
+   grep -qxF '| fixpipe | 9.3 | 0.6 | 1.55 | n/a | 0.0340 | 48.25 | 0.11 |' "$rb/report.md" &&
+   grep -qxF "fixpipe's speed-up on 2 cores (fixpipe-1thread's time ÷ fixpipe's), per round: 1.74 (1.69–1.80)" "$rb/report.md" &&
+   grep -qxF '| one | 3 | 3 | 5.1 | 3 | 1.00 | n/a | 50% | – | – | – | 0% | 0% | 0% |' "$rb/report.md" &&
+   grep -qxF '| two | 1.70 | 1.00 |' "$rb/report.md" &&
+   [ "$(png_size "$rb/speedup-per-scene.png") $(png_size "$rb/replay-time-vs-error.png")" = "PNG 720x420 PNG 720x420" ] &&
+   [ "$("$report" errors "$rb/fixpipe.1.snap")" = "0.0350 41.20" ] &&
+   ! "$report" report "$rb" --configs llvmpipe --frames 7 --scenes "one two" 2>/dev/null; then
+    pass "replay-bench-report prints its tables and draws its two 720x420 charts from an OUT"
+else
+    fail "replay-bench-report: a table line, a chart or a run's error not as expected (see $rb/report.md)"
+fi
+
 checks_end
