@@ -163,11 +163,18 @@ static inline struct rast_color_target make_cbuf(enum tfmt f, uint8_t *mem)
 
 #define CBUF_BYTES ((W * 16 + 12) * H)
 
+/* Pixel (x, y)'s bytes in mem, a target laid out as t. */
+static inline const uint8_t *cb_pixel(const struct rast_color_target *t, const uint8_t *mem,
+                                      int x, int y)
+{
+   return mem + y * t->stride + x * (int)t->cpp;
+}
+
 /* Channel c of pixel (x, y) as the format stores it. */
 static inline float cb_get(enum tfmt f, const struct rast_color_target *t, const uint8_t *mem,
                     int x, int y, unsigned c)
 {
-   const uint8_t *p = mem + y * t->stride + x * (int)t->cpp;
+   const uint8_t *p = cb_pixel(t, mem, x, y);
    float v;
    switch (f) {
    case TF_F32: case TF_F32_CLAMP: memcpy(&v, p + 4 * c, 4); return v;
@@ -241,6 +248,70 @@ static inline void bind_fb(struct rast_context *rc, unsigned w, unsigned h, unsi
    fb.zs.layout = layout;
    fb.zs.stride = layout != RAST_ZS_NONE ? zs_stride(layout) : 0;
    rast_set_framebuffer(rc, &fb);
+}
+
+/* Colour 0 written whole, unblended. */
+static inline void set_plain_blend(struct rast_context *rc)
+{
+   struct rast_blend_state bs;
+   memset(&bs, 0, sizeof bs);
+   bs.rt[0].colormask = 0xf;
+   rast_set_blend(rc, &bs);
+}
+
+/* Colour 0 under colour mask cm, blended "over" (SRC_ALPHA,
+ * INV_SRC_ALPHA) when `blend`. */
+static inline struct rast_blend_state over_blend(unsigned cm, bool blend)
+{
+   struct rast_blend_state bs;
+   memset(&bs, 0, sizeof bs);
+   bs.rt[0].colormask = (uint8_t)cm;
+   bs.rt[0].blend_enable = blend;
+   bs.rt[0].rgb_src = bs.rt[0].alpha_src = RAST_BF_SRC_ALPHA;
+   bs.rt[0].rgb_dst = bs.rt[0].alpha_dst = RAST_BF_INV_SRC_ALPHA;
+   return bs;
+}
+
+/* The depth test by func, with depth writes; no stencil. */
+static inline void set_depth_test(struct rast_context *rc, enum rast_func func)
+{
+   struct rast_depth_stencil_state dsa;
+   memset(&dsa, 0, sizeof dsa);
+   dsa.depth_enabled = dsa.depth_writemask = true;
+   dsa.depth_func = func;
+   rast_set_depth_stencil(rc, &dsa);
+}
+
+/* The test shader on sd (cleared, every pixel kept) with `outputs`
+ * outputs, colour 0 to every target with to_all, bound; then the state
+ * validated. */
+static inline void use_test_shader(struct rast_context *rc, struct shader_data *sd,
+                                   unsigned outputs, bool to_all)
+{
+   memset(sd, 0, sizeof *sd);
+   sd->keep = 0xf;
+   struct rast_shader fs = make_shader(sd, outputs, false, false, to_all);
+   rast_set_shader(rc, &fs);
+   rast_validate(rc);
+}
+
+/* A quad at a random place of the W x H target, 1 to 4 of its pixels covered. */
+static inline struct rast_quad random_quad(void)
+{
+   struct rast_quad q;
+   memset(&q, 0, sizeof q);
+   q.x = 2 * (int)rnd(W / 2);
+   q.y = 2 * (int)rnd(H / 2);
+   q.mask = 1 + rnd(15);
+   return q;
+}
+
+/* A quad's colours, each channel k/255 for a random k. */
+static inline void random_unorm8(float color[4][RAST_QUAD_SIZE])
+{
+   for (unsigned c = 0; c < 4; c++)
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+         color[c][i] = (float)rnd(256) / 255.0f;
 }
 
 static inline uint32_t rd32(const uint8_t *p)
@@ -426,9 +497,7 @@ static inline void make_script(struct quad_script *qs, unsigned n, const int64_t
    for (unsigned k = 0; k < n; k++) {
       struct quad_script *s = &qs[k];
       memset(s, 0, sizeof *s);
-      s->q.x = 2 * (int)rnd(W / 2);
-      s->q.y = 2 * (int)rnd(H / 2);
-      s->q.mask = 1 + rnd(15);
+      s->q = random_quad();
       s->q.front_facing = rnd(2);
       for (unsigned i = 0; i < 4; i++) {
          s->q.z[i] = rnd(8) ? zpool[rnd(8)] : (int64_t)(rnd64() % (1u << 31));
@@ -450,11 +519,7 @@ static inline struct zs_run_result run_backend(const struct zs_setup *s, uint8_t
 
    const struct rast_color_target t0 = make_cbuf(TF_RGBA8, s->ncolor ? cbuf : NULL);
    bind_fb(rc, W, H, 1, &t0, zsbuf, s->layout);
-
-   struct rast_blend_state bs;
-   memset(&bs, 0, sizeof bs);
-   bs.rt[0].colormask = 0xf;
-   rast_set_blend(rc, &bs);
+   set_plain_blend(rc);
    rast_set_depth_stencil(rc, &s->dsa);
    rast_set_stencil_ref(rc, s->ref[0], s->ref[1]);
    struct rast_shader fs = make_shader(&sd, 1, s->writes_depth, s->may_discard, false);
@@ -629,6 +694,48 @@ struct color_ctx {
    struct rast_color_target t[RAST_MAX_CBUFS];
 };
 
+/* A context of the profile named `prof` drawing into cc's target 0, t0
+ * (W x H, no depth/stencil buffer). */
+static inline struct rast_context *color_context(struct color_ctx *cc, const char *prof,
+                                                 struct rast_color_target t0)
+{
+   struct rast_context *rc = rast_create(profile_named(prof));
+   cc->t[0] = t0;
+   bind_fb(rc, W, H, 1, cc->t, NULL, RAST_ZS_NONE);
+   return rc;
+}
+
+/* Pixel i of quad q on target t: where it is, its bytes now (in mem) and
+ * before the draw (in old). */
+struct quad_px {
+   int x, y;
+   const uint8_t *now, *was;
+};
+
+static inline struct quad_px quad_pixel(const struct rast_quad *q, unsigned i,
+                                        const struct rast_color_target *t, const uint8_t *mem,
+                                        const uint8_t *old)
+{
+   struct quad_px p;
+   p.x = q->x + (int)(i & 1);
+   p.y = q->y + (int)(i >> 1);
+   p.now = cb_pixel(t, mem, p.x, p.y);
+   p.was = cb_pixel(t, old, p.x, p.y);
+   return p;
+}
+
+/* Whether q covers its pixel i, p; one it does not cover must have kept
+ * its bytes. */
+static inline bool quad_covers(const struct rast_quad *q, unsigned i, struct quad_px p,
+                               unsigned cpp, const char *what)
+{
+   if (q->mask & (1u << i))
+      return true;
+   CHECK(memcmp(p.now, p.was, cpp) == 0, "%s: pixel (%d, %d) not covered, yet written", what,
+         p.x, p.y);
+   return false;
+}
+
 static inline void color_fill_random(struct color_ctx *cc, unsigned i, enum tfmt f)
 {
    if (is8(f)) {
@@ -640,6 +747,13 @@ static inline void color_fill_random(struct color_ctx *cc, unsigned i, enum tfmt
          memcpy(&cc->mem[i][b], &v, 4);
       }
    }
+}
+
+/* Target i of cc filled as color_fill_random does, and copied into old. */
+static inline void color_fill_keep(struct color_ctx *cc, unsigned i, enum tfmt f, uint8_t *old)
+{
+   color_fill_random(cc, i, f);
+   memcpy(old, cc->mem[i], CBUF_BYTES);
 }
 
 /* Expected channel c after writing `res` (float) into format f. */

@@ -15,15 +15,10 @@ static void test_blend(void)
 
    for (unsigned fi = 0; fi < TF_COUNT; fi++) {
       const enum tfmt f = (enum tfmt)fi;
-      const struct rast_profile *p = profile_named("seed");
       for (unsigned eq = 0; eq < 5; eq++)
          for (unsigned sfac = 0; sfac <= RAST_BF_INV_SRC1_ALPHA; sfac++)
             for (unsigned dfac = 0; dfac <= RAST_BF_INV_SRC1_ALPHA; dfac++) {
-               struct rast_context *rc = rast_create(p);
-               memset(&cc.sd, 0, sizeof cc.sd);
-               cc.sd.keep = 0xf;
-               cc.t[0] = make_cbuf(f, cc.mem[0]);
-               bind_fb(rc, W, H, 1, cc.t, NULL, RAST_ZS_NONE);
+               struct rast_context *rc = color_context(&cc, "seed", make_cbuf(f, cc.mem[0]));
                struct rast_blend_state bs;
                memset(&bs, 0, sizeof bs);
                struct rast_blend_target *bt = &bs.rt[0];
@@ -40,19 +35,12 @@ static void test_blend(void)
                for (unsigned c = 0; c < 4; c++)
                   k[c] = rndf(-0.5f, 1.5f);
                rast_set_blend_color(rc, k);
-               struct rast_shader fs = make_shader(&cc.sd, 2, false, false, false);
-               rast_set_shader(rc, &fs);
-               rast_validate(rc);
+               use_test_shader(rc, &cc.sd, 2, false);
 
                for (unsigned rep = 0; rep < 4; rep++) {
-               color_fill_random(&cc, 0, f);
                static uint8_t old[CBUF_BYTES];
-               memcpy(old, cc.mem[0], CBUF_BYTES);
-               struct rast_quad q;
-               memset(&q, 0, sizeof q);
-               q.x = 2 * (int)rnd(W / 2);
-               q.y = 2 * (int)rnd(H / 2);
-               q.mask = 1 + rnd(15);
+               color_fill_keep(&cc, 0, f, old);
+               struct rast_quad q = random_quad();
                /* A quarter of the values outside [0, 1]: the clamps matter. */
                for (unsigned o = 0; o < 2; o++)
                   for (unsigned c = 0; c < 4; c++)
@@ -62,18 +50,14 @@ static void test_blend(void)
 
                const bool clampin = f != TF_F32;
                for (unsigned i = 0; i < 4; i++) {
-                  const int x = q.x + (int)(i & 1), y = q.y + (int)(i >> 1);
-                  const uint8_t *px = cc.mem[0] + y * cc.t[0].stride + x * (int)cc.t[0].cpp;
-                  const uint8_t *po = old + y * cc.t[0].stride + x * (int)cc.t[0].cpp;
-                  if (!(q.mask & (1u << i))) {
-                     CHECK(memcmp(px, po, cc.t[0].cpp) == 0, "masked-off pixel written");
+                  const struct quad_px p = quad_pixel(&q, i, &cc.t[0], cc.mem[0], old);
+                  if (!quad_covers(&q, i, p, cc.t[0].cpp, "blend"))
                      continue;
-                  }
                   double s[4], s1[4], d[4], kk[4];
                   for (unsigned c = 0; c < 4; c++) {
                      s[c] = cc.sd.color[0][c][i];
                      s1[c] = cc.sd.color[1][c][i];
-                     d[c] = dst_value(f, cb_get(f, &cc.t[0], old, x, y, c), c);
+                     d[c] = dst_value(f, cb_get(f, &cc.t[0], old, p.x, p.y, c), c);
                      kk[c] = k[c];
                      if (clampin) {
                         s[c] = clampd(s[c]); s1[c] = clampd(s1[c]);
@@ -82,7 +66,7 @@ static void test_blend(void)
                   }
                   for (unsigned c = 0; c < 4; c++) {
                      const double want = ref_blend(bt, c, s, s1, d, kk);
-                     const float got = cb_get(f, &cc.t[0], cc.mem[0], x, y, c);
+                     const float got = cb_get(f, &cc.t[0], cc.mem[0], p.x, p.y, c);
                      CHECK(chan_ok(f, c, got, want),
                            "%s eq %u/%u src %u/%u dst %u/%u chan %u: got %g want %g",
                            tfmt_name[f], bt->rgb_eq, bt->alpha_eq, bt->rgb_src, bt->alpha_src,
@@ -302,30 +286,16 @@ static void test_colormask(void)
       for (unsigned cm = 0; cm < 16; cm++)
          for (unsigned blend = 0; blend < 2; blend++) {
             const enum tfmt f = (enum tfmt)fi;
-            struct rast_context *rc = rast_create(profile_named("wide"));
-            memset(&cc.sd, 0, sizeof cc.sd);
-            cc.sd.keep = 0xf;
-            cc.t[0] = make_cbuf(f, cc.mem[0]);
-            bind_fb(rc, W, H, 1, cc.t, NULL, RAST_ZS_NONE);
-            struct rast_blend_state bs;
-            memset(&bs, 0, sizeof bs);
-            bs.rt[0].colormask = (uint8_t)cm;
-            bs.rt[0].blend_enable = blend;
-            bs.rt[0].rgb_src = bs.rt[0].alpha_src = RAST_BF_SRC_ALPHA;
-            bs.rt[0].rgb_dst = bs.rt[0].alpha_dst = RAST_BF_INV_SRC_ALPHA;
+            struct rast_context *rc = color_context(&cc, "wide", make_cbuf(f, cc.mem[0]));
+            const struct rast_blend_state bs = over_blend(cm, blend);
             rast_set_blend(rc, &bs);
-            struct rast_shader fs = make_shader(&cc.sd, 1, false, false, false);
-            rast_set_shader(rc, &fs);
-            rast_validate(rc);
-            color_fill_random(&cc, 0, f);
+            use_test_shader(rc, &cc.sd, 1, false);
             static uint8_t old[CBUF_BYTES];
-            memcpy(old, cc.mem[0], CBUF_BYTES);
+            color_fill_keep(&cc, 0, f, old);
             struct rast_quad q;
             memset(&q, 0, sizeof q);
             q.x = 4; q.y = 2; q.mask = 0xf;
-            for (unsigned c = 0; c < 4; c++)
-               for (unsigned i = 0; i < 4; i++)
-                  cc.sd.color[0][c][i] = (float)rnd(256) / 255.0f;
+            random_unorm8(cc.sd.color[0]);
             rc->quad(rc, &q);
             for (unsigned i = 0; i < 4; i++) {
                const int x = q.x + (int)(i & 1), y = q.y + (int)(i >> 1);
@@ -360,8 +330,6 @@ static void test_color_routing(void)
    for (unsigned mode = 0; mode < 3; mode++) {
       /* 0: color0_to_all; 1: one output per cbuf; 2: fewer outputs than cbufs */
       struct rast_context *rc = rast_create(profile_named("seed"));
-      memset(&cc.sd, 0, sizeof cc.sd);
-      cc.sd.keep = 0xf;
       struct rast_color_target cbufs[4];
       for (unsigned i = 0; i < 4; i++) {
          cbufs[i] = cc.t[i] = make_cbuf(fmts[i], cc.mem[i]);
@@ -369,13 +337,8 @@ static void test_color_routing(void)
       }
       cbufs[1].base = NULL;
       bind_fb(rc, W, H, 4, cbufs, NULL, RAST_ZS_NONE);
-      struct rast_blend_state bs;
-      memset(&bs, 0, sizeof bs);
-      bs.rt[0].colormask = 0xf;
-      rast_set_blend(rc, &bs);
-      struct rast_shader fs = make_shader(&cc.sd, mode == 2 ? 3 : 4, false, false, mode == 0);
-      rast_set_shader(rc, &fs);
-      rast_validate(rc);
+      set_plain_blend(rc);
+      use_test_shader(rc, &cc.sd, mode == 2 ? 3 : 4, mode == 0);
       static uint8_t old[4][CBUF_BYTES];
       for (unsigned i = 0; i < 4; i++)
          memcpy(old[i], cc.mem[i], CBUF_BYTES);
@@ -416,18 +379,9 @@ static void test_ubyte(void)
 {
    static struct color_ctx cc;
    unsigned before = failures;
-   struct rast_context *rc = rast_create(profile_named("seed"));
-   memset(&cc.sd, 0, sizeof cc.sd);
-   cc.sd.keep = 0xf;
-   cc.t[0] = make_cbuf(TF_RGBA8, cc.mem[0]);
-   bind_fb(rc, W, H, 1, cc.t, NULL, RAST_ZS_NONE);
-   struct rast_blend_state bs;
-   memset(&bs, 0, sizeof bs);
-   bs.rt[0].colormask = 0xf;
-   rast_set_blend(rc, &bs);
-   struct rast_shader fs = make_shader(&cc.sd, 1, false, false, false);
-   rast_set_shader(rc, &fs);
-   rast_validate(rc);
+   struct rast_context *rc = color_context(&cc, "seed", make_cbuf(TF_RGBA8, cc.mem[0]));
+   set_plain_blend(rc);
+   use_test_shader(rc, &cc.sd, 1, false);
    for (unsigned it = 0; it < 4096; it++) {
       float v[4];
       for (unsigned i = 0; i < 4; i++) {
@@ -464,15 +418,8 @@ static void test_no_shader(void)
    struct rast_context *rc = rast_create(profile_named("seed"));
    const struct rast_color_target t0 = make_cbuf(TF_RGBA8, cb);
    bind_fb(rc, W, H, 1, &t0, zs, RAST_ZS_Z24_S8);
-   struct rast_depth_stencil_state dsa;
-   memset(&dsa, 0, sizeof dsa);
-   dsa.depth_enabled = dsa.depth_writemask = true;
-   dsa.depth_func = RAST_FUNC_ALWAYS;
-   rast_set_depth_stencil(rc, &dsa);
-   struct rast_blend_state bs;
-   memset(&bs, 0, sizeof bs);
-   bs.rt[0].colormask = 0xf;
-   rast_set_blend(rc, &bs);
+   set_depth_test(rc, RAST_FUNC_ALWAYS);
+   set_plain_blend(rc);
    struct rast_shader fs;
    memset(&fs, 0, sizeof fs);
    fs.num_outputs = 1;
@@ -532,10 +479,7 @@ static void test_depth_groups(void)
                memset(&sd[m], 0, sizeof sd[m]);
                const struct rast_color_target t0 = make_cbuf(TF_RGBA8, cb[m]);
                bind_fb(rc[m], fw, fh, 1, &t0, zs[m], s.layout);
-               struct rast_blend_state bs;
-               memset(&bs, 0, sizeof bs);
-               bs.rt[0].colormask = 0xf;
-               rast_set_blend(rc[m], &bs);
+               set_plain_blend(rc[m]);
                rast_set_depth_stencil(rc[m], &s.dsa);
                struct rast_shader fs = make_shader(&sd[m], 1, false, false, false);
                fs.shade_n = shade_group_src;

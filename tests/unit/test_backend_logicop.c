@@ -114,32 +114,17 @@ static void test_logicop(void)
       for (unsigned op = 0; op < 16; op++)
          for (unsigned cm = 1; cm < 16; cm++) {
             const enum lfmt f = (enum lfmt)fi;
-            struct rast_context *rc = rast_create(profile_named(rnd(2) ? "seed" : "wide"));
-            memset(&cc.sd, 0, sizeof cc.sd);
-            cc.sd.keep = 0xf;
-            cc.t[0] = lop_cbuf(f, cc.mem[0]);
-            bind_fb(rc, W, H, 1, cc.t, NULL, RAST_ZS_NONE);
-            struct rast_blend_state bs;
-            memset(&bs, 0, sizeof bs);
+            struct rast_context *rc = color_context(&cc, rnd(2) ? "seed" : "wide",
+                                                    lop_cbuf(f, cc.mem[0]));
+            struct rast_blend_state bs = over_blend(cm, true);   /* the op replaces it */
             bs.logicop_enable = true;
             bs.logicop_func = (enum rast_logicop)op;
-            bs.rt[0].colormask = (uint8_t)cm;
-            bs.rt[0].blend_enable = true;
-            bs.rt[0].rgb_src = bs.rt[0].alpha_src = RAST_BF_SRC_ALPHA;
-            bs.rt[0].rgb_dst = bs.rt[0].alpha_dst = RAST_BF_INV_SRC_ALPHA;
             rast_set_blend(rc, &bs);
-            struct rast_shader fs = make_shader(&cc.sd, 1, false, false, false);
-            rast_set_shader(rc, &fs);
-            rast_validate(rc);
+            use_test_shader(rc, &cc.sd, 1, false);
 
             for (unsigned rep = 0; rep < 3; rep++) {
-               color_fill_random(&cc, 0, f == LF_F32 ? TF_F32 : TF_RGBA8);
-               memcpy(old, cc.mem[0], CBUF_BYTES);
-               struct rast_quad q;
-               memset(&q, 0, sizeof q);
-               q.x = 2 * (int)rnd(W / 2);
-               q.y = 2 * (int)rnd(H / 2);
-               q.mask = 1 + rnd(15);
+               color_fill_keep(&cc, 0, f == LF_F32 ? TF_F32 : TF_RGBA8, old);
+               struct rast_quad q = random_quad();
                for (unsigned c = 0; c < 4; c++)
                   for (unsigned i = 0; i < 4; i++)
                      cc.sd.color[0][c][i] = rnd(4) ? (float)rnd(256) / 255.0f
@@ -148,13 +133,10 @@ static void test_logicop(void)
 
                const unsigned cpp = cc.t[0].cpp;
                for (unsigned i = 0; i < 4; i++) {
-                  const int x = q.x + (int)(i & 1), y = q.y + (int)(i >> 1);
-                  const uint8_t *px = cc.mem[0] + y * cc.t[0].stride + x * (int)cpp;
-                  const uint8_t *po = old + y * cc.t[0].stride + x * (int)cpp;
-                  if (!(q.mask & (1u << i))) {
-                     CHECK(memcmp(px, po, cpp) == 0, "logic op wrote a masked-off pixel");
+                  const struct quad_px p = quad_pixel(&q, i, &cc.t[0], cc.mem[0], old);
+                  const uint8_t *px = p.now, *po = p.was;
+                  if (!quad_covers(&q, i, p, cpp, "logic op"))
                      continue;
-                  }
                   double s[4];
                   for (unsigned c = 0; c < 4; c++)
                      s[c] = cc.sd.color[0][c][i];
@@ -203,33 +185,21 @@ static void test_logicop_paths(void)
    static uint8_t old[2][CBUF_BYTES], zs[ZS_BYTES];
    unsigned before = failures;
    struct rast_context *rc = rast_create(profile_named("seed"));
-   memset(&cc.sd, 0, sizeof cc.sd);
-   cc.sd.keep = 0xf;
    cc.t[0] = lop_cbuf(LF_BGRA8, cc.mem[0]);
    cc.t[1] = lop_cbuf(LF_565, cc.mem[1]);
    memset(zs, 0, sizeof zs);          /* depth 0: GEQUAL passes, twice */
    bind_fb(rc, W, H, 2, cc.t, zs, RAST_ZS_Z24_S8);
-   struct rast_depth_stencil_state dsa;
-   memset(&dsa, 0, sizeof dsa);
-   dsa.depth_enabled = dsa.depth_writemask = true;
-   dsa.depth_func = RAST_FUNC_GEQUAL;
-   rast_set_depth_stencil(rc, &dsa);
+   set_depth_test(rc, RAST_FUNC_GEQUAL);
    struct rast_blend_state bs;
    memset(&bs, 0, sizeof bs);
    bs.logicop_enable = true;
    bs.logicop_func = RAST_LOGICOP_XOR;
    bs.rt[0].colormask = 0xf;
    rast_set_blend(rc, &bs);
-   struct rast_shader fs = make_shader(&cc.sd, 1, false, false, true);
-   rast_set_shader(rc, &fs);
-   rast_validate(rc);
-   for (unsigned b = 0; b < 2; b++) {
-      color_fill_random(&cc, b, TF_RGBA8);
-      memcpy(old[b], cc.mem[b], CBUF_BYTES);
-   }
-   for (unsigned c = 0; c < 4; c++)
-      for (unsigned i = 0; i < 4; i++)
-         cc.sd.color[0][c][i] = (float)rnd(256) / 255.0f;
+   use_test_shader(rc, &cc.sd, 1, true);
+   for (unsigned b = 0; b < 2; b++)
+      color_fill_keep(&cc, b, TF_RGBA8, old[b]);
+   random_unorm8(cc.sd.color[0]);
    struct rast_quad q;
    memset(&q, 0, sizeof q);
    q.x = 2; q.y = 4; q.mask = 0xf;
@@ -240,9 +210,8 @@ static void test_logicop_paths(void)
       const enum lfmt f = b ? LF_565 : LF_BGRA8;
       const unsigned cpp = cc.t[b].cpp;
       for (unsigned i = 0; i < 4; i++) {
-         const int x = q.x + (int)(i & 1), y = q.y + (int)(i >> 1);
-         const uint8_t *px = cc.mem[b] + y * cc.t[b].stride + x * (int)cpp;
-         const uint8_t *po = old[b] + y * cc.t[b].stride + x * (int)cpp;
+         const struct quad_px p = quad_pixel(&q, i, &cc.t[b], cc.mem[b], old[b]);
+         const uint8_t *px = p.now, *po = p.was;
          double s[4];
          uint8_t sb[4], chan[4][4];
          for (unsigned c = 0; c < 4; c++)

@@ -85,14 +85,9 @@ static void test_stencil_ops_fixed(void)
          memset(zs, 0, sizeof zs);
          struct rast_context *rc = rast_create(prof);
          struct shader_data sd;
-         memset(&sd, 0, sizeof sd);
-         sd.keep = 0xf;
          const struct rast_color_target t0 = make_cbuf(TF_RGBA8, cb);
          bind_fb(rc, W, H, 1, &t0, zs, RAST_ZS_Z24_S8);
-         struct rast_blend_state bs;
-         memset(&bs, 0, sizeof bs);
-         bs.rt[0].colormask = 0xf;
-         rast_set_blend(rc, &bs);
+         set_plain_blend(rc);
          struct rast_depth_stencil_state dsa;
          memset(&dsa, 0, sizeof dsa);
          /* The face under test passes (ALWAYS) and runs the op; the other
@@ -105,9 +100,7 @@ static void test_stencil_ops_fixed(void)
          dsa.stencil[1] = back ? live : other;
          rast_set_depth_stencil(rc, &dsa);
          rast_set_stencil_ref(rc, back ? 0 : t[k].ref, back ? t[k].ref : 0);
-         struct rast_shader fs = make_shader(&sd, 1, false, false, false);
-         rast_set_shader(rc, &fs);
-         rast_validate(rc);
+         use_test_shader(rc, &sd, 1, false);
 
          zs[3] = t[k].before;                       /* pixel (0,0), bits 24..31 */
          zs[0] = 0x11; zs[1] = 0x22; zs[2] = 0x33;  /* depth bits must survive */
@@ -168,6 +161,18 @@ static void test_popcount16(void)
    CHECK(bad == 0, "rast_popcount16: %u masks miscounted", bad);
 }
 
+/* A depth-only pass on zs in layout l (no colour buffer, the shader sd
+ * has no output): depth ALWAYS, written. */
+static struct rast_context *depth_only(const struct rast_profile *p, struct shader_data *sd,
+                                       uint8_t *zs, enum rast_zs_layout l)
+{
+   struct rast_context *rc = rast_create(p);
+   bind_fb(rc, W, H, 0, NULL, zs, l);
+   set_depth_test(rc, RAST_FUNC_ALWAYS);
+   use_test_shader(rc, sd, 0, false);
+   return rc;
+}
+
 /* Values worked out by hand from the conversion rule (backend_zs.c). */
 static void test_depth_conversion_fixed(void)
 {
@@ -194,20 +199,8 @@ static void test_depth_conversion_fixed(void)
       const struct rast_profile *p = t[k].p ? t[k].p : seed;
       static uint8_t zs[ZS_BYTES];
       memset(zs, 0xee, sizeof zs);
-      struct rast_context *rc = rast_create(p);
       struct shader_data sd;
-      memset(&sd, 0, sizeof sd);
-      sd.keep = 0xf;
-      bind_fb(rc, W, H, 0, NULL, zs, t[k].l);
-      struct rast_depth_stencil_state dsa;
-      memset(&dsa, 0, sizeof dsa);
-      dsa.depth_enabled = true;
-      dsa.depth_writemask = true;
-      dsa.depth_func = RAST_FUNC_ALWAYS;
-      rast_set_depth_stencil(rc, &dsa);
-      struct rast_shader fs = make_shader(&sd, 0, false, false, false);
-      rast_set_shader(rc, &fs);
-      rast_validate(rc);
+      struct rast_context *rc = depth_only(p, &sd, zs, t[k].l);
       struct rast_quad q;
       memset(&q, 0, sizeof q);
       q.x = 2; q.y = 4; q.mask = 8;
@@ -231,34 +224,20 @@ static void test_depth_buffer_units(void)
    const struct rast_profile *p = profile_named("seed");
    static uint8_t zs[ZS_BYTES];
    memset(zs, 0, sizeof zs);
-   struct rast_context *rc = rast_create(p);
    struct shader_data sd;
-   memset(&sd, 0, sizeof sd);
-   sd.keep = 0xf;
-   bind_fb(rc, W, H, 0, NULL, zs, RAST_ZS_Z16);
-   struct rast_depth_stencil_state dsa;
-   memset(&dsa, 0, sizeof dsa);
-   dsa.depth_enabled = true;
-   dsa.depth_writemask = true;
-   dsa.depth_func = RAST_FUNC_ALWAYS;
-   rast_set_depth_stencil(rc, &dsa);
-   struct rast_shader fs = make_shader(&sd, 0, false, false, false);
-   rast_set_shader(rc, &fs);
-   rast_validate(rc);
+   struct rast_context *rc = depth_only(p, &sd, zs, RAST_ZS_Z16);
    struct rast_quad q;
    memset(&q, 0, sizeof q);
    q.mask = 1;
    q.z[0] = (int64_t)300000 << 12;
    rc->quad(rc, &q);
-   dsa.depth_func = RAST_FUNC_EQUAL;
-   rast_set_depth_stencil(rc, &dsa);
+   set_depth_test(rc, RAST_FUNC_EQUAL);
    rast_validate(rc);
    q.z[0] += 1;     /* 1/4096 of a register unit: far below one Z16 code */
    rast_reset_stats(rc);
    rc->quad(rc, &q);
    CHECK(rast_get_stats(rc)->samples_passed == 1, "EQUAL in buffer units must pass");
-   dsa.depth_func = RAST_FUNC_LESS;
-   rast_set_depth_stencil(rc, &dsa);
+   set_depth_test(rc, RAST_FUNC_LESS);
    rast_validate(rc);
    q.z[0] -= 2;
    rast_reset_stats(rc);
