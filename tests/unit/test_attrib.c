@@ -119,15 +119,11 @@ static void run(const char *profile, const char *texfmt)
    psys = pb_sys_of(numsys_by_name(texfmt));
    wide = strcmp(profile, "wide") == 0;
    t.hook = hook;
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 5;
-   vl.pos_slot = 0;
-   vl.num_varyings = 4;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR, .usage_mask = 0x1 };
-   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x1 };
-   vl.varying[2] = (struct rast_varying){ .slot = 3, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x2 };
-   vl.varying[3] = (struct rast_varying){ .slot = 4, .interp = RAST_INTERP_CONSTANT, .usage_mask = 0x4 };
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0x1);
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x1);
+   t_layout_add(&vl, RAST_INTERP_LINEAR, 0x2);
+   t_layout_add(&vl, RAST_INTERP_CONSTANT, 0x4);
    rast_set_vertex_layout(t.rc, &vl);
    struct fx_sat s = { 0, 0 };
    double zfull = (double)((1 << t.prof->z_bits) - 1);
@@ -218,11 +214,8 @@ static void flat_and_cull(void)
 {
    t_init(&t, "seed", 256, 256);
    t.hook = flat_hook;
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 2;
-   vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR, .usage_mask = 0x1 };
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0x1);
    rast_set_vertex_layout(t.rc, &vl);
    float v[3][2][4] = {
       { { 10, 10, 0.5f, 1 }, { 0.1f, 0, 0, 0 } },
@@ -410,12 +403,9 @@ static void lines_persp(const char *texfmt)
    struct pb_sys ps = pb_sys_of(numsys_by_name(texfmt));
    line_tol = 64 * ps.relo + 64 * ps.abso;
    t.hook = line_hook;
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 3;
-   vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x1 };
-   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x1 };
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_LINEAR, 0x1);
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x1);
    rast_set_vertex_layout(t.rc, &vl);
    struct rast_raster_state rs;
    memset(&rs, 0, sizeof rs);

@@ -8,7 +8,6 @@
 #include "tutil.h"
 
 static struct tctx t;
-static int minx, maxx, miny, maxy;
 static unsigned colcount[1024], rowcount[1024];
 static int colrow[1024];          /* the row of the last pixel seen in a column */
 static double worst_attr;
@@ -24,10 +23,6 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
       if (!(q->mask & (1u << i)))
          continue;
       int x = q->x + (int)(i & 1), y = q->y + (int)(i >> 1);
-      if (x < minx) minx = x;
-      if (x > maxx) maxx = x;
-      if (y < miny) miny = y;
-      if (y > maxy) maxy = y;
       colcount[x]++;
       rowcount[y]++;
       colrow[x] = y;
@@ -44,7 +39,6 @@ static void line(float x1, float y1, float x2, float y2)
                         { { x2, y2, 0.5f, 1 }, { 0.9f, 0, 0, 0 } } };
    la1 = 0.2; la2 = 0.9; lx1 = x1; lx2 = x2; ly1 = y1; ly2 = y2;
    lxmajor = fabsf(x2 - x1) >= fabsf(y2 - y1);
-   minx = miny = 1 << 30; maxx = maxy = -1;
    memset(colcount, 0, sizeof colcount);
    memset(rowcount, 0, sizeof rowcount);
    t_begin(&t);
@@ -56,26 +50,25 @@ int main(void)
    t_seed(99);
    t_init(&t, "seed", 1024, 1024);
    t.hook = hook;
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 2;
-   vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_LINEAR, .usage_mask = 0x1 };
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_LINEAR, 0x1);
    rast_set_vertex_layout(t.rc, &vl);
 
    /* between pixel centres: the start pixel is drawn, the end one not */
    line(10.5f, 10.5f, 20.5f, 10.5f);
-   CHECK(t.count == 10 && minx == 10 && maxx == 19 && miny == 10 && maxy == 10,
-         "horizontal: %llu px, x %d..%d, y %d..%d", (unsigned long long)t.count, minx, maxx, miny, maxy);
+   CHECK(t.count == 10 && t.minx == 10 && t.maxx == 19 && t.miny == 10 && t.maxy == 10,
+         "horizontal: %llu px, x %d..%d, y %d..%d", (unsigned long long)t.count, t.minx, t.maxx,
+         t.miny, t.maxy);
    line(20.5f, 10.5f, 10.5f, 10.5f);
-   CHECK(t.count == 10 && minx == 11 && maxx == 20 && miny == 10 && maxy == 10,
-         "horizontal reversed: %llu px, x %d..%d", (unsigned long long)t.count, minx, maxx);
+   CHECK(t.count == 10 && t.minx == 11 && t.maxx == 20 && t.miny == 10 && t.maxy == 10,
+         "horizontal reversed: %llu px, x %d..%d", (unsigned long long)t.count, t.minx, t.maxx);
    line(30.5f, 5.5f, 30.5f, 45.5f);
-   CHECK(t.count == 40 && minx == 30 && maxx == 30 && miny == 5 && maxy == 44,
-         "vertical: %llu px, y %d..%d", (unsigned long long)t.count, miny, maxy);
+   CHECK(t.count == 40 && t.minx == 30 && t.maxx == 30 && t.miny == 5 && t.maxy == 44,
+         "vertical: %llu px, y %d..%d", (unsigned long long)t.count, t.miny, t.maxy);
    line(100.5f, 100.5f, 110.5f, 110.5f);
-   CHECK(t.count == 10 && minx == 100 && maxx == 109 && miny == 100 && maxy == 109,
-         "diagonal: %llu px, x %d..%d, y %d..%d", (unsigned long long)t.count, minx, maxx, miny, maxy);
+   CHECK(t.count == 10 && t.minx == 100 && t.maxx == 109 && t.miny == 100 && t.maxy == 109,
+         "diagonal: %llu px, x %d..%d, y %d..%d", (unsigned long long)t.count, t.minx, t.maxx,
+         t.miny, t.maxy);
    CHECK(rast_get_stats(t.rc)->lines == 4, "lines counted");
    line(7.5f, 7.5f, 7.5f, 7.5f);
    CHECK(t.count == 0, "zero-length line drew %llu px", (unsigned long long)t.count);
@@ -104,7 +97,7 @@ int main(void)
       CHECK(t.dups == 0 && t.badquad == 0, "line emitted a pixel twice");
       bool xm = fabsf(x2 - x1) >= fabsf(y2 - y1);
       unsigned *cnt = xm ? colcount : rowcount;
-      int lo = xm ? minx : miny, hi = xm ? maxx : maxy;
+      int lo = xm ? t.minx : t.miny, hi = xm ? t.maxx : t.maxy;
       for (int i = lo; t.count && i <= hi; i++)
          CHECK(cnt[i] == 1, "line (%g,%g)-(%g,%g): %u pixels at major position %d", x1, y1, x2, y2, cnt[i], i);
       /* the number of pixel centres the major extent passes, within 2: the

@@ -171,11 +171,8 @@ static void wall(const char *fmt, double wr, double *err, struct rast_stats *out
    t_init(&tc, "seed", 1024, 256);
    rast_set_texfmt(tc.rc, numsys_by_name(fmt));
    tc.hook = hook;
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 2;
-   vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x1 };
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x1);
    rast_set_vertex_layout(tc.rc, &vl);
    float v[3][2][4];
    memset(v, 0, sizeof v);

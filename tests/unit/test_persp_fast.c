@@ -287,13 +287,8 @@ static void layer_draw(const char *profile, const char *texfmt, unsigned opts, b
    rast_set_options(t.rc, opts);
    t.hook = layer_hook;
    t_raster(&t, true, false);
-   struct rast_vertex_layout l;
-   memset(&l, 0, sizeof l);
-   l.vertex_size = 2;
-   l.num_varyings = 1;
-   l.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE,
-                                         .usage_mask = 0x7,
-                                         .float_mask = (uint8_t)(mask ? 0x4 : 0) };
+   struct rast_vertex_layout l = t_layout_pos();
+   t_layout_add(&l, RAST_INTERP_PERSPECTIVE, 0x7)->float_mask = (uint8_t)(mask ? 0x4 : 0);
    rast_set_vertex_layout(t.rc, &l);
    const float l0 = 1.50001f, l1 = 1.49999f, lm = l0 * 0.5f + l1 * 0.5f;
    /* the quad's four corners (s, t, layer), as dEQP's renderQuad */

@@ -156,15 +156,11 @@ static unsigned check_cover(float x, float y, float size)
 
 static void layout(void)
 {
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 4;
-   vl.pos_slot = 0;
+   struct rast_vertex_layout vl = t_layout_pos();
    vl.has_psize = true;
-   vl.psize_slot = 1;
-   vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0xf };
-   vl.varying[1] = (struct rast_varying){ .slot = 3, .interp = RAST_INTERP_COLOR, .usage_mask = 0xf };
+   vl.psize_slot = vl.vertex_size++;        /* slot 1 */
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0xf);
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0xf);
    vl.point_coord_mask = 1u << 0;
    rast_set_vertex_layout(t.rc, &vl);
 }

@@ -48,13 +48,10 @@ static void hook(struct tctx *tc, const struct rast_quad *q)
 
 static void layout(uint8_t mask, uint8_t even)
 {
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 2;
-   vl.num_varyings = 1;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE,
-                                          .usage_mask = 0x3, .rebase_mask = mask,
-                                          .rebase_even = even };
+   struct rast_vertex_layout vl = t_layout_pos();
+   struct rast_varying *v = t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x3);
+   v->rebase_mask = mask;
+   v->rebase_even = even;
    rast_set_vertex_layout(t.rc, &vl);
 }
 

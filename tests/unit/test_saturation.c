@@ -9,12 +9,11 @@
 #include "tutil.h"
 #include "fixed/fx.h"
 
-static int minx, maxx, miny, maxy;
 static float zmin, zmax, cmin, cmax;
 
-static void reset_box(void)
+/* The depth and colour ranges seen; the box of the pixels is tctx's. */
+static void reset_ranges(void)
 {
-   minx = miny = 1 << 30; maxx = maxy = -(1 << 30);
    zmin = cmin = 1e30f; zmax = cmax = -1e30f;
 }
 
@@ -24,11 +23,6 @@ static void hook(struct tctx *t, const struct rast_quad *q)
    for (unsigned i = 0; i < 4; i++) {
       if (!(q->mask & (1u << i)))
          continue;
-      int x = q->x + (int)(i & 1), y = q->y + (int)(i >> 1);
-      if (x < minx) minx = x;
-      if (x > maxx) maxx = x;
-      if (y < miny) miny = y;
-      if (y > maxy) maxy = y;
       if (q->frag_z[i] < zmin) zmin = q->frag_z[i];
       if (q->frag_z[i] > zmax) zmax = q->frag_z[i];
       if (q->in[0][0][i] < cmin) cmin = q->in[0][0][i];
@@ -45,7 +39,7 @@ static void tri(float x0, float y0, float x1, float y1, float x2, float y2, floa
       { { x1, y1, z, 1 }, { c, c, c, 1 } },
       { { x2, y2, z, 1 }, { c, c, c, 1 } },
    };
-   reset_box();
+   reset_ranges();
    t_begin(&t);
    t_tri(t.rc, v[0], v[1], v[2]);
 }
@@ -57,47 +51,43 @@ int main(void)
 {
    t_init(&t, "seed", 2048, 2048);
    t.hook = hook;
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 2;
-   vl.pos_slot = 0;
-   vl.num_varyings = 1;
-   vl.varying[0].slot = 1;
-   vl.varying[0].interp = RAST_INTERP_COLOR;
-   vl.varying[0].usage_mask = 0xf;
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0xf);
    rast_set_vertex_layout(t.rc, &vl);
 
    /* in range: no counter moves */
    tri(100, 10, 400, 10, 100, 60, 0.5f, 0.5f);
    CHECK(t_sat_total(rast_get_stats(t.rc)) == 0, "in-range triangle counted a saturation");
-   CHECK(t.count > 0 && maxx >= 390 && maxx <= 399, "in-range triangle: maxx %d", maxx);
+   CHECK(t.count > 0 && t.maxx >= 390 && t.maxx <= 399, "in-range triangle: maxx %d", t.maxx);
 
    /* X far beyond +2048: clamps to the largest X, the triangle reaches the
     * right edge of the target and never wraps to the left */
    uint64_t h0 = hi(RAST_REG_XY);
    tri(100, 10, 5000, 10, 100, 60, 0.5f, 0.5f);
    CHECK(hi(RAST_REG_XY) == h0 + 1, "X high not counted");
-   CHECK(t.count > 0 && minx >= 100 && maxx >= 2000 && maxx <= 2047, "X high: x range %d..%d", minx, maxx);
+   CHECK(t.count > 0 && t.minx >= 100 && t.maxx >= 2000 && t.maxx <= 2047,
+         "X high: x range %d..%d", t.minx, t.maxx);
 
    /* X and Y far below -2048: clamp low */
    uint64_t l0 = lo(RAST_REG_XY);
    tri(-1e6f, -1e6f, 300, 20, 20, 300, 0.5f, 0.5f);
    CHECK(lo(RAST_REG_XY) == l0 + 2, "X/Y low not counted");
-   CHECK(t.count > 0 && minx == 0 && miny == 0 && maxx <= 300 && maxy <= 300,
-         "X low: box %d..%d x %d..%d", minx, maxx, miny, maxy);
+   CHECK(t.count > 0 && t.minx == 0 && t.miny == 0 && t.maxx <= 300 && t.maxy <= 300,
+         "X low: box %d..%d x %d..%d", t.minx, t.maxx, t.miny, t.maxy);
 
    /* Y far beyond: the triangle ends at the bottom of the target */
    h0 = hi(RAST_REG_XY);
    tri(10, 1000, 60, 1000, 30, 1e9f, 0.5f, 0.5f);
-   CHECK(hi(RAST_REG_XY) == h0 + 1 && maxy >= 2000 && maxy <= 2047 && miny == 1000, "Y high: %d..%d", miny, maxy);
+   CHECK(hi(RAST_REG_XY) == h0 + 1 && t.maxy >= 2000 && t.maxy <= 2047 && t.miny == 1000,
+         "Y high: %d..%d", t.miny, t.maxy);
 
    /* an edge too flat for the dx/dy register (slope beyond 2048 pixels per
     * scan line, walked over two scan lines) */
    uint64_t d0 = hi(RAST_REG_DXDY) + lo(RAST_REG_DXDY);
    tri(-2000, 100.2f, 2000, 101.9f, -2000, 103, 0.5f, 0.5f);
    CHECK(hi(RAST_REG_DXDY) + lo(RAST_REG_DXDY) > d0, "slope saturation not counted");
-   CHECK(t.dups == 0 && t.badquad == 0 && miny >= 100 && maxy <= 102,
-         "slope saturation: rows %d..%d", miny, maxy);
+   CHECK(t.dups == 0 && t.badquad == 0 && t.miny >= 100 && t.maxy <= 102,
+         "slope saturation: rows %d..%d", t.miny, t.maxy);
 
    /* Z above full scale: the register holds its largest value, read as a
     * depth just above 1, never as a small or negative depth */
@@ -127,7 +117,7 @@ int main(void)
          { { 11, 10, 0.5f, 1 }, { 1.0f, 1, 1, 1 } },
          { { 10, 400, 0.5f, 1 }, { -1.0f, 1, 1, 1 } },
       };
-      reset_box();
+      reset_ranges();
       t_begin(&t);
       t_tri(t.rc, v[0], v[1], v[2]);
       /* inside, colour runs from 1 down to -1: no saturation needed */
@@ -151,7 +141,7 @@ int main(void)
                v[k][0][c] = bad[b];
                const uint64_t n0 = rast_get_stats(t.rc)->nonfinite;
                const uint64_t s0 = t_sat_total(rast_get_stats(t.rc));
-               reset_box();
+               reset_ranges();
                t_begin(&t);
                t_tri(t.rc, v[0], v[1], v[2]);
                t_line(t.rc, v[k], v[(k + 1) % 3]);
@@ -176,9 +166,10 @@ int main(void)
    t.hook = hook;
    rast_set_vertex_layout(t.rc, &vl);
    tri(100, 10, 5000, 10, 100, 60, 0.5f, 0.5f);
-   CHECK(t_sat_total(rast_get_stats(t.rc)) == 0 && maxx == 2047, "wide: 5000 in range, clipped by the target");
+   CHECK(t_sat_total(rast_get_stats(t.rc)) == 0 && t.maxx == 2047,
+         "wide: 5000 in range, clipped by the target");
    tri(100, 10, 40000, 10, 100, 60, 0.5f, 0.5f);
-   CHECK(hi(RAST_REG_XY) == 1 && maxx == 2047 && minx >= 100, "wide: 40000 clamps");
+   CHECK(hi(RAST_REG_XY) == 1 && t.maxx == 2047 && t.minx >= 100, "wide: 40000 clamps");
    t_fini(&t);
    return t_summary("saturation");
 }

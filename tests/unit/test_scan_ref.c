@@ -260,13 +260,7 @@ int main(int argc, char **argv)
       const uint64_t n_tris = pi < 2 ? per_cfg : (per_cfg + 3) / 4;
       for (unsigned cfg = 0; cfg < 8; cfg++) {
          bool half = cfg & 1, bottom = (cfg >> 1) & 1, scissor = (cfg >> 2) & 1;
-         struct rast_raster_state rs;
-         memset(&rs, 0, sizeof(rs));
-         rs.half_pixel_center = half;
-         rs.bottom_edge_rule = bottom;
-         rs.scissor = scissor;
-         rs.line_width = 1;
-         rast_set_raster_state(t.rc, &rs);
+         t_raster_scissor(&t, half, bottom, scissor);
          struct rast_scissor clip = { 0, 0, TW, TH };
          for (uint64_t n = 0; n < n_tris; n++) {
             if (scissor && n % 64 == 0) {

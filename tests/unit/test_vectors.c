@@ -123,15 +123,9 @@ int main(void)
    CHECK(mkdtemp(dir) != NULL, "cannot make a temporary directory");
    struct tctx t;
    t_init(&t, "seed", W, H);
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 3;
-   vl.pos_slot = 0;
-   vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_COLOR,
-                                          .usage_mask = 0xf };
-   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_PERSPECTIVE,
-                                          .usage_mask = 0x3 };
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0xf);
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x3);
    rast_set_vertex_layout(t.rc, &vl);
    char err[256];
    CHECK(rast_vectors_open(t.rc, dir, 0, ~0ul, RAST_VEC_SCAN | RAST_VEC_TEX, err, sizeof(err)),

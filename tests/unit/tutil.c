@@ -31,6 +31,10 @@ unsigned t_shade_record(void *ctx, const struct rast_quad *q, struct rast_shaded
       if (!(q->mask & (1u << i)))
          continue;
       int x = q->x + (int)(i & 1), y = q->y + (int)(i >> 1);
+      if (x < t->minx) t->minx = x;
+      if (x > t->maxx) t->maxx = x;
+      if (y < t->miny) t->miny = y;
+      if (y > t->maxy) t->maxy = y;
       if (x < 0 || y < 0 || x >= t->w || y >= t->h) {
          t->outside++;
          continue;
@@ -72,10 +76,7 @@ void t_init(struct tctx *t, const char *profile, int w, int h)
    fb.height = (unsigned)h;
    rast_set_framebuffer(t->rc, &fb);
 
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof(vl));
-   vl.vertex_size = 1;
-   vl.pos_slot = 0;
+   struct rast_vertex_layout vl = t_layout_pos();
    rast_set_vertex_layout(t->rc, &vl);
 
    struct rast_shader fs;
@@ -90,10 +91,16 @@ void t_init(struct tctx *t, const char *profile, int w, int h)
 
 void t_raster(struct tctx *t, bool half_pixel, bool bottom_rule)
 {
+   t_raster_scissor(t, half_pixel, bottom_rule, false);
+}
+
+void t_raster_scissor(struct tctx *t, bool half_pixel, bool bottom_rule, bool scissor)
+{
    struct rast_raster_state rs;
    memset(&rs, 0, sizeof(rs));
    rs.half_pixel_center = half_pixel;
    rs.bottom_edge_rule = bottom_rule;
+   rs.scissor = scissor;
    rs.cull = RAST_CULL_NONE;
    rs.line_width = 1.0f;
    rast_set_raster_state(t->rc, &rs);
@@ -111,6 +118,8 @@ void t_begin(struct tctx *t)
 {
    t->id++;
    t->count = t->dups = t->outside = t->badquad = 0;
+   t->minx = t->miny = 1 << 30;
+   t->maxx = t->maxy = -(1 << 30);
 }
 
 uint64_t t_sat_class(const struct rast_stats *s, enum rast_reg_class c)
@@ -218,9 +227,7 @@ void t_store_rgba8(uint8_t *dst, unsigned n, const float (*rgba)[4])
 
 void t_plain_state(struct rast_context *rc)
 {
-   struct rast_vertex_layout vl;
-   memset(&vl, 0, sizeof vl);
-   vl.vertex_size = 1;
+   struct rast_vertex_layout vl = t_layout_pos();
    rast_set_vertex_layout(rc, &vl);
    struct rast_raster_state rs;
    memset(&rs, 0, sizeof rs);
@@ -272,15 +279,29 @@ void t_bind_rgba8_z24s8_samples(struct rast_context *rc, uint8_t *color, uint32_
    rast_set_framebuffer(rc, &fb);
 }
 
-void t_layout_persp_color(struct rast_context *rc)
+struct rast_vertex_layout t_layout_pos(void)
 {
    struct rast_vertex_layout vl;
    memset(&vl, 0, sizeof(vl));
-   vl.vertex_size = T_PERSP_COLOR_SLOTS;
+   vl.vertex_size = 1;
    vl.pos_slot = 0;
-   vl.num_varyings = 2;
-   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_PERSPECTIVE, .usage_mask = 0x3 };
-   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_COLOR, .usage_mask = 0xf };
+   return vl;
+}
+
+struct rast_varying *t_layout_add(struct rast_vertex_layout *vl, enum rast_interp interp,
+                                  unsigned usage_mask)
+{
+   struct rast_varying *v = &vl->varying[vl->num_varyings++];
+   *v = (struct rast_varying){ .slot = (uint8_t)vl->vertex_size++, .interp = (uint8_t)interp,
+                               .usage_mask = (uint8_t)usage_mask };
+   return v;
+}
+
+void t_layout_persp_color(struct rast_context *rc)
+{
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x3);
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0xf);
    rast_set_vertex_layout(rc, &vl);
 }
 

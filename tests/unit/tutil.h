@@ -48,6 +48,7 @@ struct tctx {
    bool counting;
    uint32_t id;
    uint64_t count, dups, outside, badquad;
+   int minx, maxx, miny, maxy;   /* the box of the covered pixels, inside or not */
    t_quad_hook hook;
    void *user;
 };
@@ -62,6 +63,13 @@ void t_bind_rgba8_z24s8(struct rast_context *rc, uint8_t *color, uint32_t *zs, i
  * of w x h pixels each, one after the other, in both buffers). */
 void t_bind_rgba8_z24s8_samples(struct rast_context *rc, uint8_t *color, uint32_t *zs, int w,
                                 int h, unsigned samples);
+/* A vertex layout built a varying at a time: t_layout_pos, the position
+ * alone in slot 0; t_layout_add, a varying in the next slot, interpolated
+ * as interp, the components in usage_mask read (returned, for the fields
+ * of the rarer cases). */
+struct rast_vertex_layout t_layout_pos(void);
+struct rast_varying *t_layout_add(struct rast_vertex_layout *vl, enum rast_interp interp,
+                                  unsigned usage_mask);
 /* Vertices of three slots: position, a PERSPECTIVE varying (x, y read) and
  * a COLOR varying (all four read). */
 #define T_PERSP_COLOR_SLOTS 3
@@ -77,7 +85,11 @@ void t_depth_count_hits(struct rast_context *rc, enum rast_func func);
 
 void t_init(struct tctx *t, const char *profile, int w, int h);
 void t_fini(struct tctx *t);
+/* The raster state: GL's pixel centres or not, the bottom edge rule or the
+ * top one, no culling, 1-pixel lines; t_raster_scissor: the scissor test
+ * on or off. */
 void t_raster(struct tctx *t, bool half_pixel, bool bottom_rule);
+void t_raster_scissor(struct tctx *t, bool half_pixel, bool bottom_rule, bool scissor);
 void t_begin(struct tctx *t);      /* a new primitive id, counters zeroed */
 uint64_t t_sat_total(const struct rast_stats *s);
 uint64_t t_sat_class(const struct rast_stats *s, enum rast_reg_class c);
