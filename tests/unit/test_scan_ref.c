@@ -218,29 +218,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
    return 0;
 }
 #else
-static uint64_t arg_u64(const char *opt, const char *v)
-{
-   char *end;
-   unsigned long long n = v ? strtoull(v, &end, 10) : 0;
-   if (!v || !*v || *end || n == 0) {
-      fprintf(stderr, "test_scan_ref: %s needs a positive integer\n", opt);
-      exit(2);
-   }
-   return n;
-}
 
 int main(int argc, char **argv)
 {
    uint64_t n_total = (uint64_t)UNIT_TRIANGLES * 22 / 16, seed = 12345;
-   for (int i = 1; i < argc; i++) {
-      if (!strcmp(argv[i], "--triangles"))
-         n_total = arg_u64(argv[i], argv[i + 1]), i++;
-      else if (!strcmp(argv[i], "--seed"))
-         seed = arg_u64(argv[i], argv[i + 1]), i++;
-      else {
-         fprintf(stderr, "usage: test_scan_ref [--triangles N] [--seed S]\n");
-         return 2;
-      }
+   t_count_seed_args(argc, argv, "test_scan_ref", "triangles", UINT64_MAX, &n_total, &seed);
+   if (n_total == 0 || seed == 0) {
+      fprintf(stderr, "test_scan_ref: --triangles and --seed take positive integers\n");
+      return 2;
    }
    /* the named profiles and precision settings of X/Y (docs/profiles.md):
     * the exact walk is exact on any grid */

@@ -7,6 +7,7 @@
  * polylines.  Vertices are snapped to coarse subpixel grids so that many
  * pixel centres lie exactly on shared edges and vertices.
  */
+#include <getopt.h>
 #include <math.h>
 #include <string.h>
 #include "tutil.h"
@@ -223,10 +224,20 @@ static void run_meshes(const char *spec)
  * as key=value, for ./fixpipe sweep; nothing checked. */
 int main(int argc, char **argv)
 {
-   t_seed(777);
-   if (argc > 2 && !strcmp(argv[1], "--measure")) {
+   static const struct option opts[] = {
+      { "measure", no_argument, NULL, 'm' },
+      { NULL, 0, NULL, 0 },
+   };
+   int c;
+   while ((c = getopt_long(argc, argv, "", opts, NULL)) == 'm')
       measure_only = true;
-      for (int i = 2; i < argc; i++) {
+   if (c != -1 || measure_only != (optind < argc)) {
+      fprintf(stderr, "usage: test_watertight [--measure SPEC...]\n");
+      return 2;
+   }
+   t_seed(777);
+   if (measure_only) {
+      for (int i = optind; i < argc; i++) {
          run_meshes(argv[i]);
          printf("profile=%s inside=%llu holes=%llu twice=%llu\n", t.prof->name,
                 (unsigned long long)literal_inside, (unsigned long long)literal_holes,

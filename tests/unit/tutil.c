@@ -1,3 +1,4 @@
+#include <getopt.h>
 #include <string.h>
 #include "tutil.h"
 
@@ -305,19 +306,36 @@ void t_layout_persp_color(struct rast_context *rc)
    rast_set_vertex_layout(rc, &vl);
 }
 
+void t_count_seed_args(int argc, char **argv, const char *name, const char *count_name,
+                       uint64_t max_count, uint64_t *count, uint64_t *seed)
+{
+   const struct option opts[] = {
+      { count_name, required_argument, NULL, 'n' },
+      { "seed", required_argument, NULL, 's' },
+      { NULL, 0, NULL, 0 },
+   };
+   int c;
+   while ((c = getopt_long(argc, argv, "", opts, NULL)) != -1) {
+      if (c == '?')
+         break;
+      char *end = NULL;
+      const unsigned long long v = strtoull(optarg, &end, 0);
+      if (end == optarg || *end || (c == 'n' && v > max_count))
+         break;
+      if (c == 'n')
+         *count = (uint64_t)v;
+      else
+         *seed = (uint64_t)v;
+   }
+   if (c != -1 || optind < argc) {
+      fprintf(stderr, "usage: %s [--%s N] [--seed S]\n", name, count_name);
+      exit(2);
+   }
+}
+
 void t_scene_args(int argc, char **argv, const char *name, unsigned *scenes, uint64_t *seed)
 {
-   for (int i = 1; i < argc; i += 2) {
-      char *end = NULL;
-      const unsigned long long v = i + 1 < argc ? strtoull(argv[i + 1], &end, 0) : 0;
-      const bool number = end && end != argv[i + 1] && !*end;
-      if (number && !strcmp(argv[i], "--scenes") && v <= 0xffffffffull) {
-         *scenes = (unsigned)v;
-      } else if (number && !strcmp(argv[i], "--seed")) {
-         *seed = (uint64_t)v;
-      } else {
-         fprintf(stderr, "usage: %s [--scenes N] [--seed S]\n", name);
-         exit(2);
-      }
-   }
+   uint64_t n = *scenes;
+   t_count_seed_args(argc, argv, name, "scenes", 0xffffffffu, &n, seed);
+   *scenes = (unsigned)n;
 }

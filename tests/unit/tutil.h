@@ -96,9 +96,13 @@ uint64_t t_sat_class(const struct rast_stats *s, enum rast_reg_class c);
 double t_rand(void);               /* [0, 1) */
 void t_seed(uint64_t s);
 int t_summary(const char *name);
-/* "[--scenes N] [--seed S]" of a scene test's command line into *scenes
- * and *seed (left as they are when absent); anything else: its usage on
- * stderr and exit(2). */
+/* "[--COUNT N] [--seed S]" of a test's command line (COUNT: count_name,
+ * e.g. "triangles"), numbers as strtoull reads them (0x: hex), N at most
+ * max_count, into *count and *seed (left as they are when absent);
+ * anything else: the test's usage on stderr and exit(2). */
+void t_count_seed_args(int argc, char **argv, const char *name, const char *count_name,
+                       uint64_t max_count, uint64_t *count, uint64_t *seed);
+/* The same for a scene test: "[--scenes N] [--seed S]". */
 void t_scene_args(int argc, char **argv, const char *name, unsigned *scenes, uint64_t *seed);
 
 /* The reference: exact 64-bit edge functions on the fixed-point vertices
