@@ -13,21 +13,14 @@ import subprocess
 import sys
 import tempfile
 
+from tally import Tally
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 RUNNER = os.path.join(REPO, "deqp-lists", "run.py")
 
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print(f"  ok   {name}")
-    else:
-        failed += 1
-        print(f"  FAIL {name}" + (f"\n{detail}" if detail else ""))
+T = Tally(indent="  ")
+check = T.check
 
 
 G = "dEQP-GLES2.functional.fake"
@@ -210,17 +203,5 @@ def test_sweep():
               and d["groups"]["functional.fake.e"]["seed"] == [1, 1], d["groups"])
 
 
-def main():
-    for name, fn in sorted(globals().items()):
-        if name.startswith("test_"):
-            print(f"{name}:")
-            try:
-                fn()
-            except Exception as e:  # a broken case is a failure, not the end of the suite
-                check(name, False, f"{type(e).__name__}: {e}")
-    print(f"harness-deqp: {passed} passed, {failed} failed")
-    return 1 if failed else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(T.run_tests(globals(), "harness-deqp"))

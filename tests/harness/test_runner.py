@@ -11,22 +11,15 @@ import subprocess
 import sys
 import tempfile
 
+from tally import Tally
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 RUNNER = os.path.join(REPO, "piglit-lists", "run.py")
 FAKE = os.path.join(HERE, "fake-piglit")
 
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print(f"  ok   {name}")
-    else:
-        failed += 1
-        print(f"  FAIL {name}" + (f"\n{detail}" if detail else ""))
+T = Tally(indent="  ")
+check = T.check
 
 
 class Case:
@@ -284,17 +277,5 @@ def test_checked_in_expectations():
             check("fixpipe-fails.txt: no BUG line", not bugs, "\n".join(bugs))
 
 
-def main():
-    for name, fn in sorted(globals().items()):
-        if name.startswith("test_"):
-            print(f"{name}:")
-            try:
-                fn()
-            except Exception as e:  # a broken case is a failure, not the end of the suite
-                check(name, False, f"{type(e).__name__}: {e}")
-    print(f"harness: {passed} passed, {failed} failed")
-    return 1 if failed else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(T.run_tests(globals(), "harness"))

@@ -11,23 +11,16 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [HERE, os.path.join(os.path.dirname(HERE), "harness")]
 from pngs import base, plant, write_png  # noqa: E402
+from tally import Tally  # noqa: E402
 
 TOOL = sys.argv[1]
 W, H = 64, 48
 N = W * H
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print(f"ok   {name}")
-    else:
-        failed += 1
-        print(f"FAIL {name} {detail}")
+T = Tally()
+check = T.check
 
 
 def run(a, b, *opts):
@@ -126,8 +119,7 @@ def main():
             ok = (w, h) == (W, H) or (w == W and h > H)
         check("heat map written", ok)
 
-    print(f"compare: {passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return T.summary("compare")
 
 
 if __name__ == "__main__":

@@ -10,24 +10,17 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [HERE, os.path.join(os.path.dirname(HERE), "harness")]
 from pngs import base, plant, write_png  # noqa: E402
+from tally import Tally  # noqa: E402
 
 FP_TRACE, FP_COMPARE = sys.argv[1], sys.argv[2]
 # fp-trace finds fp-compare as BUILD/tools/fp-compare.
 BUILD = os.path.dirname(os.path.dirname(os.path.abspath(FP_COMPARE)))
 W, H = 80, 60
-passed = failed = 0
-
-
-def check(name, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-        print(f"ok   {name}")
-    else:
-        failed += 1
-        print(f"FAIL {name}\n{detail}")
+T = Tally()
+check = T.check
 
 
 def frames(d, changes_per_frame):
@@ -98,8 +91,7 @@ def main():
         rc, out = judge(tmp, "unlisted", os.path.join(tmp, "ref"), driver="softpipe")
         check("no softpipe threshold: exit 0", rc == 0, out)
 
-    print(f"thresholds: {passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return T.summary("thresholds")
 
 
 if __name__ == "__main__":
