@@ -449,8 +449,7 @@ static GLuint point_program(void)
    static const char *fs =
       "precision mediump float;\nuniform vec4 u_color;\n"
       "void main() { gl_FragColor = u_color; }\n";
-   static const char *const attr[] = { "a_pos", "a_size", NULL };
-   return fp_gl_program(vs, fs, attr);
+   return e2e_program(vs, fs, "a_size");
 }
 
 /* gl_PointSize NaN, +-inf, 0, -1, 1e-30, 1e30 and finite sizes: GL clamps a

@@ -31,16 +31,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int errors;
-
-static void check(bool ok, const char *what)
-{
-   if (!ok) {
-      printf("error: %s\n", what);
-      errors++;
-   }
-}
-
 static bool has_ext(const char *name)
 {
    const char *e = (const char *)glGetString(GL_EXTENSIONS);
@@ -77,10 +67,7 @@ static GLuint cube_texture(GLenum min, GLenum mag, GLenum wrap, bool mips)
          glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, l, GL_RGBA, s, s, 0, GL_RGBA,
                       GL_UNSIGNED_BYTE, p);
       }
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, (GLint)min);
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, (GLint)mag);
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, (GLint)wrap);
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, (GLint)wrap);
+   e2e_tex_params(GL_TEXTURE_CUBE_MAP, min, mag, wrap, wrap);
    return t;
 }
 
@@ -101,13 +88,12 @@ static GLuint vertex_texture_program(const char *vs, const char *attr1)
    static const char *fs =
       "precision mediump float;\nvarying vec4 v_col;\n"
       "void main() { gl_FragColor = v_col; }\n";
-   const char *const attr[] = { "a_pos", attr1, NULL };
    GLint units = 0;
    glGetIntegerv(GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS, &units);
-   check(units >= 1, "no vertex texture units");
+   e2e_check(units >= 1, "no vertex texture units");
    if (units < 1)
       return 0;
-   GLuint prog = fp_gl_program(vs, fs, attr);
+   GLuint prog = e2e_program(vs, fs, attr1);
    glUseProgram(prog);
    glUniform1i(glGetUniformLocation(prog, "u_tex"), 0);
    return prog;
@@ -189,29 +175,6 @@ static void vs_cube(int size)
    free(dir);
 }
 
-static GLuint mip_texture(GLenum min)
-{
-   GLuint t;
-   static unsigned char p[32 * 32 * 4];
-   glGenTextures(1, &t);
-   glBindTexture(GL_TEXTURE_2D, t);
-   for (int l = 0, s = 32; s >= 1; l++, s /= 2) {
-      for (int i = 0; i < s * s; i++) {
-         const int x = i % s, y = i / s;
-         p[i * 4 + 0] = (unsigned char)(l * 40);
-         p[i * 4 + 1] = (unsigned char)(255 - l * 40);
-         p[i * 4 + 2] = (unsigned char)(((x ^ y) & 1) ? 200 : 40);
-         p[i * 4 + 3] = 255;
-      }
-      glTexImage2D(GL_TEXTURE_2D, l, GL_RGBA, s, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, p);
-   }
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-   return t;
-}
-
 static void proj_mip(int size)
 {
    /* in the vertex shader, one 1-pixel point per pixel: the implicit level
@@ -237,7 +200,8 @@ static void proj_mip(int size)
       fp_die("out of memory");
    uint32_t rng = 999;
    for (int b = 0; b < 6; b++) {
-      GLuint t = mip_texture(b < 3 ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_NEAREST);
+      GLuint t = e2e_mip_texture(32, 40, 200, 40, b < 3 ? GL_NEAREST_MIPMAP_NEAREST
+                                                        : GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST);
       glUniform1i(form, b % 3);
       int n = 0;
       for (int y = b * rows; y < (b + 1) * rows; y++)
@@ -271,8 +235,7 @@ static void points_viewport(int size)
    static const char *fs =
       "precision mediump float;\nvarying vec4 v_col;\n"
       "void main() { gl_FragColor = v_col; }\n";
-   static const char *const attr[] = { "a_pos", "a_col", NULL };
-   GLuint prog = fp_gl_program(vs, fs, attr);
+   GLuint prog = e2e_program(vs, fs, "a_col");
    glUseProgram(prog);
    /* a viewport in the middle, a quarter of the target's area, and one
     * at the target's corner; points along the viewport's edges */
@@ -323,7 +286,7 @@ static void half_float_rgb(struct fp_gl *g, int size)
    /* EXT_color_buffer_half_float: RGB16F is colour-renderable (Mesa's
     * rule for every driver), so the framebuffer is complete and must draw */
    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-   check(status == GL_FRAMEBUFFER_COMPLETE, "RGB half-float framebuffer incomplete");
+   e2e_check(status == GL_FRAMEBUFFER_COMPLETE, "RGB half-float framebuffer incomplete");
    if (status == GL_FRAMEBUFFER_COMPLETE) {
       glViewport(0, 0, size, size);
       glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
@@ -339,9 +302,7 @@ static void half_float_rgb(struct fp_gl *g, int size)
    glClearColor(0, 0, 0, 1);
    glClear(GL_COLOR_BUFFER_BIT);
    glUseProgram(e2e_texture_program());
-   static const float quad[16] = { -1, -1, 0, 1, 1, -1, 0, 1, -1, 1, 0, 1, 1, 1, 0, 1 };
-   static const float uv[8] = { 0, 0, 1, 0, 0, 1, 1, 1 };
-   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, quad, uv, 2);
+   e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
    glDeleteFramebuffers(1, &fbo);
    glDeleteTextures(1, &t);
    printf("stat: rgb16f_status=0x%x\n", status);
@@ -349,7 +310,7 @@ static void half_float_rgb(struct fp_gl *g, int size)
 
 static void clip_control(int size)
 {
-   check(has_ext("GL_EXT_clip_control"), "GL_EXT_clip_control is not exposed");
+   e2e_check(has_ext("GL_EXT_clip_control"), "GL_EXT_clip_control is not exposed");
    PFNGLCLIPCONTROLEXTPROC clip = (PFNGLCLIPCONTROLEXTPROC)eglGetProcAddress("glClipControlEXT");
    if (!has_ext("GL_EXT_clip_control") || !clip)
       return;
@@ -414,7 +375,7 @@ int main(int argc, char **argv)
    else
       fp_die("--case: vs-cube, proj-mip, points-viewport, half-float-rgb or clip-control");
    fp_gl_check(c);
-   printf("stat: case=%s self_check_errors=%d\n", c, errors);
+   printf("stat: case=%s self_check_errors=%d\n", c, e2e_errors);
    e2e_end(&g, &a, NULL);
    return 0;
 }

@@ -62,47 +62,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int errors;
-
-static void check(bool ok, const char *what)
-{
-   if (!ok) {
-      printf("error: %s\n", what);
-      errors++;
-   }
-}
-
-static const char *vs =
-   "#version 310 es\n"
-   "in vec4 a_pos;\n"
-   "in vec2 a_uv;\n"
-   "out vec2 v_uv;\n"
-   "void main() { v_uv = a_uv; gl_Position = a_pos; }\n";
-
-static GLuint program(const char *fs)
-{
-   static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   return fp_gl_program(vs, fs, attr);
-}
-
 /* A program drawn in bands (uniform u_band, whose location it returns),
  * its three samplers on texture units 0, 1, 2; in use. */
 static GLint band_program(const char *fs, const char *const samplers[3])
 {
-   GLuint p = program(fs);
+   GLuint p = e2e_uv_program_es31(fs);
    glUseProgram(p);
    for (int i = 0; i < 3; i++)
       glUniform1i(glGetUniformLocation(p, samplers[i]), i);
    return glGetUniformLocation(p, "u_band");
-}
-
-/* A rectangle of clip space, texture coordinates u0..u1 over it. */
-static void draw_rect(float x0, float y0, float x1, float y1, float u0, float v0, float u1,
-                      float v1)
-{
-   const float pos[] = { x0, y0, 0, 1, x1, y0, 0, 1, x0, y1, 0, 1, x1, y1, 0, 1 };
-   const float uv[] = { u0, v0, u1, v0, u0, v1, u1, v1 };
-   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, uv, 2);
 }
 
 /* RGBA8 words as a size x size NEAREST texture over the whole target. */
@@ -115,7 +83,7 @@ static void show_words(const uint32_t *words, int size)
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
    glUseProgram(e2e_texture_program());
-   draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+   e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
    glDeleteTextures(1, &tex);
 }
 
@@ -162,13 +130,13 @@ static void case_compute(int size)
    int wrong = 0;
    for (int k = 0; got && k < n; k++)
       wrong += got[k] != want[k];
-   check(got && !wrong, "storage buffer words differ from the CPU's");
+   e2e_check(got && !wrong, "storage buffer words differ from the CPU's");
    if (got)
       memcpy(in, got, (size_t)n * 4);
    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
    const uint32_t *count = glMapBufferRange(GL_ATOMIC_COUNTER_BUFFER, 0, 4, GL_MAP_READ_BIT);
    printf("stat: wrong_words=%d odd=%u counter=%u\n", wrong, odd, count ? *count : 0);
-   check(count && *count == odd, "the atomic counter is not the number of odd words");
+   e2e_check(count && *count == odd, "the atomic counter is not the number of odd words");
    glUnmapBuffer(GL_ATOMIC_COUNTER_BUFFER);
    for (int k = 0; k < n; k++)
       in[k] |= 0xff000000u;   /* opaque */
@@ -290,10 +258,10 @@ static void case_shared(int size)
       wrong[k % 4] += got[k] != want[k];
    printf("stat: wrong_vec4=%d wrong_mat3=%d wrong_struct=%d wrong_shared_atomics=%d\n",
           wrong[0], wrong[1], wrong[2], wrong[3]);
-   check(got && !wrong[0], "shared vec4 reads differ from the CPU's");
-   check(got && !wrong[1], "shared mat3 reads differ from the CPU's");
-   check(got && !wrong[2], "shared struct reads differ from the CPU's");
-   check(got && !wrong[3], "shared atomics differ from the CPU's");
+   e2e_check(got && !wrong[0], "shared vec4 reads differ from the CPU's");
+   e2e_check(got && !wrong[1], "shared mat3 reads differ from the CPU's");
+   e2e_check(got && !wrong[2], "shared struct reads differ from the CPU's");
+   e2e_check(got && !wrong[3], "shared atomics differ from the CPU's");
    /* the words drawn as a texture, their low bytes */
    uint32_t *px = calloc((size_t)size * size, 4);
    if (!px)
@@ -315,7 +283,7 @@ static void case_shared(int size)
    }
    bad_at += !a;
    printf("stat: wrong_ssbo_atomics=%d\n", bad_at);
-   check(a && !bad_at, "SSBO atomics differ from the CPU's");
+   e2e_check(a && !bad_at, "SSBO atomics differ from the CPU's");
    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
    show_words(px, size);
    glDeleteBuffers(2, buf);
@@ -379,11 +347,11 @@ static void case_image(int size)
    glDeleteFramebuffers(1, &fbo);
    printf("stat: sums=%u,%u,%u,%u\n", got[0], got[4], got[8], got[12]);
    for (int c = 0; c < 4; c++)
-      check(got[4 * c] == want[c], "imageAtomicAdd sums differ from the CPU's");
+      e2e_check(got[4 * c] == want[c], "imageAtomicAdd sums differ from the CPU's");
 
    glBindTexture(GL_TEXTURE_2D, tex[1]);
    glUseProgram(e2e_texture_program());
-   draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+   e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
    glDeleteTextures(3, tex);
    free(src);
 }
@@ -425,27 +393,18 @@ static void case_gather(int size)
          layer[k] = e2e_rand(&rng);
       glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, l, W, W, 1, GL_RGBA, GL_UNSIGNED_BYTE, layer);
    }
-   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+   e2e_tex_params(GL_TEXTURE_2D_ARRAY, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_REPEAT);
    glActiveTexture(GL_TEXTURE1);
    glBindTexture(GL_TEXTURE_2D, tex[1]);
    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, W, W, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                 depth);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+   e2e_tex_params(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
    glActiveTexture(GL_TEXTURE0);
    glBindTexture(GL_TEXTURE_2D, tex[0]);
    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, W, W, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
+   e2e_tex_params(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_MIRRORED_REPEAT);
    static const char *const units[] = { "u_tex", "u_depth", "u_arr" };
    const GLint band = band_program(fs, units);
    /* bands of a quarter each, edges on the sub-pixel grid (both drivers
@@ -454,8 +413,8 @@ static void case_gather(int size)
    const int edge[5] = { 0, size / 4, size / 2, 3 * size / 4, size };
    for (int b = 0; b < 4; b++) {
       glUniform1i(band, b);
-      draw_rect(-1, e2e_ndc(edge[b] * E2E_SUB, size), 1, e2e_ndc(edge[b + 1] * E2E_SUB, size),
-                -0.31f, -0.27f, 1.43f, 1.38f);
+      e2e_draw_rect(-1, e2e_ndc(edge[b] * E2E_SUB, size), 1, e2e_ndc(edge[b + 1] * E2E_SUB, size),
+                    -0.31f, -0.27f, 1.43f, 1.38f);
    }
    glDeleteTextures(3, tex);
 }
@@ -510,10 +469,7 @@ static void case_gather_clamp(int size, bool ties)
          glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, H, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
       else
          glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, W, H, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      e2e_tex_params(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
    }
    /* the swizzled view: blue, one, zero, red */
    glActiveTexture(GL_TEXTURE1);
@@ -530,8 +486,8 @@ static void case_gather_clamp(int size, bool ties)
       /* edges on the sub-pixel grid; coordinates from below zero to past
        * one, so that both clamps act */
       const int y0 = ties ? 0 : size * b / BANDS, y1 = ties ? size : size * (b + 1) / BANDS;
-      draw_rect(-1, e2e_ndc(y0 * E2E_SUB, size), 1, e2e_ndc(y1 * E2E_SUB, size), -0.37f, -0.29f,
-                1.41f, 1.33f);
+      e2e_draw_rect(-1, e2e_ndc(y0 * E2E_SUB, size), 1, e2e_ndc(y1 * E2E_SUB, size), -0.37f, -0.29f,
+                    1.41f, 1.33f);
    }
    glDeleteTextures(3, tex);
 }
@@ -583,15 +539,15 @@ static void case_gather_cube(int size)
    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_SWIZZLE_R, GL_BLUE);
    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_SWIZZLE_B, GL_ALPHA);
    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_SWIZZLE_A, GL_RED);
-   GLuint p = program(fs);
+   GLuint p = e2e_uv_program_es31(fs);
    glUseProgram(p);
    glUniform1i(glGetUniformLocation(p, "u_cube"), 0);
    GLint comp = glGetUniformLocation(p, "u_comp");
    const int half = size / 2;
    glUniform1i(comp, 1);
-   draw_rect(-1, -1, e2e_ndc(half * E2E_SUB, size), 1, 0.0f, 0.0f, 0.5f, 1.0f);
+   e2e_draw_rect(-1, -1, e2e_ndc(half * E2E_SUB, size), 1, 0.0f, 0.0f, 0.5f, 1.0f);
    glUniform1i(comp, 3);
-   draw_rect(e2e_ndc(half * E2E_SUB, size), -1, 1, 1, 0.5f, 0.0f, 1.0f, 1.0f);
+   e2e_draw_rect(e2e_ndc(half * E2E_SUB, size), -1, 1, 1, 0.5f, 0.0f, 1.0f, 1.0f);
    glDeleteTextures(1, &tex);
 }
 
@@ -604,11 +560,11 @@ static void case_ms_fetch(int size)
    glGenFramebuffers(1, &fbo);
    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, tex, 0);
-   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
-         "the 4-sample texture FBO is not complete");
+   e2e_check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
+             "the 4-sample texture FBO is not complete");
    GLint samples = 0;
    glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &samples);
-   check(samples == 4, "the texture does not have 4 samples");
+   e2e_check(samples == 4, "the texture does not have 4 samples");
    glViewport(0, 0, size, size);
    glClearColor(0.1f, 0.2f, 0.3f, 1.0f);
    glClear(GL_COLOR_BUFFER_BIT);
@@ -643,8 +599,8 @@ static void case_stencil_tex(int size)
    glGenFramebuffers(1, &fbo);
    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, tex, 0);
-   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
-         "the depth/stencil texture FBO is not complete");
+   e2e_check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
+             "the depth/stencil texture FBO is not complete");
    glViewport(0, 0, size, size);
    glClearStencil(0);
    glClear(GL_STENCIL_BUFFER_BIT);
@@ -896,8 +852,8 @@ static void case_image_formats(int size)
       glDeleteTextures(2, tex);
    }
    printf("stat: formats=%d round_trips_differing=%d\n", tested, differ);
-   check(tested >= 28, "fewer image formats than GL ES 3.1 with GL_NV_image_formats name");
-   check(differ == 0, "a stored texel loads back as another value");
+   e2e_check(tested >= 28, "fewer image formats than GL ES 3.1 with GL_NV_image_formats name");
+   e2e_check(differ == 0, "a stored texel loads back as another value");
    show_words(words, size);
    free(words);
 }
@@ -948,7 +904,7 @@ static void case_ubo(int size)
    const GLuint block = glGetUniformBlockIndex(p, "Words");
    glGetActiveUniformBlockiv(p, block, GL_UNIFORM_BLOCK_DATA_SIZE, &bytes);
    printf("stat: strides=%d,%d,%d size=%d\n", stride[0], stride[1], stride[2], bytes);
-   check(bytes > 0 && bytes <= 4096, "the block's size");
+   e2e_check(bytes > 0 && bytes <= 4096, "the block's size");
    unsigned char data[4096] = { 0 };
    for (int i = 0; i < 67; i++) {
       const int32_t x = ubo_w(i);
@@ -985,7 +941,7 @@ static void case_ubo(int size)
    }
    free(px);
    printf("stat: wrong_channels=%d\n", wrong);
-   check(wrong == 0, "a value read from the uniform block is wrong");
+   e2e_check(wrong == 0, "a value read from the uniform block is wrong");
    glDeleteBuffers(1, &buf);
 }
 
@@ -1010,15 +966,10 @@ static int builtins_compute(void)
 int main(int argc, char **argv)
 {
    struct e2e_args a;
-   e2e_parse(&a, argc, argv, 64);
-   const char *c = e2e_opt(&a, "case", "");
    struct fp_gl g;
-   e2e_begin(&g, &a);
-   GLint major = 0, minor = 0;
-   glGetIntegerv(GL_MAJOR_VERSION, &major);
-   glGetIntegerv(GL_MINOR_VERSION, &minor);
-   check(major * 10 + minor >= 31, "the context is not GL ES 3.1 or later");
-   if (errors) {
+   e2e_start(&g, &a, argc, argv, 64);
+   const char *c = e2e_opt(&a, "case", "");
+   if (!e2e_check_es31()) {
       /* nothing more to try */
    } else if (!strcmp(c, "compute")) {
       case_compute(a.size);
@@ -1042,16 +993,16 @@ int main(int argc, char **argv)
    } else if (!strcmp(c, "builtins")) {
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
-      glUseProgram(program(fs_builtins));
-      draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+      glUseProgram(e2e_uv_program_es31(fs_builtins));
+      e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
       /* the corner pixels: green where every identity held */
       unsigned char px[4];
       glReadPixels(a.size / 2, a.size / 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
       printf("stat: pixel=%u,%u,%u\n", px[0], px[1], px[2]);
-      check(px[0] == 0 && px[1] == 255 && px[2] == 0, "a built-in broke its identity");
+      e2e_check(px[0] == 0 && px[1] == 255 && px[2] == 0, "a built-in broke its identity");
       const int broken = builtins_compute();
       printf("stat: compute_broken=%d\n", broken);
-      check(broken == 0, "a built-in broke its identity in the compute shader");
+      e2e_check(broken == 0, "a built-in broke its identity in the compute shader");
    } else if (!strcmp(c, "ms-fetch") || !strcmp(c, "stencil-tex")) {
       const bool ms = !strcmp(c, "ms-fetch");
       static const char *fs_ms =
@@ -1080,8 +1031,8 @@ int main(int argc, char **argv)
          case_stencil_tex(a.size);
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
-      glUseProgram(program(ms ? fs_ms : fs_st));
-      draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
+      glUseProgram(e2e_uv_program_es31(ms ? fs_ms : fs_st));
+      e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
       if (ms) {
          /* pixel (0, y) is half covered by the red strip: sample 0 (x 0.375)
           * is red, sample 1 (0.875) is not */
@@ -1090,15 +1041,15 @@ int main(int argc, char **argv)
          glReadPixels(0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px[1]);   /* sample 1 */
          printf("stat: s0=%u,%u,%u s1=%u,%u,%u\n", px[0][0], px[0][1], px[0][2], px[1][0],
                 px[1][1], px[1][2]);
-         check(px[0][0] == 255 && px[0][1] == 0 && px[0][2] == 0, "sample 0 of the edge pixel is not red");
-         check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0), "sample 1 of the edge pixel is red");
+         e2e_check(px[0][0] == 255 && px[0][1] == 0 && px[0][2] == 0,
+                   "sample 0 of the edge pixel is not red");
+         e2e_check(!(px[1][0] == 255 && px[1][1] == 0 && px[1][2] == 0),
+                   "sample 1 of the edge pixel is red");
       }
    } else {
       fp_die("--case: compute, shared, image, gather, gather-cube, gather-clamp, gather-ties, "
              "image-formats, ubo, builtins, ms-fetch or stencil-tex");
    }
-   check(glGetError() == GL_NO_ERROR, "a GL error");
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);   /* the one read back */
-   e2e_end(&g, &a, NULL);
-   return errors ? 1 : 0;
+   return e2e_finish(&g, &a, NULL);
 }

@@ -27,32 +27,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int errors;
 /* Pixels whose centre lies on a triangle's edge, where the fill rule alone
  * decides (left out of the comparison); NULL in the multisampled case,
  * whose samples are not at the centres. */
 static unsigned char *ties;
-
-static void check(bool ok, const char *what)
-{
-   if (!ok) {
-      printf("error: %s\n", what);
-      errors++;
-   }
-}
-
-static const char *vs =
-   "#version 300 es\n"
-   "in vec4 a_pos;\n"
-   "in vec4 a_color;\n"
-   "out vec4 v_color;\n"
-   "void main() { v_color = a_color; gl_Position = a_pos; }\n";
-
-static GLuint program(const char *fs)
-{
-   static const char *const attr[] = { "a_pos", "a_color", NULL };
-   return fp_gl_program(vs, fs, attr);
-}
 
 static GLuint fetch_program(const char *body)
 {
@@ -64,7 +42,7 @@ static GLuint fetch_program(const char *body)
             "in vec4 v_color;\n"
             "inout vec4 o_color;\n"
             "void main() { %s }\n", body);
-   return program(fs);
+   return e2e_color_program_es3(fs);
 }
 
 /* The fetched colour reaches the shader: last + (0.25, 0.5, 0, 0). */
@@ -83,7 +61,7 @@ static void self_check_fetch(int size)
    bool ok = true;
    for (int c = 0; c < 4; c++)
       ok = ok && abs((int)px[c] - want[c]) <= 2;
-   check(ok, "last + (0.25, 0.5, 0, 0) over (0.5, 0.25, 0.2, 1) is not (0.75, 0.75, 0.2, 1)");
+   e2e_check(ok, "last + (0.25, 0.5, 0, 0) over (0.5, 0.25, 0.2, 1) is not (0.75, 0.75, 0.2, 1)");
 }
 
 /* n triangles with vertices on the sub-pixel grid inside the target (both
@@ -136,7 +114,7 @@ static void scene_dualsrc(int size)
       "layout(location = 0, index = 0) out vec4 o_color;\n"
       "layout(location = 0, index = 1) out vec4 o_factor;\n"
       "void main() { o_color = v_color; o_factor = vec4(v_color.gbr * 0.8, 1.0); }\n";
-   glUseProgram(program(fs));
+   glUseProgram(e2e_color_program_es3(fs));
    glClearColor(0.2f, 0.4f, 0.6f, 1.0f);
    glClear(GL_COLOR_BUFFER_BIT);
    glEnable(GL_BLEND);
@@ -157,7 +135,7 @@ static void scene_advanced(int size)
       "void main() { o_color = v_color; }\n";
    static const GLenum eq[] = { GL_MULTIPLY_KHR, GL_SCREEN_KHR, GL_OVERLAY_KHR,
                                 GL_DIFFERENCE_KHR };
-   glUseProgram(program(fs));
+   glUseProgram(e2e_color_program_es3(fs));
    glClearColor(0.6f, 0.3f, 0.5f, 1.0f);
    glClear(GL_COLOR_BUFFER_BIT);
    glEnable(GL_BLEND);
@@ -171,10 +149,9 @@ static void scene_advanced(int size)
 int main(int argc, char **argv)
 {
    struct e2e_args a;
-   e2e_parse(&a, argc, argv, 64);
-   const char *c = e2e_opt(&a, "case", "");
    struct fp_gl g;
-   e2e_begin(&g, &a);
+   e2e_start(&g, &a, argc, argv, 64);
+   const char *c = e2e_opt(&a, "case", "");
    if (strcmp(c, "fetch-msaa")) {
       ties = calloc((size_t)a.size * (size_t)a.size, 4);
       if (!ties)
@@ -182,32 +159,32 @@ int main(int argc, char **argv)
    }
 
    if (!strcmp(c, "fetch") || !strcmp(c, "fetch-msaa")) {
-      check(e2e_has_extension("GL_EXT_shader_framebuffer_fetch"),
-            "GL_EXT_shader_framebuffer_fetch is not exposed");
-      if (!errors)
+      e2e_check(e2e_has_extension("GL_EXT_shader_framebuffer_fetch"),
+                "GL_EXT_shader_framebuffer_fetch is not exposed");
+      if (!e2e_errors)
          self_check_fetch(a.size);
-      if (!errors && !strcmp(c, "fetch")) {
+      if (!e2e_errors && !strcmp(c, "fetch")) {
          scene_fetch(false, a.size);
-      } else if (!errors) {
+      } else if (!e2e_errors) {
          struct e2e_msaa m;
-         errors += e2e_msaa_create(&m, a.size);
+         e2e_errors += e2e_msaa_create(&m, a.size);
          scene_fetch(true, a.size);
          e2e_msaa_resolve(&m, g.fbo);
       }
    } else if (!strcmp(c, "dualsrc")) {
-      check(e2e_has_extension("GL_EXT_blend_func_extended"), "GL_EXT_blend_func_extended is not exposed");
-      if (!errors)
+      e2e_check(e2e_has_extension("GL_EXT_blend_func_extended"),
+                "GL_EXT_blend_func_extended is not exposed");
+      if (!e2e_errors)
          scene_dualsrc(a.size);
    } else if (!strcmp(c, "advanced")) {
-      check(e2e_has_extension("GL_KHR_blend_equation_advanced"),
-            "GL_KHR_blend_equation_advanced is not exposed");
-      if (!errors)
+      e2e_check(e2e_has_extension("GL_KHR_blend_equation_advanced"),
+                "GL_KHR_blend_equation_advanced is not exposed");
+      if (!e2e_errors)
          scene_advanced(a.size);
    } else {
       fp_die("--case: fetch, fetch-msaa, dualsrc or advanced");
    }
-   check(glGetError() == GL_NO_ERROR, "a GL error");
-   e2e_end(&g, &a, ties);
+   const int status = e2e_finish(&g, &a, ties);
    free(ties);
-   return errors ? 1 : 0;
+   return status;
 }

@@ -23,39 +23,23 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int errors;
-
-static void check(bool ok, const char *what)
-{
-   if (!ok) {
-      printf("error: %s\n", what);
-      errors++;
-   }
-}
-
+/* The colour as it arrives. */
 static GLuint program(void)
 {
-   static const char *vs =
-      "#version 300 es\n"
-      "in vec4 a_pos;\n"
-      "in vec4 a_color;\n"
-      "out vec4 v_color;\n"
-      "void main() { v_color = a_color; gl_Position = a_pos; }\n";
    static const char *fs =
       "#version 300 es\n"
       "precision mediump float;\n"
       "in vec4 v_color;\n"
       "out vec4 o_color;\n"
       "void main() { o_color = v_color; }\n";
-   static const char *const attr[] = { "a_pos", "a_color", NULL };
-   return fp_gl_program(vs, fs, attr);
+   return e2e_color_program_es3(fs);
 }
 
 /* A white triangle on black: the resolve must hold partly covered pixels. */
 static void self_check(GLuint target, int size)
 {
    struct e2e_msaa m;
-   errors += e2e_msaa_create(&m, size);
+   e2e_errors += e2e_msaa_create(&m, size);
    glClearColor(0, 0, 0, 1);
    glClear(GL_COLOR_BUFFER_BIT);
    const float pos[] = { -0.9f, -0.8f, 0, 1, 0.85f, -0.3f, 0, 1, -0.2f, 0.9f, 0, 1 };
@@ -71,7 +55,7 @@ static void self_check(GLuint target, int size)
       partial += px[4 * i] > 8 && px[4 * i] < 247;
    free(px);
    printf("stat: partial=%d\n", partial);
-   check(partial > size / 2, "no partly covered pixels in the resolve: not multisampled");
+   e2e_check(partial > size / 2, "no partly covered pixels in the resolve: not multisampled");
    e2e_msaa_delete(&m);
    glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
@@ -150,15 +134,14 @@ static void scene_blend(int size)
 int main(int argc, char **argv)
 {
    struct e2e_args a;
-   e2e_parse(&a, argc, argv, 64);
-   const char *c = e2e_opt(&a, "case", "");
    struct fp_gl g;
-   e2e_begin(&g, &a);
+   e2e_start(&g, &a, argc, argv, 64);
+   const char *c = e2e_opt(&a, "case", "");
    glUseProgram(program());
    self_check(g.fbo, a.size);
 
    struct e2e_msaa m;
-   errors += e2e_msaa_create(&m, a.size);
+   e2e_errors += e2e_msaa_create(&m, a.size);
    if (!strcmp(c, "edges"))
       scene_edges(a.size);
    else if (!strcmp(c, "coverage"))
@@ -168,6 +151,5 @@ int main(int argc, char **argv)
    else
       fp_die("--case: edges, coverage or blend");
    e2e_msaa_resolve(&m, g.fbo);
-   e2e_end(&g, &a, NULL);
-   return errors ? 1 : 0;
+   return e2e_finish(&g, &a, NULL);
 }

@@ -106,8 +106,7 @@ int main(int argc, char **argv)
       "uniform sampler2D u_tex;\n"
       "varying vec2 v_uv;\n"
       "void main() { gl_FragColor = texture2D(u_tex, v_uv); }\n";
-   static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   GLuint prog = fp_gl_program(vs, fs, attr);
+   GLuint prog = e2e_program(vs, fs, "a_uv");
    glUseProgram(prog);
    glUniform1i(glGetUniformLocation(prog, "u_tex"), 0);
    glClearColor(0, 0, 0, 1);
@@ -124,10 +123,7 @@ int main(int argc, char **argv)
       glGenTextures(1, &tex);
       glBindTexture(GL_TEXTURE_2D, tex);
       upload_levels(tex0);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)Q->min);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)Q->mag);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)Q->wrap);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)Q->wrap);
+      e2e_tex_params(GL_TEXTURE_2D, Q->min, Q->mag, Q->wrap, Q->wrap);
 
       float pos[16], uv[8];
       int32_t gx[4], gy[4];

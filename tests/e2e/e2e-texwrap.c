@@ -58,32 +58,8 @@ static GLuint tex2d(int w, int h, GLenum filter, GLenum wrap)
    glBindTexture(GL_TEXTURE_2D, t);
    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, p);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)filter);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)filter);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wrap);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wrap);
+   e2e_tex_params(GL_TEXTURE_2D, filter, filter, wrap, wrap);
    free(p);
-   return t;
-}
-
-static GLuint mipchain(GLenum min)
-{
-   GLuint t;
-   static unsigned char p[64 * 64 * 4];
-   glGenTextures(1, &t);
-   glBindTexture(GL_TEXTURE_2D, t);
-   for (int l = 0, s = 64; s >= 1; l++, s /= 2) {
-      for (int i = 0; i < s * s; i++) {
-         int x = i % s, y = i / s;
-         p[i * 4 + 0] = (unsigned char)(l * 36);
-         p[i * 4 + 1] = (unsigned char)(255 - l * 36);
-         p[i * 4 + 2] = (unsigned char)(((x ^ y) & 1) ? 160 : 60);
-         p[i * 4 + 3] = 255;
-      }
-      glTexImage2D(GL_TEXTURE_2D, l, GL_RGBA, s, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, p);
-   }
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
    return t;
 }
 
@@ -98,10 +74,7 @@ static GLuint cubemap(GLenum filter)
       glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_RGBA, 8, 8, 0, GL_RGBA,
                    GL_UNSIGNED_BYTE, p);
    }
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, (GLint)filter);
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, (GLint)filter);
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+   e2e_tex_params(GL_TEXTURE_CUBE_MAP, filter, filter, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
    return t;
 }
 
@@ -123,8 +96,7 @@ int main(int argc, char **argv)
    static const char *fsc =
       "precision highp float;\nuniform samplerCube u_tex;\nvarying vec3 v_dir;\n"
       "void main() { gl_FragColor = textureCube(u_tex, v_dir); }\n";
-   static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   GLuint p2 = e2e_texture_program(), pc = fp_gl_program(vsc, fsc, attr);
+   GLuint p2 = e2e_texture_program(), pc = e2e_program(vsc, fsc, "a_uv");
    glClearColor(0, 0, 0, 1);
    glClear(GL_COLOR_BUFFER_BIT);
 
@@ -152,7 +124,9 @@ int main(int argc, char **argv)
    if (strchr(rows, '2')) {
       static const float span[4] = { 1.5f, 3.0f, 6.0f, 3.0f };
       for (int c = 0; c < 4; c++) {
-         GLuint t = mipchain(c == 3 ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR);
+         /* a distinct colour a level; REPEAT, GL's default */
+         GLuint t = e2e_mip_texture(64, 36, 160, 60, c == 3 ? GL_NEAREST_MIPMAP_NEAREST
+                                                           : GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
          /* 64 pixels across span * 64 texels: LOD log2(span) */
          float s1 = span[c] * 1.0f + 0.013f, s0 = 0.013f;
          float tc[8] = { s0, s0 * 0.7f, s1, s0 * 0.7f, s0, s1 * 0.9f, s1, s1 * 0.9f };

@@ -37,23 +37,6 @@
 #include <string.h>
 #include <time.h>
 
-static int errors;
-
-static void check(bool ok, const char *what)
-{
-   if (!ok) {
-      printf("error: %s\n", what);
-      errors++;
-   }
-}
-
-static const char *vs =
-   "#version 310 es\n"
-   "in vec4 a_pos;\n"
-   "in vec2 a_uv;\n"
-   "out vec2 v_uv;\n"
-   "void main() { v_uv = a_uv; gl_Position = a_pos; }\n";
-
 static const char *fs_deband =
    "#version 310 es\n"
    "precision highp float;\n"
@@ -142,19 +125,6 @@ static const char *fs_ewa =
    "   o_color = vec4(clamp(sum / wsum, lo, hi), 1.0);\n"
    "}\n";
 
-static GLuint program(const char *fs)
-{
-   static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   return fp_gl_program(vs, fs, attr);
-}
-
-static void draw_rect(void)
-{
-   static const float pos[] = { -1, -1, 0, 1, 1, -1, 0, 1, -1, 1, 0, 1, 1, 1, 0, 1 };
-   static const float uv[] = { 0, 0, 1, 0, 0, 1, 1, 1 };
-   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, uv, 2);
-}
-
 static unsigned char to8(double v)
 {
    return (unsigned char)(v <= 0 ? 0 : v >= 1 ? 255 : (int)(v * 255.0 + 0.5));
@@ -196,10 +166,7 @@ static GLuint make_texture(int n, GLenum filter)
    glGenTextures(1, &t);
    glBindTexture(GL_TEXTURE_2D, t);
    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, n, n);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+   e2e_tex_params(GL_TEXTURE_2D, filter, filter, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
    return t;
 }
 
@@ -221,11 +188,7 @@ int main(int argc, char **argv)
       fp_die("--frames must be at least 1, --warmup from 1 to --frames, --src at least 4");
    struct fp_gl g;
    e2e_begin(&g, &a);
-   GLint major = 0, minor = 0;
-   glGetIntegerv(GL_MAJOR_VERSION, &major);
-   glGetIntegerv(GL_MINOR_VERSION, &minor);
-   check(major * 10 + minor >= 31, "the context is not GL ES 3.1 or later");
-   if (errors) {
+   if (!e2e_check_es31()) {
       e2e_end(&g, &a, NULL);
       return 1;
    }
@@ -238,9 +201,9 @@ int main(int argc, char **argv)
    glGenFramebuffers(1, &fbo);
    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, debanded, 0);
-   check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
-         "the debanding target is not complete");
-   const GLuint deband = program(fs_deband), ewa = program(fs_ewa);
+   e2e_check(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE,
+             "the debanding target is not complete");
+   const GLuint deband = e2e_uv_program_es31(fs_deband), ewa = e2e_uv_program_es31(fs_ewa);
    glUseProgram(deband);
    glUniform1i(glGetUniformLocation(deband, "u_src"), 0);
    glUniform2f(glGetUniformLocation(deband, "u_size"), (float)n, (float)n);
@@ -260,24 +223,22 @@ int main(int argc, char **argv)
       glViewport(0, 0, n, n);
       glUseProgram(deband);
       glUniform1ui(glGetUniformLocation(deband, "u_frame"), (GLuint)f);
-      draw_rect();
+      e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
       glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
       glViewport(0, 0, a.size, a.size);
       glBindTexture(GL_TEXTURE_2D, debanded);
       glUseProgram(ewa);
-      draw_rect();
+      e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
       glFinish();
    }
    const double end = now_ms();
    const double ms = frames > warmup ? (end - t0) / (frames - warmup) : 0;
    printf("stat: frames=%d src=%d ms_per_frame=%.1f warmup_ms=%.1f\n", frames, n, ms,
           (frames > warmup ? t0 : end) - start);
-   check(glGetError() == GL_NO_ERROR, "a GL error");
    glDeleteFramebuffers(1, &fbo);
    glDeleteTextures(1, &src);
    glDeleteTextures(1, &debanded);
    free(px);
    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
-   e2e_end(&g, &a, NULL);
-   return errors ? 1 : 0;
+   return e2e_finish(&g, &a, NULL);
 }

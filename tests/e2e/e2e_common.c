@@ -53,6 +53,38 @@ void e2e_begin(struct fp_gl *g, const struct e2e_args *a)
    printf("renderer: %s\n", fp_gl_renderer());
 }
 
+void e2e_start(struct fp_gl *g, struct e2e_args *a, int argc, char **argv, int default_size)
+{
+   e2e_parse(a, argc, argv, default_size);
+   e2e_begin(g, a);
+}
+
+int e2e_errors;
+
+void e2e_check(bool ok, const char *what)
+{
+   if (!ok) {
+      printf("error: %s\n", what);
+      e2e_errors++;
+   }
+}
+
+bool e2e_check_es31(void)
+{
+   GLint major = 0, minor = 0;
+   glGetIntegerv(GL_MAJOR_VERSION, &major);
+   glGetIntegerv(GL_MINOR_VERSION, &minor);
+   e2e_check(major * 10 + minor >= 31, "the context is not GL ES 3.1 or later");
+   return major * 10 + minor >= 31;
+}
+
+int e2e_finish(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask)
+{
+   e2e_check(glGetError() == GL_NO_ERROR, "a GL error");
+   e2e_end(g, a, mask);
+   return e2e_errors ? 1 : 0;
+}
+
 void e2e_end(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask)
 {
    size_t bytes = (size_t)g->w * (size_t)g->h * 4;
@@ -81,6 +113,12 @@ void e2e_end(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mas
    fp_gl_fini(g);
 }
 
+GLuint e2e_program(const char *vs, const char *fs, const char *attr1)
+{
+   const char *const attr[] = { "a_pos", attr1, NULL };
+   return fp_gl_program(vs, fs, attr);
+}
+
 GLuint e2e_color_program(void)
 {
    static const char *vs =
@@ -92,8 +130,7 @@ GLuint e2e_color_program(void)
       "precision mediump float;\n"
       "varying vec4 v_color;\n"
       "void main() { gl_FragColor = v_color; }\n";
-   static const char *const attr[] = { "a_pos", "a_color", NULL };
-   return fp_gl_program(vs, fs, attr);
+   return e2e_program(vs, fs, "a_color");
 }
 
 GLuint e2e_texture_program(void)
@@ -104,8 +141,7 @@ GLuint e2e_texture_program(void)
    static const char *fs =
       "precision highp float;\nuniform sampler2D u_tex;\nvarying vec2 v_uv;\n"
       "void main() { gl_FragColor = texture2D(u_tex, v_uv); }\n";
-   static const char *const attr[] = { "a_pos", "a_uv", NULL };
-   return fp_gl_program(vs, fs, attr);
+   return e2e_program(vs, fs, "a_uv");
 }
 
 void e2e_draw_uv(GLenum mode, int n, const float *pos, const float *uv, int ncomp)
@@ -118,6 +154,72 @@ void e2e_draw_uv(GLenum mode, int n, const float *pos, const float *uv, int ncom
    glDrawArrays(mode, 0, n);
    glDisableVertexAttribArray(0);
    glDisableVertexAttribArray(1);
+}
+
+void e2e_draw_rect(float x0, float y0, float x1, float y1, float u0, float v0, float u1,
+                   float v1)
+{
+   const float pos[] = { x0, y0, 0, 1, x1, y0, 0, 1, x0, y1, 0, 1, x1, y1, 0, 1 };
+   const float uv[] = { u0, v0, u1, v0, u0, v1, u1, v1 };
+   e2e_draw_uv(GL_TRIANGLE_STRIP, 4, pos, uv, 2);
+}
+
+/* A GLSL ES `version` program: its vertex shader passes a_pos on as the
+ * position and a_NAME (of `type`) on as v_NAME; fragment shader fs. */
+static GLuint passthrough_program(const char *version, const char *type, const char *name,
+                                  const char *fs)
+{
+   char vs[256], attr1[32];
+   snprintf(vs, sizeof vs,
+            "#version %s\n"
+            "in vec4 a_pos;\n"
+            "in %s a_%s;\n"
+            "out %s v_%s;\n"
+            "void main() { v_%s = a_%s; gl_Position = a_pos; }\n",
+            version, type, name, type, name, name, name);
+   snprintf(attr1, sizeof attr1, "a_%s", name);
+   return e2e_program(vs, fs, attr1);
+}
+
+GLuint e2e_color_program_es3(const char *fs)
+{
+   return passthrough_program("300 es", "vec4", "color", fs);
+}
+
+GLuint e2e_uv_program_es31(const char *fs)
+{
+   return passthrough_program("310 es", "vec2", "uv", fs);
+}
+
+void e2e_tex_params(GLenum target, GLenum min, GLenum mag, GLenum wrap_s, GLenum wrap_t)
+{
+   glTexParameteri(target, GL_TEXTURE_MIN_FILTER, (GLint)min);
+   glTexParameteri(target, GL_TEXTURE_MAG_FILTER, (GLint)mag);
+   glTexParameteri(target, GL_TEXTURE_WRAP_S, (GLint)wrap_s);
+   glTexParameteri(target, GL_TEXTURE_WRAP_T, (GLint)wrap_t);
+}
+
+GLuint e2e_mip_texture(int size, int step, int hi, int lo, GLenum min, GLenum mag)
+{
+   GLuint t;
+   unsigned char *p = malloc((size_t)size * (size_t)size * 4);
+   if (!p)
+      fp_die("out of memory");
+   glGenTextures(1, &t);
+   glBindTexture(GL_TEXTURE_2D, t);
+   for (int l = 0, s = size; s >= 1; l++, s /= 2) {
+      for (int i = 0; i < s * s; i++) {
+         const int x = i % s, y = i / s;
+         p[i * 4 + 0] = (unsigned char)(l * step);
+         p[i * 4 + 1] = (unsigned char)(255 - l * step);
+         p[i * 4 + 2] = (unsigned char)(((x ^ y) & 1) ? hi : lo);
+         p[i * 4 + 3] = 255;
+      }
+      glTexImage2D(GL_TEXTURE_2D, l, GL_RGBA, s, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, p);
+   }
+   free(p);
+   e2e_tex_params(GL_TEXTURE_2D, min, mag, GL_REPEAT, GL_REPEAT);
+   return t;
 }
 
 void e2e_draw(GLenum mode, int n, const float *pos, const float *color, const float rgba[4])

@@ -36,12 +36,28 @@ const char *e2e_opt(const struct e2e_args *a, const char *name, const char *def)
 
 /* Creates the context, prints the renderer. */
 void e2e_begin(struct fp_gl *g, const struct e2e_args *a);
+/* e2e_parse, then e2e_begin. */
+void e2e_start(struct fp_gl *g, struct e2e_args *a, int argc, char **argv, int default_size);
 /* Reads back, writes -o and --mask (mask may be NULL: nothing excluded),
  * tears down. */
 void e2e_end(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask);
 
+/* Self-checks, which fail the program on any driver: a check that does
+ * not hold prints "error: WHAT" and counts in e2e_errors. */
+extern int e2e_errors;
+void e2e_check(bool ok, const char *what);
+/* Whether the context is GL ES 3.1 or later (a self-check). */
+bool e2e_check_es31(void);
+/* The end of a self-checking program: a GL error is a failed check, then
+ * e2e_end; returns the exit status, 1 after a failed check. */
+int e2e_finish(struct fp_gl *g, const struct e2e_args *a, const unsigned char *mask);
+
 /* Whether the context (GL ES 3.0 or later) exposes the extension `name`. */
 bool e2e_has_extension(const char *name);
+
+/* Compiles and links vs and fs with a_pos bound to location 0 and attr1 (if
+ * not NULL) to 1, the locations e2e_draw and e2e_draw_uv feed. */
+GLuint e2e_program(const char *vs, const char *fs, const char *attr1);
 
 /* Program with a_pos (vec4, clip space) and a_color (vec4) varying. */
 GLuint e2e_color_program(void);
@@ -55,6 +71,24 @@ GLuint e2e_texture_program(void);
 /* Draws n vertices of mode from client arrays: pos 4 floats, attribute 1
  * (a texture coordinate) ncomp floats. */
 void e2e_draw_uv(GLenum mode, int n, const float *pos, const float *uv, int ncomp);
+/* A rectangle of clip space, (x0, y0) to (x1, y1), its texture coordinates
+ * (attribute 1) (u0, v0) to (u1, v1) over it. */
+void e2e_draw_rect(float x0, float y0, float x1, float y1, float u0, float v0, float u1,
+                   float v1);
+
+/* GLSL ES 3.00: a_pos (vec4, clip space) and a_color (vec4) varying as
+ * v_color into the fragment shader fs. */
+GLuint e2e_color_program_es3(const char *fs);
+/* GLSL ES 3.10: a_pos (vec4, clip space) and a_uv (vec2) varying as v_uv
+ * into the fragment shader fs. */
+GLuint e2e_uv_program_es31(const char *fs);
+
+/* The filters and wrap modes of the texture bound to target. */
+void e2e_tex_params(GLenum target, GLenum min, GLenum mag, GLenum wrap_s, GLenum wrap_t);
+/* A size x size RGBA 2D texture with every level down to 1x1, bound: level
+ * l's texels (l * step, 255 - l * step, a checker of hi and lo, 255);
+ * filters min and mag, REPEAT. */
+GLuint e2e_mip_texture(int size, int step, int hi, int lo, GLenum min, GLenum mag);
 
 /* A 4-sample FBO of size x size (RGBA8 colour, depth24/stencil8), GL ES
  * 3.0: create binds it and sets the viewport, and returns the number of
