@@ -89,15 +89,8 @@ render() { # NAME PROGRAM ARGS...
     fi
 }
 
-grep -v '^#' "$here/tolerances.txt" | grep -v '^[[:space:]]*$' > "$out/list"
-while IFS= read -r line; do
-    spec=${line%%|*}
-    # shellcheck disable=SC2086
-    set -- $spec
-    name=$1 prog=$2
-    shift 2
-    render "$name" "$build/tests/e2e/$prog" "$@"
-done < "$out/list"
+. "$here/identity-programs.sh"
+each_program render
 render demo "$build/tools/fp-demo" --scene all --frames 3
 
 # every trace in both modes, snapshots byte for byte (eglretrace ends without

@@ -29,8 +29,8 @@ counters() {
         grep -v 'fragment shaders:\|threads [0-9]*:'
 }
 
-render() { # NAME THREADS PROGRAM ARGS...
-    name=$1 many=$2 prog=$3
+render() { # THREADS NAME PROGRAM ARGS...
+    many=$1 name=$2 prog=$3
     shift 3
     for n in 1 "$many"; do
         if ! env $(program_env "$n") FIXPIPE_STATS=1 \
@@ -63,16 +63,9 @@ render() { # NAME THREADS PROGRAM ARGS...
     fi
 }
 
-grep -v '^#' "$here/tolerances.txt" | grep -v '^[[:space:]]*$' > "$out/list"
-while IFS= read -r line; do
-    spec=${line%%|*}
-    # shellcheck disable=SC2086
-    set -- $spec
-    name=$1 prog=$2
-    shift 2
-    render "$name" 2 "$build/tests/e2e/$prog" "$@"
-done < "$out/list"
-render demo 3 "$build/tools/fp-demo" --scene all --frames 3
+. "$here/identity-programs.sh"
+each_program render 2
+render 3 demo "$build/tools/fp-demo" --scene all --frames 3
 
 # every trace on 1 and 2 threads, snapshots byte for byte
 MODES="1 2"
