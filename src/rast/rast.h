@@ -184,6 +184,8 @@ struct rast_color_target {
    rast_store_func store;         /* always set */
    bool clamp;                    /* unorm/snorm: clamp blend inputs */
    size_t sample_stride;          /* multisampled: bytes from one sample's plane to the next */
+   unsigned layers;               /* layered (gl_Layer): layers bound from base on, 0 or 1: one */
+   size_t layer_stride;           /* bytes from one layer (with its samples) to the next */
 };
 
 enum rast_zs_layout {
@@ -204,6 +206,8 @@ struct rast_zs_target {
    int stride;
    enum rast_zs_layout layout;
    size_t sample_stride;          /* multisampled: bytes from one sample's plane to the next */
+   unsigned layers;               /* as rast_color_target's */
+   size_t layer_stride;
 };
 
 /* Multisampling (msaa.c, docs/msaa.md): a target of RAST_MSAA_SAMPLES
@@ -295,6 +299,12 @@ struct rast_vertex_layout {
     * unfilled stage).  Without it they are front-facing. */
    bool has_face;
    unsigned face_slot;
+   /* gl_Layer (a geometry shader's output): the layer of a layered target
+    * the primitive draws into, its provoking vertex's, a 32-bit integer in
+    * the slot's x; one past the targets' last layer draws into the last, as
+    * llvmpipe does.  Without it, layer 0. */
+   bool has_layer;
+   unsigned layer_slot;
    /* Bit i: on points, varying i (unless CONSTANT) is the sprite coordinate
     * (s, t, 0, 1) generated across the square, not the vertex's value
     * (gl_PointCoord, GL_COORD_REPLACE).  Other primitives ignore it. */

@@ -6,6 +6,7 @@
 #define FIXPIPE_RAST_PRIV_H
 
 #include <math.h>
+#include <string.h>
 #include "rast/rast.h"
 
 struct rast_context;
@@ -148,6 +149,22 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
 void rast_msaa_destroy(struct rast_context *rc);
 /* backend.c: the back end on sample s's planes of the framebuffer. */
 void rast_backend_sample(struct rast_context *rc, unsigned s);
+/* The layer of a layered target the next primitives draw into (set-up:
+ * gl_Layer, rast_vertex_layout.has_layer), and a target's address of a
+ * layer and sample. */
+void rast_backend_layer(struct rast_context *rc, unsigned layer);
+uint8_t *rast_target_place(uint8_t *base0, unsigned layers, size_t layer_stride,
+                           unsigned layer, unsigned s, size_t sample_stride);
+/* Set-up's: the primitive's layer, from its provoking vertex, to the back
+ * end (after validation, which plans layer 0). */
+static inline void rast_primitive_layer(struct rast_context *rc, const float (*pv)[4])
+{
+   if (rc->vl.has_layer) {
+      uint32_t layer;
+      memcpy(&layer, &pv[rc->vl.layer_slot][0], sizeof(layer));
+      rast_backend_layer(rc, layer);
+   }
+}
 /* backend.c: whether the back end runs the shader at all (a colour it
  * writes, a depth output or a discard). */
 bool rast_backend_shades(const struct rast_context *rc);

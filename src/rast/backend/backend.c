@@ -42,7 +42,8 @@ static void fetch_targets(const struct rast_context *rc, const struct rast_backe
       const struct rast_color_target *t = &rc->fb.cbuf[cb];
       float rgba[RAST_QUAD_SIZE][4] = { { 0 } };   /* pixel i at [i] */
       if (cb < rc->fb.nr_cbufs && t->base) {
-         const uint8_t *row = t->base + be->sample * t->sample_stride +
+         const uint8_t *row = rast_target_place(t->base, t->layers, t->layer_stride, be->layer,
+                                                be->sample, t->sample_stride) +
                               (ptrdiff_t)q->y * t->stride + (ptrdiff_t)q->x * (ptrdiff_t)t->cpp;
          for (unsigned r = 0; r < h; r++)
             t->load(row + (ptrdiff_t)r * t->stride, w, &rgba[2 * r]);
@@ -357,6 +358,7 @@ static void backend_choose(struct rast_context *rc)
 
    rast_zs_plan(be, rc);
    rast_color_plan(be, rc);
+   be->layer = 0;                 /* the plans' bases: layer 0 */
    /* Alpha to coverage takes samples away as a discard does. */
    const bool a2c = rc->blend.alpha_to_coverage && rc->fb.samples > 1;
    be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard || a2c;
@@ -394,16 +396,44 @@ static void backend_choose(struct rast_context *rc)
       rc->quads = group;
 }
 
+/* A target's layer and sample from its layer 0, sample 0: a layer beyond
+ * the target's last is its last (the layer an overflowing gl_Layer draws
+ * into, rast_vertex_layout.has_layer). */
+uint8_t *rast_target_place(uint8_t *base0, unsigned layers, size_t layer_stride,
+                           unsigned layer, unsigned s, size_t sample_stride)
+{
+   const unsigned l = layers > 1 ? (layer < layers ? layer : layers - 1) : 0;
+   return base0 + (size_t)l * layer_stride + (size_t)s * sample_stride;
+}
+
+static void place(struct rast_backend *be)
+{
+   if (be->zs_base0)
+      be->zs_base = rast_target_place(be->zs_base0, be->zs_layers, be->zs_layer_stride,
+                                      be->layer, be->sample, be->zs_sample_stride);
+   for (unsigned k = 0; k < be->ncbufs; k++) {
+      struct rast_cbuf_plan *p = &be->cbuf[k];
+      p->base = rast_target_place(p->base0, p->layers, p->layer_stride, be->layer, be->sample,
+                                  p->sample_stride);
+   }
+}
+
 void rast_backend_sample(struct rast_context *rc, unsigned s)
 {
    struct rast_backend *be = backend(rc);
    if (!be)
       return;
    be->sample = s;
-   if (be->zs_base0)
-      be->zs_base = be->zs_base0 + s * be->zs_sample_stride;
-   for (unsigned k = 0; k < be->ncbufs; k++)
-      be->cbuf[k].base = be->cbuf[k].base0 + s * be->cbuf[k].sample_stride;
+   place(be);
+}
+
+void rast_backend_layer(struct rast_context *rc, unsigned layer)
+{
+   struct rast_backend *be = backend(rc);
+   if (!be || be->layer == layer)
+      return;
+   be->layer = layer;
+   place(be);
 }
 
 bool rast_backend_shades(const struct rast_context *rc)

@@ -379,6 +379,8 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       memset(p, 0, sizeof *p);
       p->base = p->base0 = t->base;
       p->sample_stride = t->sample_stride;
+      p->layers = t->layers;
+      p->layer_stride = t->layer_stride;
       p->stride = t->stride;
       p->cpp = t->cpp;
       p->load = t->load;

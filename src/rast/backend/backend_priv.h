@@ -51,9 +51,11 @@ struct rast_cbuf_plan {
    rast_color_func func;
    /* func for the quads of a group on one vector (lanes.h), or NULL */
    rast_c8_group_fn group;
-   uint8_t *base;                 /* the sample drawn (rast_backend_sample) */
-   uint8_t *base0;                /* sample 0, the single-sampled target */
+   uint8_t *base;                 /* the layer and sample drawn (rast_backend_place) */
+   uint8_t *base0;                /* layer 0, sample 0 */
    size_t sample_stride;
+   unsigned layers;               /* rast_color_target's */
+   size_t layer_stride;
    int stride;
    unsigned cpp;
    rast_load_func load;
@@ -105,9 +107,11 @@ struct rast_backend {
    /* Depth/stencil. */
    rast_zconv_func zconv;
    rast_zs_func zs;               /* NULL: no depth or stencil work */
-   uint8_t *zs_base;              /* the sample drawn, as cbuf's base */
+   uint8_t *zs_base;              /* the layer and sample drawn, as cbuf's base */
    uint8_t *zs_base0;
    size_t zs_sample_stride;
+   unsigned zs_layers;
+   size_t zs_layer_stride;
    int zs_stride;
    enum rast_zs_layout zs_layout;
    enum rast_zfamily zfamily;
@@ -140,6 +144,7 @@ struct rast_backend {
    unsigned ncbufs;
    struct rast_cbuf_plan cbuf[RAST_MAX_CBUFS];
    unsigned sample;               /* the sample plane drawn (rast_backend_sample) */
+   unsigned layer;                /* the layer drawn (rast_backend_layer) */
 
    /* Scratch for the shader's output: not on the stack of every quad. */
    struct rast_shaded_quad out[RAST_GROUP_MAX];   /* [i]: the i-th quad of a group */

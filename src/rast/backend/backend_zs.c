@@ -492,6 +492,8 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
 
    be->zs_base = be->zs_base0 = zt->base;
    be->zs_sample_stride = zt->sample_stride;
+   be->zs_layers = zt->layers;
+   be->zs_layer_stride = zt->layer_stride;
    be->zs_stride = zt->stride;
    be->zs_layout = layout;
    be->zfamily = zfamily_of(layout, &nbits);

@@ -343,6 +343,7 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
                         const float (*v1)[4], const float (*v2)[4])
 {
    rast_validate(rc);
+   rast_primitive_layer(rc, rc->rs.flatshade_first ? v0 : v2);
    if (rc->tiled)
       rast_tiles_draw(rc, RAST_PRIM_TRIANGLE, v0, v1, v2);
    else

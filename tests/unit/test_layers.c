@@ -1,0 +1,214 @@
+/*
+ * Layered targets (gl_Layer: rast_vertex_layout.has_layer): scenes of
+ * random triangles, lines and points, each with a layer from its provoking
+ * vertex, drawn into a target of three layers (colour and depth/stencil),
+ * must leave every layer byte for byte as the same primitives drawn into a
+ * single-layer target of that layer alone; a layer beyond the last draws
+ * into the last.  The shader adds 1/255 to the red it fetches and the
+ * stencil counts the hits, so a quad that read or wrote another layer's
+ * pixels shows.  Single-sampled and with four samples, one quad at a time
+ * and in groups, on one thread and on two.
+ *
+ *   test_layers [--scenes N] [--seed S]
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tutil.h"
+
+#define W 40
+#define H 72
+#define NS RAST_MSAA_SAMPLES
+#define PLANE ((size_t)W * H)
+#define LAYERS 3
+#define MAXPRIM 48
+
+static uint64_t rng = 0x6c61796572730a01ull;
+
+static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   (void)ctx;
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      out->color[0][0][i] = q->last[0][0][i] + 1.0f / 255.0f;
+      out->color[0][1][i] = q->last[0][1][i];
+      out->color[0][2][i] = 0.25f;
+      out->color[0][3][i] = 1.0f;
+   }
+   return q->mask;
+}
+
+static unsigned shade_n(void *ctx, const struct rast_quad *const q[],
+                        struct rast_shaded_quad *const out[], unsigned n)
+{
+   unsigned kept = 0;
+   for (unsigned i = 0; i < n; i++)
+      kept |= shade(ctx, q[i], out[i]) << 4 * i;
+   return kept;
+}
+
+/* a layer's samples one after the other, the layers one after the other */
+static uint8_t color[LAYERS][NS][PLANE * 4], ref_color[LAYERS][NS][PLANE * 4];
+static uint32_t zs[LAYERS][NS][PLANE], ref_zs[LAYERS][NS][PLANE];
+
+/* A primitive: kind 0 triangle, 1 line, 2 point; two slots a vertex, the
+ * position and the layer (an integer in x). */
+struct prim {
+   unsigned kind, layer;
+   float v[3][2][4];
+};
+static struct prim prims[MAXPRIM];
+
+static void clear(uint8_t (*c)[PLANE * 4], uint32_t (*z)[PLANE])
+{
+   for (unsigned k = 0; k < NS; k++)
+      for (size_t i = 0; i < PLANE; i++) {
+         c[k][4 * i + 0] = 0;
+         c[k][4 * i + 1] = (uint8_t)(i * 5 + k);
+         c[k][4 * i + 2] = 0;
+         c[k][4 * i + 3] = 0;
+         z[k][i] = 0x00ffffffu;      /* depth 1, stencil 0 */
+      }
+}
+
+static struct rast_context *context(unsigned samples, unsigned group, unsigned threads,
+                                    uint8_t *c, uint32_t *z, bool layered)
+{
+   char err[128];
+   static struct rast_profile_buf prof;
+   if (!rast_profile_parse("seed", &prof, err, sizeof err))
+      exit(1);
+   struct rast_context *rc = rast_create(&prof.p);
+   struct rast_framebuffer fb;
+   memset(&fb, 0, sizeof(fb));
+   fb.width = W;
+   fb.height = H;
+   fb.samples = samples;
+   fb.nr_cbufs = 1;
+   fb.cbuf[0] = (struct rast_color_target){ .base = c, .stride = W * 4, .cpp = 4,
+                                            .layout = RAST_CL_RGBA8, .load = t_load_rgba8,
+                                            .store = t_store_rgba8, .clamp = true,
+                                            .sample_stride = PLANE * 4,
+                                            .layers = layered ? LAYERS : 0,
+                                            .layer_stride = sizeof(color[0]) };
+   fb.zs = (struct rast_zs_target){ .base = (uint8_t *)z, .stride = W * 4,
+                                    .layout = RAST_ZS_Z24_S8, .sample_stride = PLANE * 4,
+                                    .layers = layered ? LAYERS : 0,
+                                    .layer_stride = sizeof(zs[0]) };
+   rast_set_framebuffer(rc, &fb);
+   t_plain_state(rc);
+   struct rast_vertex_layout vl = t_layout_pos();
+   vl.vertex_size = 2;
+   vl.has_layer = layered;
+   vl.layer_slot = 1;
+   rast_set_vertex_layout(rc, &vl);
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof fs);
+   fs.shade = shade;
+   fs.shade_n = group ? shade_n : NULL;
+   fs.group = group;
+   fs.num_outputs = 1;
+   fs.fetch_mask = 1;
+   rast_set_shader(rc, &fs);
+   t_depth_count_hits(rc, RAST_FUNC_ALWAYS);
+   rast_set_threads(rc, threads);
+   return rc;
+}
+
+static void draw(struct rast_context *rc, const struct prim *p)
+{
+   switch (p->kind) {
+   case 0: rast_triangle(rc, T_V(p->v[0]), T_V(p->v[1]), T_V(p->v[2])); break;
+   case 1: rast_line(rc, T_V(p->v[0]), T_V(p->v[1])); break;
+   default: rast_point(rc, T_V(p->v[0])); break;
+   }
+}
+
+static float coord(float lo, float hi) { return (float)(lo + (hi - lo) * t_rand()); }
+
+static uint64_t hits, beyond;
+
+static void scene(unsigned n, unsigned samples, unsigned group, unsigned threads)
+{
+   for (unsigned t = 0; t < n; t++) {
+      struct prim *p = &prims[t];
+      p->kind = t % 5 == 3 ? 1 : t % 7 == 5 ? 2 : 0;
+      /* now and then past the last layer, which draws into the last */
+      p->layer = t % 11 == 4 ? LAYERS + (unsigned)(t_rand() * 100) : (unsigned)(t_rand() * LAYERS);
+      const float cx = coord(-4, W + 4), cy = coord(-4, H + 4);
+      const float r = t % 3 == 0 ? 40.0f : 10.0f;
+      for (int i = 0; i < 3; i++) {
+         p->v[i][0][0] = (float)(int)((cx + coord(-r, r)) * 4096.0f) / 4096.0f;
+         p->v[i][0][1] = (float)(int)((cy + coord(-r, r)) * 4096.0f) / 4096.0f;
+         p->v[i][0][2] = 0.5f;
+         p->v[i][0][3] = 1.0f;
+         /* the provoking vertex (the last) holds the layer; the others a
+          * wrong one, which must not be taken */
+         const uint32_t l = i == 2 || p->kind == 2 ? p->layer : p->layer + 1;
+         memcpy(&p->v[i][1][0], &l, sizeof(l));
+      }
+      /* a line's provoking vertex is its second */
+      if (p->kind == 1)
+         memcpy(&p->v[1][1][0], &p->layer, sizeof(p->layer));
+   }
+
+   clear(color[0], zs[0]);
+   clear(color[1], zs[1]);
+   clear(color[2], zs[2]);
+   struct rast_context *rc = context(samples, group, threads, color[0][0], zs[0][0], true);
+   for (unsigned t = 0; t < n; t++)
+      draw(rc, &prims[t]);
+   rast_flush(rc);
+   rast_destroy(rc);
+
+   for (unsigned l = 0; l < LAYERS; l++) {
+      clear(ref_color[l], ref_zs[l]);
+      rc = context(samples, group, threads, ref_color[l][0], ref_zs[l][0], false);
+      for (unsigned t = 0; t < n; t++) {
+         const unsigned pl = prims[t].layer < LAYERS ? prims[t].layer : LAYERS - 1;
+         if (pl == l)
+            draw(rc, &prims[t]);
+      }
+      rast_flush(rc);
+      rast_destroy(rc);
+   }
+
+   unsigned bad_color = 0, bad_zs = 0, bad_fetch = 0;
+   for (unsigned l = 0; l < LAYERS; l++)
+      for (unsigned k = 0; k < samples; k++)
+         for (size_t i = 0; i < PLANE; i++) {
+            bad_color += memcmp(&color[l][k][4 * i], &ref_color[l][k][4 * i], 4) != 0;
+            bad_zs += zs[l][k][i] != ref_zs[l][k][i];
+            bad_fetch += color[l][k][4 * i] != zs[l][k][i] >> 24;
+            hits += zs[l][k][i] >> 24;
+         }
+   for (unsigned t = 0; t < n; t++)
+      beyond += prims[t].layer >= LAYERS;
+   CHECK(bad_color == 0 && bad_zs == 0,
+         "%u colour and %u depth/stencil samples differ from the layers drawn alone (%u "
+         "primitives, %u samples, groups of %u, %u threads)", bad_color, bad_zs, n, samples,
+         group, threads);
+   CHECK(bad_fetch == 0, "%u samples whose fetched count is not their layer's hit count",
+         bad_fetch);
+}
+
+int main(int argc, char **argv)
+{
+   unsigned scenes = 40;
+   t_scene_args(argc, argv, "test_layers", &scenes, &rng);
+   t_seed(rng);
+   for (unsigned n = 0; n < scenes; n++) {
+      static const unsigned groups[3] = { 0, 2, 4 };
+      const unsigned np = 1 + n % MAXPRIM;
+      scene(np, 1, groups[n % 3], 1);
+      scene(np, NS, groups[n % 3], 1);
+      if (n % 4 == 0) {
+         scene(np, 1, groups[1 + n / 4 % 2], 2);
+         scene(np, NS, 0, 2);
+      }
+   }
+   CHECK(hits > 1000, "the scenes covered almost nothing (%llu hits)", (unsigned long long)hits);
+   CHECK(beyond > 0, "no primitive went past the last layer");
+   printf("layers: %llu sample hits on %d layers, %llu primitives past the last\n",
+          (unsigned long long)hits, LAYERS, (unsigned long long)beyond);
+   return t_summary("layers");
+}
