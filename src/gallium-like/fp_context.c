@@ -226,6 +226,8 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       goto fail;
    draw_texture_sampler(fp->draw, PIPE_SHADER_VERTEX,
                         fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_VERTEX]));
+   draw_texture_sampler(fp->draw, PIPE_SHADER_GEOMETRY,
+                        fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_GEOMETRY]));
 
    fp->vbuf_render = fp_create_vbuf_render(fp);
    if (!fp->vbuf_render)

@@ -74,6 +74,14 @@ struct fp_fragment_shader {
 /* Tiered like fragment shaders: draw runs it in tgsi_exec until it is hot,
  * then compiled (draw's LLVM path); one that samples textures stays in
  * tgsi_exec, where its samples reach the modeled unit (fp_state_shader.c). */
+/* A geometry shader: draw runs it in tgsi_exec (mesa/patches 0013), where
+ * its texture instructions reach the modeled unit as a vertex shader's
+ * do; while one is bound, the vertex shader is the interpreted one too. */
+struct fp_geometry_shader {
+   struct draw_geometry_shader *draw_gs;
+   struct pipe_shader_state state;  /* its own copy of the tokens */
+};
+
 struct fp_vertex_shader {
    struct draw_vertex_shader *draw_vs;        /* the one bound */
    struct draw_vertex_shader *draw_vs_llvm;   /* once compiled */
@@ -134,6 +142,7 @@ struct fp_context {
    const struct fp_rasterizer_state *rasterizer;
    struct fp_fragment_shader *fs;
    struct fp_vertex_shader *vs;
+   struct fp_geometry_shader *gs;
    const struct fp_velems *velems;
 
    struct pipe_framebuffer_state framebuffer;

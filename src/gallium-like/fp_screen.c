@@ -192,6 +192,13 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 64;
    case PIPE_CAP_MAX_VIEWPORTS:
       return 1;
+   /* Geometry shaders: draw's, as softpipe's; gl_Layer picks each
+    * primitive's layer in the model (rast_vertex_layout.has_layer). */
+   case PIPE_CAP_MAX_GEOMETRY_OUTPUT_VERTICES:
+   case PIPE_CAP_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS:
+      return 1024;
+   case PIPE_CAP_MAX_GS_INVOCATIONS:
+      return 32;
    case PIPE_CAP_ENDIANNESS:
       return PIPE_ENDIAN_NATIVE;
    case PIPE_CAP_MAX_VARYINGS:
@@ -231,6 +238,7 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
    switch (shader) {
    case PIPE_SHADER_FRAGMENT:
    case PIPE_SHADER_VERTEX:
+   case PIPE_SHADER_GEOMETRY:             /* draw, in tgsi_exec (fp_state_shader.c) */
       if (shader == PIPE_SHADER_FRAGMENT && param == PIPE_SHADER_CAP_MAX_INPUTS)
          return RAST_MAX_VARYINGS;
       if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||

@@ -33,6 +33,18 @@ static size_t fp_surface_sample_stride(struct pipe_surface *ps)
    return fp_resource(ps->texture)->img_stride[ps->u.tex.level];
 }
 
+/* A surface of several layers (an array, cube map or 3-D texture attached
+ * whole): the layers a geometry shader's gl_Layer picks among, each its
+ * samples' planes apart (fp_resource_image). */
+static unsigned fp_surface_layers(struct pipe_surface *ps, size_t *layer_stride)
+{
+   *layer_stride = 0;
+   if (ps->texture->target == PIPE_BUFFER)
+      return 0;
+   *layer_stride = fp_surface_sample_stride(ps) * fp_resource_samples(ps->texture);
+   return ps->u.tex.last_layer - ps->u.tex.first_layer + 1;
+}
+
 /* draw's polygon-offset stage adds offset_units * mrd to z.  The model
  * resolves depth to 1 / (2^z_bits - 1) whatever the buffer's width, so a
  * unit must be at least that, or an offset of one unit would vanish in the
@@ -76,6 +88,7 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
       }
       ct->base = fp_surface_base(ps, &ct->stride);
       ct->sample_stride = fp_surface_sample_stride(ps);
+      ct->layers = fp_surface_layers(ps, &ct->layer_stride);
       rfb.samples = MAX2(rfb.samples, fp_resource_samples(ps->texture));
    }
    rfb.zs.layout = RAST_ZS_NONE;
@@ -86,6 +99,7 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
          rfb.zs.base = base;
          rfb.zs.layout = l;
          rfb.zs.sample_stride = fp_surface_sample_stride(fb->zsbuf);
+         rfb.zs.layers = fp_surface_layers(fb->zsbuf, &rfb.zs.layer_stride);
          rfb.samples = MAX2(rfb.samples, fp_resource_samples(fb->zsbuf->texture));
       }
    }

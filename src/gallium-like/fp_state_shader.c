@@ -184,17 +184,65 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
       return;
    }
    fp->jit_stats.vs_compiled++;
-   draw_bind_vertex_shader(fp->draw, vs->draw_vs_llvm);
+   if (!fp->gs)
+      draw_bind_vertex_shader(fp->draw, vs->draw_vs_llvm);
+}
+
+/* The vertex shader draw runs: the compiled one once there is one, unless
+ * an interpreted geometry shader follows it (draw's general middle end
+ * runs both). */
+static void fp_bind_draw_vs(struct fp_context *fp)
+{
+   struct fp_vertex_shader *vs = fp->vs;
+   draw_bind_vertex_shader(fp->draw, !vs ? NULL
+                                     : vs->draw_vs_llvm && !fp->gs ? vs->draw_vs_llvm
+                                                                   : vs->draw_vs);
 }
 
 static void fp_bind_vs_state(struct pipe_context *pipe, void *cso)
 {
    struct fp_context *fp = fp_context(pipe);
-   struct fp_vertex_shader *vs = cso;
-   fp->vs = vs;
-   draw_bind_vertex_shader(fp->draw, vs ? (vs->draw_vs_llvm ? vs->draw_vs_llvm : vs->draw_vs)
-                                        : NULL);
+   fp->vs = cso;
+   fp_bind_draw_vs(fp);
    fp->vl_valid = false;
+}
+
+static void *fp_create_gs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)
+{
+   struct fp_context *fp = fp_context(pipe);
+   if (templ->type != PIPE_SHADER_IR_TGSI || !templ->tokens)
+      return NULL;
+   struct fp_geometry_shader *gs = CALLOC_STRUCT(fp_geometry_shader);
+   if (!gs)
+      return NULL;
+   gs->state = *templ;
+   gs->state.tokens = tgsi_dup_tokens(templ->tokens);
+   gs->draw_gs = gs->state.tokens ? draw_create_geometry_shader_exec(fp->draw, &gs->state)
+                                  : NULL;
+   if (!gs->draw_gs) {
+      FREE((void *)gs->state.tokens);
+      FREE(gs);
+      return NULL;
+   }
+   return gs;
+}
+
+static void fp_bind_gs_state(struct pipe_context *pipe, void *cso)
+{
+   struct fp_context *fp = fp_context(pipe);
+   fp->gs = cso;
+   draw_bind_geometry_shader(fp->draw, fp->gs ? fp->gs->draw_gs : NULL);
+   fp_bind_draw_vs(fp);
+   fp->vl_valid = false;
+}
+
+static void fp_delete_gs_state(struct pipe_context *pipe, void *cso)
+{
+   struct fp_context *fp = fp_context(pipe);
+   struct fp_geometry_shader *gs = cso;
+   draw_delete_geometry_shader(fp->draw, gs->draw_gs);
+   FREE((void *)gs->state.tokens);
+   FREE(gs);
 }
 
 static void fp_delete_vs_state(struct pipe_context *pipe, void *cso)
@@ -243,5 +291,8 @@ void fp_init_shader_functions(struct fp_context *fp)
    p->create_vs_state = fp_create_vs_state;
    p->bind_vs_state = fp_bind_vs_state;
    p->delete_vs_state = fp_delete_vs_state;
+   p->create_gs_state = fp_create_gs_state;
+   p->bind_gs_state = fp_bind_gs_state;
+   p->delete_gs_state = fp_delete_gs_state;
    p->set_constant_buffer = fp_set_constant_buffer;
 }

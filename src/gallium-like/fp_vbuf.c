@@ -156,6 +156,14 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
       vl.face_slot = vinfo->num_attribs;
       draw_emit_vertex_attr(vinfo, EMIT_4F, face);
    }
+   /* gl_Layer of a geometry shader: the layer of a layered framebuffer
+    * each primitive draws into (the model reads it as an integer). */
+   const int layer = draw_find_shader_output(draw, TGSI_SEMANTIC_LAYER, 0);
+   if (layer >= 0) {
+      vl.has_layer = true;
+      vl.layer_slot = vinfo->num_attribs;
+      draw_emit_vertex_attr(vinfo, EMIT_4F, layer);
+   }
    draw_compute_vertex_size(vinfo);
    vl.vertex_size = vinfo->num_attribs;
 
