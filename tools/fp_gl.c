@@ -132,8 +132,10 @@ static GLuint compile(GLenum type, const char *src)
    if (!ok) {
       char log[2048] = "";
       glGetShaderInfoLog(s, sizeof(log), NULL, log);
-      fp_die("%s shader: %s", type == GL_VERTEX_SHADER ? "vertex"
-                              : type == GL_FRAGMENT_SHADER ? "fragment" : "compute", log);
+      fp_die("%s shader: %s", type == GL_VERTEX_SHADER     ? "vertex"
+                              : type == GL_FRAGMENT_SHADER ? "fragment"
+                              : type == 0x8DD9             ? "geometry"
+                                                           : "compute", log);
    }
    return s;
 }
@@ -150,18 +152,29 @@ static void link(GLuint p)
    }
 }
 
-GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
+GLuint fp_gl_program_gs(const char *vs, const char *gs, const char *fs,
+                        const char *const *attribs)
 {
    GLuint p = glCreateProgram();
    GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
+   GLuint g = gs ? compile(0x8DD9 /* GL_GEOMETRY_SHADER, GL ES 3.2 */, gs) : 0;
    glAttachShader(p, v);
+   if (g)
+      glAttachShader(p, g);
    glAttachShader(p, f);
    for (GLuint i = 0; attribs && attribs[i]; i++)
       glBindAttribLocation(p, i, attribs[i]);
    link(p);
    glDeleteShader(v);
+   if (g)
+      glDeleteShader(g);
    glDeleteShader(f);
    return p;
+}
+
+GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
+{
+   return fp_gl_program_gs(vs, NULL, fs, attribs);
 }
 
 GLuint fp_gl_compute_program(const char *cs)

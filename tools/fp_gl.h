@@ -28,6 +28,9 @@ const char *fp_gl_renderer(void);
 
 /* Compiles and links; attribs[i] is bound to location i (NULL-terminated). */
 GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs);
+/* The same with a geometry shader between them (gs NULL: none). */
+GLuint fp_gl_program_gs(const char *vs, const char *gs, const char *fs,
+                        const char *const *attribs);
 /* A compute program (GL ES 3.1); errors are fatal as above. */
 GLuint fp_gl_compute_program(const char *cs);
 
