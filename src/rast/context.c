@@ -28,7 +28,9 @@ struct rast_context *rast_create(const struct rast_profile *profile)
    rc->rs.line_width = 1.0f;
    rc->rs.point_size = 1.0f;
    rc->rs.point_quad_rasterization = true;
-   rc->viewport = (struct rast_scissor){ -(1 << 30), -(1 << 30), 1 << 30, 1 << 30 };
+   for (unsigned i = 0; i < RAST_MAX_VIEWPORTS; i++)
+      rc->viewports[i] = (struct rast_scissor){ -(1 << 30), -(1 << 30), 1 << 30, 1 << 30 };
+   rc->viewport = rc->viewports[0];
    rc->vl.vertex_size = 1;
    rc->texfmt = numsys_default();
    rc->dirty = true;
@@ -73,11 +75,27 @@ void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_sta
    state_changed(rc);
 }
 
-void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
+/* A setter's change starts the next primitives at viewport 0 again. */
+static void select_viewport_0(struct rast_context *rc)
+{
+   rc->vp_index = 0;
+   rc->scissor = rc->scissors[0];
+   rc->viewport = rc->viewports[0];
+}
+
+void rast_set_scissors(struct rast_context *rc, unsigned first, unsigned n,
+                       const struct rast_scissor *sc)
 {
    rast_flush(rc);
-   rc->scissor = *sc;
+   for (unsigned i = 0; i < n && first + i < RAST_MAX_VIEWPORTS; i++)
+      rc->scissors[first + i] = sc[i];
+   select_viewport_0(rc);
    state_changed(rc);
+}
+
+void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc)
+{
+   rast_set_scissors(rc, 0, 1, sc);
 }
 
 void rast_set_sample_mask(struct rast_context *rc, unsigned mask)
@@ -87,11 +105,19 @@ void rast_set_sample_mask(struct rast_context *rc, unsigned mask)
    state_changed(rc);
 }
 
-void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp)
+void rast_set_viewports(struct rast_context *rc, unsigned first, unsigned n,
+                        const struct rast_scissor *vp)
 {
    rast_flush(rc);
-   rc->viewport = *vp;
+   for (unsigned i = 0; i < n && first + i < RAST_MAX_VIEWPORTS; i++)
+      rc->viewports[first + i] = vp[i];
+   select_viewport_0(rc);
    state_changed(rc);
+}
+
+void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp)
+{
+   rast_set_viewports(rc, 0, 1, vp);
 }
 
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa)

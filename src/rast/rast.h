@@ -305,6 +305,12 @@ struct rast_vertex_layout {
     * llvmpipe does.  Without it, layer 0. */
    bool has_layer;
    unsigned layer_slot;
+   /* gl_ViewportIndex (a geometry shader's output): the scissor and the
+    * viewport the primitive is drawn with, its provoking vertex's, a 32-bit
+    * integer in the slot's x; past the last, the last, as llvmpipe does.
+    * Without it, index 0. */
+   bool has_viewport_index;
+   unsigned viewport_slot;
    /* Bit i: on points, varying i (unless CONSTANT) is the sprite coordinate
     * (s, t, 0, 1) generated across the square, not the vertex's value
     * (gl_PointCoord, GL_COORD_REPLACE).  Other primitives ignore it. */
@@ -460,6 +466,15 @@ void rast_set_scissor(struct rast_context *rc, const struct rast_scissor *sc);
 /* The viewport's pixels (llvmpipe's rounding of the viewport transform), for
  * point_tri_clip. */
 void rast_set_viewport(struct rast_context *rc, const struct rast_scissor *vp);
+/* Viewport arrays: scissors and viewports first to first + n - 1 of
+ * RAST_MAX_VIEWPORTS, each primitive taking those of its viewport index
+ * (rast_vertex_layout.has_viewport_index; else index 0, which
+ * rast_set_scissor and rast_set_viewport set). */
+#define RAST_MAX_VIEWPORTS 16
+void rast_set_scissors(struct rast_context *rc, unsigned first, unsigned n,
+                       const struct rast_scissor *sc);
+void rast_set_viewports(struct rast_context *rc, unsigned first, unsigned n,
+                        const struct rast_scissor *vp);
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa);
 void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back);
 /* The samples drawn on a multisampled target (bit k: sample k; GL's sample

@@ -26,8 +26,8 @@ struct rast_context {
    /* State as the driver set it. */
    struct rast_framebuffer fb;
    struct rast_raster_state rs;
-   struct rast_scissor scissor;
-   struct rast_scissor viewport;
+   struct rast_scissor scissors[RAST_MAX_VIEWPORTS];
+   struct rast_scissor viewports[RAST_MAX_VIEWPORTS];
    struct rast_depth_stencil_state dsa;
    uint8_t stencil_ref[2];
    unsigned sample_mask;
@@ -52,6 +52,12 @@ struct rast_context {
     * mark: each event is counted on exactly one thread. */
    bool counting;
    struct rast_stats mark;
+
+   /* Chosen per primitive (set-up, rast_primitive_viewport): its viewport
+    * index and that viewport's scissor and pixels. */
+   unsigned vp_index;
+   struct rast_scissor scissor;
+   struct rast_scissor viewport;
 
    /* Chosen at validation. */
    struct rast_scissor clip_all;    /* scissor & framebuffer, max exclusive */
@@ -155,6 +161,28 @@ void rast_backend_sample(struct rast_context *rc, unsigned s);
 void rast_backend_layer(struct rast_context *rc, unsigned layer);
 uint8_t *rast_target_place(uint8_t *base0, unsigned layers, size_t layer_stride,
                            unsigned layer, unsigned s, size_t sample_stride);
+/* The clip of the scissor and framebuffer (setup.c): at validation, and
+ * when a primitive's viewport index changes the scissor. */
+void rast_compute_clip(struct rast_context *rc);
+
+/* Set-up's: the primitive's viewport index, from its provoking vertex: the
+ * scissor and viewport it is drawn with. */
+static inline void rast_primitive_viewport(struct rast_context *rc, const float (*pv)[4])
+{
+   if (rc->vl.has_viewport_index) {
+      uint32_t i;
+      memcpy(&i, &pv[rc->vl.viewport_slot][0], sizeof(i));
+      if (i >= RAST_MAX_VIEWPORTS)
+         i = RAST_MAX_VIEWPORTS - 1;
+      if (i != rc->vp_index) {
+         rc->vp_index = i;
+         rc->scissor = rc->scissors[i];
+         rc->viewport = rc->viewports[i];
+         rast_compute_clip(rc);
+      }
+   }
+}
+
 /* Set-up's: the primitive's layer, from its provoking vertex, to the back
  * end (after validation, which plans layer 0). */
 static inline void rast_primitive_layer(struct rast_context *rc, const float (*pv)[4])

@@ -1,13 +1,22 @@
 /*
- * Layered targets (gl_Layer: rast_vertex_layout.has_layer): scenes of
- * random triangles, lines and points, each with a layer from its provoking
- * vertex, drawn into a target of three layers (colour and depth/stencil),
- * must leave every layer byte for byte as the same primitives drawn into a
- * single-layer target of that layer alone; a layer beyond the last draws
- * into the last.  The shader adds 1/255 to the red it fetches and the
- * stencil counts the hits, so a quad that read or wrote another layer's
- * pixels shows.  Single-sampled and with four samples, one quad at a time
- * and in groups, on one thread and on two.
+ * What set-up picks per primitive from its provoking vertex, over scenes
+ * of random triangles, lines and points:
+ *
+ *  - the layer (gl_Layer: rast_vertex_layout.has_layer): drawn into a
+ *    target of three layers (colour and depth/stencil), every layer must be
+ *    byte for byte the same primitives drawn into a single-layer target of
+ *    that layer alone; a layer beyond the last draws into the last;
+ *  - the viewport index (gl_ViewportIndex: has_viewport_index): with four
+ *    scissors and viewports (and the last of RAST_MAX_VIEWPORTS, which an
+ *    index beyond takes), the target must be byte for byte the same
+ *    primitives drawn one by one with rast_set_scissor and
+ *    rast_set_viewport of their index before each, points clipped to their
+ *    viewport (point_tri_clip).
+ *
+ * The shader adds 1/255 to the red it fetches and the stencil counts the
+ * hits, so a quad that read or wrote another layer's pixels shows.
+ * Single-sampled and with four samples, one quad at a time and in groups,
+ * on one thread and on two.
  *
  *   test_layers [--scenes N] [--seed S]
  */
@@ -22,6 +31,7 @@
 #define PLANE ((size_t)W * H)
 #define LAYERS 3
 #define MAXPRIM 48
+#define VIEWPORTS 4
 
 static uint64_t rng = 0x6c61796572730a01ull;
 
@@ -53,9 +63,24 @@ static uint32_t zs[LAYERS][NS][PLANE], ref_zs[LAYERS][NS][PLANE];
 /* A primitive: kind 0 triangle, 1 line, 2 point; two slots a vertex, the
  * position and the layer (an integer in x). */
 struct prim {
-   unsigned kind, layer;
+   unsigned kind, layer;          /* layer: or the viewport index */
    float v[3][2][4];
 };
+
+/* The viewports' scissors and pixels: index 15 for those beyond. */
+static struct rast_scissor scissor_of(unsigned i)
+{
+   if (i >= VIEWPORTS)
+      return (struct rast_scissor){ 3, 5, W - 7, H / 2 };
+   return (struct rast_scissor){ (int)i * 7, (int)i * 11, W - (int)i * 3, H - (int)i * 13 };
+}
+
+static struct rast_scissor viewport_of(unsigned i)
+{
+   if (i >= VIEWPORTS)
+      return (struct rast_scissor){ 0, 0, W, H };
+   return (struct rast_scissor){ (int)i * 5, 2, W - (int)i * 4, H - (int)i * 9 };
+}
 static struct prim prims[MAXPRIM];
 
 static void clear(uint8_t (*c)[PLANE * 4], uint32_t (*z)[PLANE])
@@ -70,9 +95,12 @@ static void clear(uint8_t (*c)[PLANE * 4], uint32_t (*z)[PLANE])
       }
 }
 
+enum mode { LAYERED, FLAT, VIEWPORT_ARRAY, VIEWPORT_ONE };
+
 static struct rast_context *context(unsigned samples, unsigned group, unsigned threads,
-                                    uint8_t *c, uint32_t *z, bool layered)
+                                    uint8_t *c, uint32_t *z, enum mode mode)
 {
+   const bool layered = mode == LAYERED;
    char err[128];
    static struct rast_profile_buf prof;
    if (!rast_profile_parse("seed", &prof, err, sizeof err))
@@ -100,6 +128,27 @@ static struct rast_context *context(unsigned samples, unsigned group, unsigned t
    vl.vertex_size = 2;
    vl.has_layer = layered;
    vl.layer_slot = 1;
+   vl.has_viewport_index = mode == VIEWPORT_ARRAY;
+   vl.viewport_slot = 1;
+   if (mode == VIEWPORT_ARRAY || mode == VIEWPORT_ONE) {
+      struct rast_raster_state rs;
+      memset(&rs, 0, sizeof rs);
+      rs.half_pixel_center = true;
+      rs.line_width = 1.0f;
+      rs.point_size = 3.0f;
+      rs.point_tri_clip = true;
+      rs.scissor = true;
+      rast_set_raster_state(rc, &rs);
+   }
+   if (mode == VIEWPORT_ARRAY) {
+      struct rast_scissor sc[RAST_MAX_VIEWPORTS], vp[RAST_MAX_VIEWPORTS];
+      for (unsigned i = 0; i < RAST_MAX_VIEWPORTS; i++) {
+         sc[i] = scissor_of(i);
+         vp[i] = viewport_of(i);
+      }
+      rast_set_scissors(rc, 0, RAST_MAX_VIEWPORTS, sc);
+      rast_set_viewports(rc, 0, RAST_MAX_VIEWPORTS, vp);
+   }
    rast_set_vertex_layout(rc, &vl);
    struct rast_shader fs;
    memset(&fs, 0, sizeof fs);
@@ -127,13 +176,13 @@ static float coord(float lo, float hi) { return (float)(lo + (hi - lo) * t_rand(
 
 static uint64_t hits, beyond;
 
-static void scene(unsigned n, unsigned samples, unsigned group, unsigned threads)
+static void make_prims(unsigned n, unsigned count)
 {
    for (unsigned t = 0; t < n; t++) {
       struct prim *p = &prims[t];
       p->kind = t % 5 == 3 ? 1 : t % 7 == 5 ? 2 : 0;
       /* now and then past the last layer, which draws into the last */
-      p->layer = t % 11 == 4 ? LAYERS + (unsigned)(t_rand() * 100) : (unsigned)(t_rand() * LAYERS);
+      p->layer = t % 11 == 4 ? count + (unsigned)(t_rand() * 100) : (unsigned)(t_rand() * count);
       const float cx = coord(-4, W + 4), cy = coord(-4, H + 4);
       const float r = t % 3 == 0 ? 40.0f : 10.0f;
       for (int i = 0; i < 3; i++) {
@@ -150,11 +199,17 @@ static void scene(unsigned n, unsigned samples, unsigned group, unsigned threads
       if (p->kind == 1)
          memcpy(&p->v[1][1][0], &p->layer, sizeof(p->layer));
    }
+   for (unsigned t = 0; t < n; t++)
+      beyond += prims[t].layer >= count;
+}
 
+static void scene(unsigned n, unsigned samples, unsigned group, unsigned threads)
+{
+   make_prims(n, LAYERS);
    clear(color[0], zs[0]);
    clear(color[1], zs[1]);
    clear(color[2], zs[2]);
-   struct rast_context *rc = context(samples, group, threads, color[0][0], zs[0][0], true);
+   struct rast_context *rc = context(samples, group, threads, color[0][0], zs[0][0], LAYERED);
    for (unsigned t = 0; t < n; t++)
       draw(rc, &prims[t]);
    rast_flush(rc);
@@ -162,7 +217,7 @@ static void scene(unsigned n, unsigned samples, unsigned group, unsigned threads
 
    for (unsigned l = 0; l < LAYERS; l++) {
       clear(ref_color[l], ref_zs[l]);
-      rc = context(samples, group, threads, ref_color[l][0], ref_zs[l][0], false);
+      rc = context(samples, group, threads, ref_color[l][0], ref_zs[l][0], FLAT);
       for (unsigned t = 0; t < n; t++) {
          const unsigned pl = prims[t].layer < LAYERS ? prims[t].layer : LAYERS - 1;
          if (pl == l)
@@ -181,14 +236,50 @@ static void scene(unsigned n, unsigned samples, unsigned group, unsigned threads
             bad_fetch += color[l][k][4 * i] != zs[l][k][i] >> 24;
             hits += zs[l][k][i] >> 24;
          }
-   for (unsigned t = 0; t < n; t++)
-      beyond += prims[t].layer >= LAYERS;
    CHECK(bad_color == 0 && bad_zs == 0,
          "%u colour and %u depth/stencil samples differ from the layers drawn alone (%u "
          "primitives, %u samples, groups of %u, %u threads)", bad_color, bad_zs, n, samples,
          group, threads);
    CHECK(bad_fetch == 0, "%u samples whose fetched count is not their layer's hit count",
          bad_fetch);
+}
+
+/* The same primitives with viewport indices, against each drawn with its
+ * scissor and viewport set alone. */
+static void scene_viewports(unsigned n, unsigned samples, unsigned group, unsigned threads)
+{
+   make_prims(n, VIEWPORTS);
+   clear(color[0], zs[0]);
+   clear(ref_color[0], ref_zs[0]);
+   struct rast_context *rc = context(samples, group, threads, color[0][0], zs[0][0],
+                                     VIEWPORT_ARRAY);
+   for (unsigned t = 0; t < n; t++)
+      draw(rc, &prims[t]);
+   rast_flush(rc);
+   rast_destroy(rc);
+
+   rc = context(samples, group, threads, ref_color[0][0], ref_zs[0][0], VIEWPORT_ONE);
+   for (unsigned t = 0; t < n; t++) {
+      const struct rast_scissor sc = scissor_of(prims[t].layer), vp = viewport_of(prims[t].layer);
+      rast_set_scissor(rc, &sc);
+      rast_set_viewport(rc, &vp);
+      draw(rc, &prims[t]);
+   }
+   rast_flush(rc);
+   rast_destroy(rc);
+
+   unsigned bad = 0, bad_fetch = 0;
+   for (unsigned k = 0; k < samples; k++)
+      for (size_t i = 0; i < PLANE; i++) {
+         bad += memcmp(&color[0][k][4 * i], &ref_color[0][k][4 * i], 4) != 0 ||
+                zs[0][k][i] != ref_zs[0][k][i];
+         bad_fetch += color[0][k][4 * i] != zs[0][k][i] >> 24;
+         hits += zs[0][k][i] >> 24;
+      }
+   CHECK(bad == 0, "%u samples differ from the primitives drawn with their viewport set alone "
+         "(%u primitives, %u samples, groups of %u, %u threads)", bad, n, samples, group,
+         threads);
+   CHECK(bad_fetch == 0, "%u samples whose fetched count is not their hit count", bad_fetch);
 }
 
 int main(int argc, char **argv)
@@ -201,14 +292,18 @@ int main(int argc, char **argv)
       const unsigned np = 1 + n % MAXPRIM;
       scene(np, 1, groups[n % 3], 1);
       scene(np, NS, groups[n % 3], 1);
+      scene_viewports(np, 1, groups[n % 3], 1);
+      scene_viewports(np, NS, groups[n % 3], 1);
       if (n % 4 == 0) {
          scene(np, 1, groups[1 + n / 4 % 2], 2);
          scene(np, NS, 0, 2);
+         scene_viewports(np, 1, groups[1 + n / 4 % 2], 2);
+         scene_viewports(np, NS, 0, 2);
       }
    }
    CHECK(hits > 1000, "the scenes covered almost nothing (%llu hits)", (unsigned long long)hits);
    CHECK(beyond > 0, "no primitive went past the last layer");
-   printf("layers: %llu sample hits on %d layers, %llu primitives past the last\n",
-          (unsigned long long)hits, LAYERS, (unsigned long long)beyond);
+   printf("layers: %llu sample hits on %d layers and %d viewports, %llu primitives past the "
+          "last\n", (unsigned long long)hits, LAYERS, VIEWPORTS, (unsigned long long)beyond);
    return t_summary("layers");
 }

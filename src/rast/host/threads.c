@@ -416,6 +416,9 @@ static void sync_state(struct rast_context *w, const struct rast_context *rc, un
 {
    w->fb = rc->fb;
    w->rs = rc->rs;
+   memcpy(w->scissors, rc->scissors, sizeof(w->scissors));
+   memcpy(w->viewports, rc->viewports, sizeof(w->viewports));
+   w->vp_index = rc->vp_index;
    w->scissor = rc->scissor;
    w->viewport = rc->viewport;
    w->dsa = rc->dsa;

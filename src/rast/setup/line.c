@@ -62,6 +62,7 @@ void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[
 void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
    rast_validate(rc);
+   rast_primitive_viewport(rc, rc->rs.flatshade_first ? v1 : v2);
    rast_primitive_layer(rc, rc->rs.flatshade_first ? v1 : v2);
    if (rc->tiled)
       rast_tiles_draw(rc, RAST_PRIM_LINE, v1, v2, NULL);

@@ -35,7 +35,7 @@ static void set_fix_class(struct rast_context *rc, struct rast_front *fr, unsign
    fr->fix_sat[k] = &rc->stats.sat[cls];
 }
 
-static void compute_clip(struct rast_context *rc)
+void rast_compute_clip(struct rast_context *rc)
 {
    struct rast_scissor c = { 0, 0, (int)rc->fb.width, (int)rc->fb.height };
    if (rc->rs.scissor) {
@@ -72,7 +72,7 @@ void rast_front_validate(struct rast_context *rc)
                         (double)fx_one(prof->z));
    fr->color_scale = (float)(1.0 / (255.0 * (double)fx_one(prof->color)));
    rast_front_classify(rc, fr, fr->points);
-   compute_clip(rc);
+   rast_compute_clip(rc);
 }
 
 void rast_front_classify(struct rast_context *rc, struct rast_front *fr, bool points)
@@ -343,6 +343,7 @@ void rast_draw_triangle(struct rast_context *rc, const float (*v0)[4],
                         const float (*v1)[4], const float (*v2)[4])
 {
    rast_validate(rc);
+   rast_primitive_viewport(rc, rc->rs.flatshade_first ? v0 : v2);
    rast_primitive_layer(rc, rc->rs.flatshade_first ? v0 : v2);
    if (rc->tiled)
       rast_tiles_draw(rc, RAST_PRIM_TRIANGLE, v0, v1, v2);
