@@ -190,10 +190,11 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 16;
    case PIPE_CAP_MIN_MAP_BUFFER_ALIGNMENT:
       return 64;
-   case PIPE_CAP_MAX_VIEWPORTS:
-      return 1;
-   /* Geometry shaders: draw's, as softpipe's; gl_Layer picks each
-    * primitive's layer in the model (rast_vertex_layout.has_layer). */
+   case PIPE_CAP_MAX_VIEWPORTS:         /* gl_ViewportIndex: scissor per primitive */
+      return RAST_MAX_VIEWPORTS;
+   /* Geometry shaders: draw's, as softpipe's; gl_Layer and
+    * gl_ViewportIndex pick each primitive's layer, scissor and viewport in
+    * the model (rast_vertex_layout.has_layer, has_viewport_index). */
    case PIPE_CAP_MAX_GEOMETRY_OUTPUT_VERTICES:
    case PIPE_CAP_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS:
       return 1024;

@@ -346,28 +346,34 @@ static void fp_set_viewport_states(struct pipe_context *pipe, unsigned start, un
 {
    struct fp_context *fp = fp_context(pipe);
    draw_set_viewport_states(fp->draw, start, num, vp);
-   if (start != 0 || num == 0)
-      return;
-   /* The pixels of viewport 0 as llvmpipe rounds them (lp_setup.c's vpwh,
+   /* The viewports' pixels as llvmpipe rounds them (lp_setup.c's vpwh,
     * whose maximum is inclusive), for the points draw leaves unclipped. */
-   const float half_height = fabsf(vp->scale[1]);
-   const float x0 = vp->translate[0] - vp->scale[0];
-   const float y0 = vp->translate[1] - half_height;
-   struct rast_scissor r = { (int)(x0 + 0.499f), (int)(y0 + 0.499f),
-                             (int)(vp->scale[0] * 2.0f + x0 - 0.501f) + 1,
-                             (int)(half_height * 2.0f + y0 - 0.501f) + 1 };
-   rast_set_viewport(fp->rast, &r);
+   struct rast_scissor r[PIPE_MAX_VIEWPORTS];
+   num = MIN2(num, PIPE_MAX_VIEWPORTS - MIN2(start, PIPE_MAX_VIEWPORTS));
+   for (unsigned i = 0; i < num; i++) {
+      const float half_height = fabsf(vp[i].scale[1]);
+      const float x0 = vp[i].translate[0] - vp[i].scale[0];
+      const float y0 = vp[i].translate[1] - half_height;
+      r[i] = (struct rast_scissor){ (int)(x0 + 0.499f), (int)(y0 + 0.499f),
+                                    (int)(vp[i].scale[0] * 2.0f + x0 - 0.501f) + 1,
+                                    (int)(half_height * 2.0f + y0 - 0.501f) + 1 };
+   }
+   if (num)
+      rast_set_viewports(fp->rast, start, num, r);
 }
 
 static void fp_set_scissor_states(struct pipe_context *pipe, unsigned start, unsigned num,
                                   const struct pipe_scissor_state *sc)
 {
    struct fp_context *fp = fp_context(pipe);
-   if (start != 0 || num == 0)
-      return;           /* one viewport: only scissor 0 matters */
+   struct rast_scissor r[PIPE_MAX_VIEWPORTS];
+   num = MIN2(num, PIPE_MAX_VIEWPORTS - MIN2(start, PIPE_MAX_VIEWPORTS));
+   if (!num)
+      return;
    draw_flush(fp->draw);
-   struct rast_scissor r = { sc->minx, sc->miny, sc->maxx, sc->maxy };
-   rast_set_scissor(fp->rast, &r);
+   for (unsigned i = 0; i < num; i++)
+      r[i] = (struct rast_scissor){ sc[i].minx, sc[i].miny, sc[i].maxx, sc[i].maxy };
+   rast_set_scissors(fp->rast, start, num, r);
 }
 
 static void fp_set_clip_state(struct pipe_context *pipe, const struct pipe_clip_state *clip)

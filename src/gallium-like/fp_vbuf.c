@@ -164,6 +164,14 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
       vl.layer_slot = vinfo->num_attribs;
       draw_emit_vertex_attr(vinfo, EMIT_4F, layer);
    }
+   /* gl_ViewportIndex: the scissor and viewport of each primitive (draw
+    * has applied the viewport's transform itself). */
+   const int vpi = draw_find_shader_output(draw, TGSI_SEMANTIC_VIEWPORT_INDEX, 0);
+   if (vpi >= 0) {
+      vl.has_viewport_index = true;
+      vl.viewport_slot = vinfo->num_attribs;
+      draw_emit_vertex_attr(vinfo, EMIT_4F, vpi);
+   }
    draw_compute_vertex_size(vinfo);
    vl.vertex_size = vinfo->num_attribs;
 
