@@ -13,6 +13,10 @@
  *             to the fragment shader, which shades by it.
  *   points    each point made three by the geometry shader, each of its
  *             own size (gl_PointSize, GL_OES_geometry_point_size).
+ *   viewports random triangles sent by the geometry shader into four
+ *             viewports, the target's quarters (gl_ViewportIndex,
+ *             GL_OES_viewport_array), each with a scissor of its own; the
+ *             fragment shader reads gl_ViewportIndex into blue.
  *
  * Self-checks (errors fail the program on any driver): the context is GL ES
  * 3.1 with the extension; in layered, one triangle covering the centre,
@@ -24,6 +28,7 @@
 #include <EGL/egl.h>
 #include <GLES3/gl31.h>
 #include <GLES2/gl2ext.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -345,12 +350,136 @@ static void scene_points(int size)
    }
 }
 
+/* ---- viewports ---- */
+
+static const char gs_viewports[] =
+   "#version 310 es\n"
+   "#extension GL_OES_geometry_shader : require\n"
+   "#extension GL_OES_viewport_array : require\n"
+   "layout(triangles) in;\n"
+   "layout(triangle_strip, max_vertices = 12) out;\n"
+   "in vec4 g_color[];\n"
+   "out vec4 v_color;\n"
+   "void main() {\n"
+   "   for (int v = 0; v < 4; v++) {\n"
+   "      for (int i = 0; i < 3; i++) {\n"
+   "         gl_ViewportIndex = v;\n"
+   "         gl_Position = gl_in[i].gl_Position;\n"
+   "         v_color = g_color[i];\n"
+   "         EmitVertex();\n"
+   "      }\n"
+   "      EndPrimitive();\n"
+   "   }\n"
+   "}\n";
+
+/* gl_ViewportIndex read in the fragment shader too */
+static const char fs_viewports[] =
+   "#version 310 es\n"
+   "#extension GL_OES_viewport_array : require\n"
+   "precision highp float;\n"
+   "in vec4 v_color;\n"
+   "out vec4 o_color;\n"
+   "void main() { o_color = vec4(v_color.rg, float(gl_ViewportIndex) / 3.0, 1.0); }\n";
+
+static void scene_viewports(int size)
+{
+   e2e_check(e2e_has_extension("GL_OES_viewport_array"), "GL_OES_viewport_array is not exposed");
+   if (e2e_errors)
+      return;
+   void (*viewports)(GLuint, GLsizei, const GLfloat *) =
+      (void (*)(GLuint, GLsizei, const GLfloat *))eglGetProcAddress("glViewportArrayvOES");
+   void (*scissors)(GLuint, GLsizei, const GLint *) =
+      (void (*)(GLuint, GLsizei, const GLint *))eglGetProcAddress("glScissorArrayvOES");
+   if (!viewports || !scissors)
+      fp_die("no glViewportArrayvOES or glScissorArrayvOES");
+   const int h = size / 2;
+   GLfloat vp[16];
+   GLint sc[16];
+   for (int v = 0; v < 4; v++) {
+      const int x = (v & 1) * h, y = (v >> 1) * h;
+      vp[4 * v + 0] = (float)x;
+      vp[4 * v + 1] = (float)y;
+      vp[4 * v + 2] = (float)h;
+      vp[4 * v + 3] = (float)h;
+      /* each scissor cuts its quarter differently: inset v + 1 pixels on
+       * the left, 2v on the top */
+      sc[4 * v + 0] = x + v + 1;
+      sc[4 * v + 1] = y;
+      sc[4 * v + 2] = h - v - 1;
+      sc[4 * v + 3] = h - 2 * v;
+   }
+   viewports(0, 4, vp);
+   scissors(0, 4, sc);
+   glEnable(GL_SCISSOR_TEST);
+   GLuint p = program3(vs_pass, gs_viewports, fs_viewports);
+   glUseProgram(p);
+   glClearColor(0, 0, 0, 1);
+   glDisable(GL_SCISSOR_TEST);
+   glClear(GL_COLOR_BUFFER_BIT);
+   glEnable(GL_SCISSOR_TEST);
+
+   /* the self-check: a triangle over all of clip space lights each quarter
+    * up to its scissor and no further */
+   const float all[] = { -1, -1, 0, 1, 3, -1, 0, 1, -1, 3, 0, 1 };
+   const float white[4] = { 1, 1, 1, 1 };
+   e2e_draw(GL_TRIANGLES, 3, all, NULL, white);
+   for (int v = 0; v < 4; v++) {
+      unsigned char in[4], out[4];
+      const int y = (v >> 1) * h + 1;
+      glReadPixels(sc[4 * v + 0], y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, in);
+      glReadPixels(sc[4 * v + 0] - 1, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, out);
+      char what[80];
+      snprintf(what, sizeof what, "viewport %d is not lit up to its scissor and no further", v);
+      e2e_check(in[0] == 255 && out[0] == 0, what);
+   }
+   glClear(GL_COLOR_BUFFER_BIT);
+   uint32_t seed = 0x76696577u;
+   for (int t = 0; t < 16; t++) {
+      float pos[12], col[12];
+      for (int i = 0; i < 3; i++) {
+         pos[4 * i + 0] = e2e_ndc(e2e_rand_range(&seed, -4, h + 4) * E2E_SUB, h);
+         pos[4 * i + 1] = e2e_ndc(e2e_rand_range(&seed, -4, h + 4) * E2E_SUB, h);
+         pos[4 * i + 2] = 0.0f;
+         pos[4 * i + 3] = 1.0f;
+         col[4 * i + 0] = (float)e2e_rand_range(&seed, 0, 255) / 255.0f;
+         col[4 * i + 1] = (float)e2e_rand_range(&seed, 0, 255) / 255.0f;
+         col[4 * i + 2] = 0.0f;
+         col[4 * i + 3] = 1.0f;
+      }
+      e2e_draw(GL_TRIANGLES, 3, pos, col, NULL);
+      /* pixels where the fill rule alone decides, in each quarter */
+      struct e2e_tri tri;
+      for (int i = 0; i < 3; i++) {
+         tri.x[i] = (int32_t)lroundf((pos[4 * i + 0] + 1.0f) * 0.5f * (float)(h * E2E_SUB));
+         tri.y[i] = (int32_t)lroundf((pos[4 * i + 1] + 1.0f) * 0.5f * (float)(h * E2E_SUB));
+      }
+      unsigned char quarter[32 * 32 * 4];
+      if (ties && h <= 32) {
+         memset(quarter, 0, sizeof quarter);
+         e2e_tri_ties(&tri, h, quarter);
+         for (int v = 0; v < 4; v++) {
+            const int x0 = (v & 1) * h, top = size - (v >> 1) * h - h;
+            for (int r = 0; r < h; r++)
+               for (int c = 0; c < h; c++)
+                  ties[4 * ((size_t)(top + r) * (size_t)size + (size_t)(x0 + c))] |=
+                     quarter[4 * (r * h + c)];
+         }
+      }
+   }
+   glDisable(GL_SCISSOR_TEST);
+}
+
 int main(int argc, char **argv)
 {
    struct e2e_args a;
    struct fp_gl g;
    e2e_start(&g, &a, argc, argv, 64);
    const char *c = e2e_opt(&a, "case", "");
+   if (!strcmp(c, "viewports")) {
+      ties = calloc((size_t)a.size * (size_t)a.size, 4);
+      if (!ties)
+         fp_die("out of memory");
+   }
    e2e_check(e2e_check_es31(), "the context is not GL ES 3.1");
    e2e_check(e2e_has_extension("GL_OES_geometry_shader"), "GL_OES_geometry_shader is not exposed");
    if (!strcmp(c, "layered")) {
@@ -362,8 +491,11 @@ int main(int argc, char **argv)
    } else if (!strcmp(c, "points")) {
       if (!e2e_errors)
          scene_points(a.size);
+   } else if (!strcmp(c, "viewports")) {
+      if (!e2e_errors)
+         scene_viewports(a.size);
    } else {
-      fp_die("--case: layered, amplify or points");
+      fp_die("--case: layered, amplify, points or viewports");
    }
    const int status = e2e_finish(&g, &a, ties);
    free(ties);
