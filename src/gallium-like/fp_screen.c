@@ -129,6 +129,8 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_FRAMEBUFFER_NO_ATTACHMENT:
    case PIPE_CAP_BUFFER_MAP_PERSISTENT_COHERENT:   /* maps are the storage itself */
    case PIPE_CAP_CLEAR_TEXTURE:
+   case PIPE_CAP_CULL_DISTANCE:            /* draw's user-cull stage, before the model */
+   case PIPE_CAP_POLYGON_OFFSET_CLAMP:     /* draw's offset stage (fp_state_fb.c) */
       return 1;
    /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
     * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled
