@@ -101,6 +101,18 @@ void fp_vbuf_update_rebase(struct fp_context *fp)
    }
 }
 
+/* The last stage's output `semantic`, if it has one, as the next slot. */
+static void emit_slot(struct draw_context *draw, struct vertex_info *vinfo, unsigned semantic,
+                      bool *has, unsigned *slot)
+{
+   const int src = draw_find_shader_output(draw, semantic, 0);
+   if (src >= 0) {
+      *has = true;
+      *slot = vinfo->num_attribs;
+      draw_emit_vertex_attr(vinfo, EMIT_4F, src);
+   }
+}
+
 /* The layout depends on the FS inputs, the VS outputs, the rasterizer's
  * sprite coordinates and on the extra attributes draw's stages (smooth
  * points and lines) allocate while a draw is running, so it is rebuilt
@@ -141,37 +153,17 @@ static const struct vertex_info *fp_vbuf_get_vertex_info(struct vbuf_render *r)
       }
       vl.num_varyings = n;
    }
-   /* gl_PointSize, for rast_point when point_size_per_vertex is set. */
-   int psize = draw_find_shader_output(draw, TGSI_SEMANTIC_PSIZE, 0);
-   if (psize >= 0) {
-      vl.has_psize = true;
-      vl.psize_slot = vinfo->num_attribs;
-      draw_emit_vertex_attr(vinfo, EMIT_4F, psize);
-   }
-   /* The face of unfilled polygons' lines and points: draw's unfilled
-    * stage adds it as an extra output while such a draw runs. */
-   const int face = draw_find_shader_output(draw, TGSI_SEMANTIC_FACE, 0);
-   if (face >= 0) {
-      vl.has_face = true;
-      vl.face_slot = vinfo->num_attribs;
-      draw_emit_vertex_attr(vinfo, EMIT_4F, face);
-   }
-   /* gl_Layer of a geometry shader: the layer of a layered framebuffer
-    * each primitive draws into (the model reads it as an integer). */
-   const int layer = draw_find_shader_output(draw, TGSI_SEMANTIC_LAYER, 0);
-   if (layer >= 0) {
-      vl.has_layer = true;
-      vl.layer_slot = vinfo->num_attribs;
-      draw_emit_vertex_attr(vinfo, EMIT_4F, layer);
-   }
-   /* gl_ViewportIndex: the scissor and viewport of each primitive (draw
-    * has applied the viewport's transform itself). */
-   const int vpi = draw_find_shader_output(draw, TGSI_SEMANTIC_VIEWPORT_INDEX, 0);
-   if (vpi >= 0) {
-      vl.has_viewport_index = true;
-      vl.viewport_slot = vinfo->num_attribs;
-      draw_emit_vertex_attr(vinfo, EMIT_4F, vpi);
-   }
+   /* Per-primitive registers the model reads from a vertex slot of their
+    * own: gl_PointSize, for rast_point when point_size_per_vertex is set;
+    * the face of unfilled polygons' lines and points (draw's unfilled
+    * stage adds it as an extra output while such a draw runs); a geometry
+    * shader's gl_Layer and gl_ViewportIndex, read as integers (draw has
+    * applied the viewport's transform itself). */
+   emit_slot(draw, vinfo, TGSI_SEMANTIC_PSIZE, &vl.has_psize, &vl.psize_slot);
+   emit_slot(draw, vinfo, TGSI_SEMANTIC_FACE, &vl.has_face, &vl.face_slot);
+   emit_slot(draw, vinfo, TGSI_SEMANTIC_LAYER, &vl.has_layer, &vl.layer_slot);
+   emit_slot(draw, vinfo, TGSI_SEMANTIC_VIEWPORT_INDEX, &vl.has_viewport_index,
+             &vl.viewport_slot);
    draw_compute_vertex_size(vinfo);
    vl.vertex_size = vinfo->num_attribs;
 
