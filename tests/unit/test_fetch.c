@@ -25,27 +25,6 @@
 
 static uint64_t rng = 0x243f6a8885a308d3ull;
 
-static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
-{
-   (void)ctx;
-   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
-      out->color[0][0][i] = q->last[0][0][i] + 1.0f / 255.0f;
-      out->color[0][1][i] = q->last[0][1][i];
-      out->color[0][2][i] = 0.5f;
-      out->color[0][3][i] = 1.0f;
-   }
-   return q->mask;
-}
-
-static unsigned shade_n(void *ctx, const struct rast_quad *const q[],
-                        struct rast_shaded_quad *const out[], unsigned n)
-{
-   unsigned kept = 0;
-   for (unsigned i = 0; i < n; i++)
-      kept |= shade(ctx, q[i], out[i]) << 4 * i;
-   return kept;
-}
-
 static uint8_t color[NS][PLANE * 4];
 static uint64_t total_hits;
 static uint32_t zs[NS][PLANE];
@@ -62,8 +41,8 @@ static struct rast_context *target(unsigned samples, unsigned group, unsigned th
    t_plain_state(rc);
    struct rast_shader fs;
    memset(&fs, 0, sizeof fs);
-   fs.shade = shade;
-   fs.shade_n = group ? shade_n : NULL;
+   fs.shade = t_shade_fetch_count;
+   fs.shade_n = group ? t_shade_fetch_count_n : NULL;
    fs.group = group;
    fs.num_outputs = 1;
    fs.fetch_mask = 1;

@@ -35,27 +35,6 @@
 
 static uint64_t rng = 0x6c61796572730a01ull;
 
-static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
-{
-   (void)ctx;
-   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
-      out->color[0][0][i] = q->last[0][0][i] + 1.0f / 255.0f;
-      out->color[0][1][i] = q->last[0][1][i];
-      out->color[0][2][i] = 0.25f;
-      out->color[0][3][i] = 1.0f;
-   }
-   return q->mask;
-}
-
-static unsigned shade_n(void *ctx, const struct rast_quad *const q[],
-                        struct rast_shaded_quad *const out[], unsigned n)
-{
-   unsigned kept = 0;
-   for (unsigned i = 0; i < n; i++)
-      kept |= shade(ctx, q[i], out[i]) << 4 * i;
-   return kept;
-}
-
 /* a layer's samples one after the other, the layers one after the other */
 static uint8_t color[LAYERS][NS][PLANE * 4], ref_color[LAYERS][NS][PLANE * 4];
 static uint32_t zs[LAYERS][NS][PLANE], ref_zs[LAYERS][NS][PLANE];
@@ -152,8 +131,8 @@ static struct rast_context *context(unsigned samples, unsigned group, unsigned t
    rast_set_vertex_layout(rc, &vl);
    struct rast_shader fs;
    memset(&fs, 0, sizeof fs);
-   fs.shade = shade;
-   fs.shade_n = group ? shade_n : NULL;
+   fs.shade = t_shade_fetch_count;
+   fs.shade_n = group ? t_shade_fetch_count_n : NULL;
    fs.group = group;
    fs.num_outputs = 1;
    fs.fetch_mask = 1;

@@ -339,3 +339,24 @@ void t_scene_args(int argc, char **argv, const char *name, unsigned *scenes, uin
    t_count_seed_args(argc, argv, name, "scenes", 0xffffffffu, &n, seed);
    *scenes = (unsigned)n;
 }
+
+unsigned t_shade_fetch_count(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   (void)ctx;
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      out->color[0][0][i] = q->last[0][0][i] + 1.0f / 255.0f;
+      out->color[0][1][i] = q->last[0][1][i];
+      out->color[0][2][i] = 0.5f;
+      out->color[0][3][i] = 1.0f;
+   }
+   return q->mask;
+}
+
+unsigned t_shade_fetch_count_n(void *ctx, const struct rast_quad *const q[],
+                               struct rast_shaded_quad *const out[], unsigned n)
+{
+   unsigned kept = 0;
+   for (unsigned i = 0; i < n; i++)
+      kept |= t_shade_fetch_count(ctx, q[i], out[i]) << 4 * i;
+   return kept;
+}

@@ -37,6 +37,12 @@ typedef void (*t_quad_hook)(struct tctx *t, const struct rast_quad *q);
 /* t_init's shader: it records the quad's pixels (stamp, hits, counts),
  * calls the hook, and discards the quad. */
 unsigned t_shade_record(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out);
+/* A framebuffer-fetch shader that counts in red: 1/255 added to the red
+ * it fetches from colour buffer 0, green kept, blue 0.5, alpha 1 (fetch
+ * mask 1); _n the same on n quads (rast_shader.shade_n). */
+unsigned t_shade_fetch_count(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out);
+unsigned t_shade_fetch_count_n(void *ctx, const struct rast_quad *const q[],
+                               struct rast_shaded_quad *const out[], unsigned n);
 
 struct tctx {
    struct rast_context *rc;
