@@ -909,6 +909,29 @@ static void texel_fetch_and_swizzle(void)
       CHECK(rgba[0][p] == 0 && rgba[3][p] == 0 && rgba[1][p] == 1, "out of range %u", p);
 }
 
+/* A texture buffer: one row of texels, by index alone; the row and the
+ * layer must be zero (the glue passes zero), indices outside the row read
+ * zero before the swizzle. */
+static void texel_fetch_buffer(void)
+{
+   static uint8_t buf[5 * 4 * 4];   /* room for the rows the level claims */
+   struct tex_view_desc v;
+   float rgba[4][TEX_QUAD];
+   for (unsigned i = 0; i < sizeof(buf); i++)
+      buf[i] = (uint8_t)(i * 12 + 3);
+   view_1level(&v, TEX_TARGET_BUFFER, TEX_FMT_RGBA8, buf, 5, 1, 1);
+   v.level[0].h = 4;   /* a row whatever the level says: y past 0 reads zero */
+   const int x[4] = { 4, 5, -1, 1 }, y[4] = { 0, 0, 0, 1 }, z[4] = { 0, 0, 0, 0 };
+   const int l[4] = { 0, 0, 0, 0 };
+   tex_view_texel(&v, x, y, z, l, rgba);
+   for (unsigned c = 0; c < 4; c++)
+      CHECK(fabs(rgba[c][0] - ((16 + c) * 12 + 3) / 255.0) < 1e-6, "buffer texel 4 ch %u: %g",
+            c, rgba[c][0]);
+   for (unsigned p = 1; p < 4; p++)
+      for (unsigned c = 0; c < 4; c++)
+         CHECK(rgba[c][p] == 0, "buffer fetch %u outside the row reads %g", p, rgba[c][p]);
+}
+
 #ifdef FUZZ_TARGET
 /* libFuzzer (tests/fuzz, ./fixpipe fuzz): the unit's addressing and LOD on
  * the input's bytes, in the systems the unit test holds to the reference
@@ -1121,6 +1144,7 @@ int main(void)
    border_colour();
    formats();
    texel_fetch_and_swizzle();
+   texel_fetch_buffer();
    gather();
    printf("  range events counted: sat %llu flush %llu\n", (unsigned long long)st.sat,
           (unsigned long long)st.flush);

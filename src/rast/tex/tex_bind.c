@@ -11,7 +11,7 @@
 static unsigned target_dims(enum tex_target t)
 {
    switch (t) {
-   case TEX_TARGET_1D: case TEX_TARGET_1D_ARRAY: return 1;
+   case TEX_TARGET_1D: case TEX_TARGET_1D_ARRAY: case TEX_TARGET_BUFFER: return 1;
    case TEX_TARGET_3D: return 3;
    default: return 2;
    }

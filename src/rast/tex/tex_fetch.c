@@ -181,7 +181,8 @@ void tex_view_texel(const struct tex_view_desc *v, const int x[TEX_QUAD], const 
          int zmax = v->target == TEX_TARGET_3D ? lv->d
                     : (v->target == TEX_TARGET_1D_ARRAY || v->target == TEX_TARGET_2D_ARRAY)
                        ? v->layers : 1;
-         int hmax = (v->target == TEX_TARGET_1D || v->target == TEX_TARGET_1D_ARRAY) ? 1 : lv->h;
+         int hmax = (v->target == TEX_TARGET_1D || v->target == TEX_TARGET_1D_ARRAY ||
+                     v->target == TEX_TARGET_BUFFER) ? 1 : lv->h;
          if (x[p] >= 0 && x[p] < lv->w && y[p] >= 0 && y[p] < hmax && z[p] >= 0 && z[p] < zmax)
             fetch(v, lv, x[p], y[p], z[p], o);
       }
