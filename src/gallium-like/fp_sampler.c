@@ -30,6 +30,7 @@ struct fp_tex_key {
    enum pipe_format format;
    enum pipe_texture_target target;
    unsigned swizzle, first_layer, last_layer, first_level, last_level;
+   unsigned buf_offset, buf_size;      /* a texture buffer's range */
    const struct pipe_resource *res;
    const uint8_t *data;
    unsigned width0, height0, depth0, array_size, res_last_level;
@@ -201,8 +202,18 @@ static enum tex_target fp_tex_target(enum pipe_texture_target t)
    case PIPE_TEXTURE_1D_ARRAY: return TEX_TARGET_1D_ARRAY;
    case PIPE_TEXTURE_2D_ARRAY: return TEX_TARGET_2D_ARRAY;
    case PIPE_TEXTURE_RECT: return TEX_TARGET_RECT;
+   case PIPE_BUFFER: return TEX_TARGET_BUFFER;
    default: return TEX_TARGET_2D;
    }
+}
+
+static void fp_view_swizzle(const struct fp_sampler_view *fv, struct tex_view_desc *d)
+{
+   const struct pipe_sampler_view *v = &fv->base;
+   const unsigned swz[4] = { v->swizzle_r, v->swizzle_g, v->swizzle_b, v->swizzle_a };
+   for (unsigned c = 0; c < 4; c++)
+      d->swizzle[c] = swz[c] <= PIPE_SWIZZLE_1 ? (uint8_t)swz[c] : TEX_SWZ_0;
+   d->integer = fv->integer;
 }
 
 /* The view's descriptor: levels relative to first_level, layers from
@@ -219,6 +230,20 @@ static void fp_view_desc(const struct fp_sampler_view *fv, struct tex_view_desc 
               : fv->fetch ? fp_fetch_util : fp_fetch_none;
    d->fetch_ctx = fv;
    d->depth = fv->zs;
+   fp_view_swizzle(fv, d);
+   if (v->target == PIPE_BUFFER) {
+      /* a texture buffer: the range of the buffer the view gives, one row
+       * of whole texels (GL clips the range to the buffer's size) */
+      const unsigned offset = MIN2(v->u.buf.offset, t->width0);
+      const unsigned bytes = MIN2(v->u.buf.size, t->width0 - offset);
+      d->num_levels = 1;
+      d->layers = 1;
+      d->level[0].data = r->data + offset;
+      d->level[0].row_stride = bytes;
+      d->level[0].w = (int32_t)(bytes / fv->bsize);
+      d->level[0].h = d->level[0].d = 1;
+      return;
+   }
    const unsigned first = v->u.tex.first_level;
    const unsigned last = MAX2(MIN2(v->u.tex.last_level, t->last_level), first);
    d->num_levels = MIN2(last - first + 1, TEX_MAX_LEVELS);
@@ -238,10 +263,6 @@ static void fp_view_desc(const struct fp_sampler_view *fv, struct tex_view_desc 
    }
    d->layers = d->target == TEX_TARGET_CUBE ? 6
                : (int32_t)(v->u.tex.last_layer - v->u.tex.first_layer + 1);
-   const unsigned swz[4] = { v->swizzle_r, v->swizzle_g, v->swizzle_b, v->swizzle_a };
-   for (unsigned c = 0; c < 4; c++)
-      d->swizzle[c] = swz[c] <= PIPE_SWIZZLE_1 ? (uint8_t)swz[c] : TEX_SWZ_0;
-   d->integer = fv->integer;
 }
 
 static void fp_sampler_desc(const struct fp_sampler_view *fv, const struct pipe_sampler_state *ss,
@@ -287,10 +308,15 @@ static void fp_tex_key(struct fp_tex_key *k, const struct fp_sampler_view *fv,
    k->format = v->format;
    k->target = v->target;
    k->swizzle = v->swizzle_r | v->swizzle_g << 3 | v->swizzle_b << 6 | v->swizzle_a << 9;
-   k->first_layer = v->u.tex.first_layer;
-   k->last_layer = v->u.tex.last_layer;
-   k->first_level = v->u.tex.first_level;
-   k->last_level = v->u.tex.last_level;
+   if (v->target == PIPE_BUFFER) {
+      k->buf_offset = v->u.buf.offset;
+      k->buf_size = v->u.buf.size;
+   } else {
+      k->first_layer = v->u.tex.first_layer;
+      k->last_layer = v->u.tex.last_layer;
+      k->first_level = v->u.tex.first_level;
+      k->last_level = v->u.tex.last_level;
+   }
    k->res = &r->base;
    k->data = r->data;
    k->width0 = r->base.width0;
@@ -693,6 +719,13 @@ static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned s
    if (!v || !v->texture)
       return;
    const struct pipe_resource *t = v->texture;
+   if (v->target == PIPE_BUFFER) {
+      /* textureSize of a texture buffer: its texels (fp_view_desc) */
+      const unsigned offset = MIN2(v->u.buf.offset, t->width0);
+      dims[0] = (int)(MIN2(v->u.buf.size, t->width0 - offset) /
+                      util_format_get_blocksize(v->format));
+      return;
+   }
    int lev = (int)v->u.tex.first_level + level;
    dims[3] = v->u.tex.last_level - v->u.tex.first_level + 1;
    if (level < 0 || lev > (int)v->u.tex.last_level)
@@ -758,6 +791,12 @@ static void fp_tgsi_get_texel(struct tgsi_sampler *tgsi_sampler, const unsigned 
    struct tex_view_desc vd;
    fp_view_desc(fv, &vd);
    int x[TGSI_QUAD_SIZE], y[TGSI_QUAD_SIZE], z[TGSI_QUAD_SIZE];
+   if (fv->base.target == PIPE_BUFFER) {
+      /* a texture buffer: the index alone (no level, no offset operand) */
+      static const int zero[TGSI_QUAD_SIZE];
+      tex_view_texel(&vd, i, zero, zero, zero, rgba);
+      return;
+   }
    const unsigned samples = fp_resource_samples(fv->base.texture);
    if (samples > 1) {
       fp_texel_ms(&vd, samples, i, j, k, lod, offset, fv->base.target, rgba);

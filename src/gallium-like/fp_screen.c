@@ -149,6 +149,14 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 7;
    case PIPE_CAP_SHADER_BUFFER_OFFSET_ALIGNMENT:
       return 16;
+   /* Texture buffers: texelFetch through the unit's fetch
+    * (TEX_TARGET_BUFFER, fp_sampler.c), llvmpipe's limits. */
+   case PIPE_CAP_TEXTURE_BUFFER_OBJECTS:
+      return 1;
+   case PIPE_CAP_TEXTURE_BUFFER_OFFSET_ALIGNMENT:
+      return 16;
+   case PIPE_CAP_MAX_TEXEL_BUFFER_ELEMENTS_UINT:
+      return 134217728;
    case PIPE_CAP_MAX_STREAM_OUTPUT_BUFFERS:
       return PIPE_MAX_SO_BUFFERS;
    case PIPE_CAP_MAX_STREAM_OUTPUT_SEPARATE_COMPONENTS:
@@ -156,7 +164,6 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 16 * 4;
    case PIPE_CAP_ALPHA_TEST:                 /* st lowers it into the shader */
    case PIPE_CAP_SEAMLESS_CUBE_MAP:
-   case PIPE_CAP_TEXTURE_BUFFER_OBJECTS:
    case PIPE_CAP_SHADER_STENCIL_EXPORT:
    case PIPE_CAP_SHAREABLE_SHADERS:         /* draw's shaders are per context */
    case PIPE_CAP_ACCELERATED:
@@ -165,7 +172,7 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 0;
    case PIPE_CAP_GLSL_FEATURE_LEVEL:
    case PIPE_CAP_GLSL_FEATURE_LEVEL_COMPATIBILITY:
-      return 130;   /* with 4x multisampling: GL ES 3.0 (docs/driver.md) */
+      return 140;   /* desktop GL 3.1 (docs/driver.md) */
    case PIPE_CAP_MAX_RENDER_TARGETS:
       return RAST_MAX_CBUFS;
    case PIPE_CAP_FBFETCH:                  /* the back end reads the target first */
@@ -369,7 +376,13 @@ static bool fp_is_format_supported(struct pipe_screen *screen, enum pipe_format 
    if ((bind & PIPE_BIND_DEPTH_STENCIL) && !fp_format_depth_supported(format))
       return false;
    if (bind & PIPE_BIND_SAMPLER_VIEW) {
-      if (target == PIPE_BUFFER || !fp_format_samplable(format))
+      if (!fp_format_samplable(format))
+         return false;
+      /* texture buffers: texels of one block each, no depth or stencil
+       * (GL's table of buffer texture formats is a subset) */
+      if (target == PIPE_BUFFER &&
+          (desc->colorspace == UTIL_FORMAT_COLORSPACE_ZS || desc->block.width != 1 ||
+           desc->block.height != 1))
          return false;
    }
    if ((bind & PIPE_BIND_SHADER_IMAGE) && !fp_image_format(format, desc))
