@@ -602,6 +602,65 @@ static void cube_seamless(void)
    }
 }
 
+/* Cube map arrays: cube L of the array samples as a cube map made of its
+ * six faces does, bit for bit (directions on faces, edges and a corner,
+ * seamless and not, NEAREST and LINEAR), the layer coordinate rounded and
+ * clamped to the cubes as GL says; a seamless footprint crosses to the
+ * faces of its own cube (green is the cube's, 80 L, on every tap). */
+static void cube_array(void)
+{
+   enum { N = 4, CUBES = 3 };
+   static uint8_t texels[CUBES * 6 * N * N * 4];
+   for (unsigned i = 0; i < sizeof(texels) / 4; i++) {
+      const unsigned layer = i / (N * N);
+      texels[4 * i + 0] = (uint8_t)(40 * (layer % 6) + (i % 7));
+      texels[4 * i + 1] = (uint8_t)(80 * (layer / 6));
+      texels[4 * i + 2] = (uint8_t)(i * 13);
+      texels[4 * i + 3] = 255;
+   }
+   const struct numsys *ns = numsys_default();
+   static const float layers[] = { -0.7f, 0.4f, 0.5f, 1.2f, 1.49f, 1.5f, 7.0f };
+   static const int want_cube[] = { 0, 0, 1, 1, 1, 2, 2 };
+   for (unsigned mode = 0; mode < 4; mode++) {
+      const bool seamless = mode & 1;
+      const enum tex_filter f = mode & 2 ? TEX_FILTER_LINEAR : TEX_FILTER_NEAREST;
+      struct tex_sampler_desc s;
+      samp_init(&s, TEX_WRAP_REPEAT, f);
+      s.seamless_cube = seamless;
+      struct tex_view_desc va;
+      struct tex_unit ua;
+      view_1level(&va, TEX_TARGET_CUBE_ARRAY, TEX_FMT_RGBA8, texels, N, N, 1);
+      va.layers = 6 * CUBES;
+      tex_unit_bind(&ua, ns, &va, &s, &st);
+      for (unsigned k = 0; k < sizeof(layers) / sizeof(layers[0]); k++) {
+         const int L = want_cube[k];
+         struct tex_view_desc vc;
+         struct tex_unit uc;
+         view_1level(&vc, TEX_TARGET_CUBE, TEX_FMT_RGBA8, texels + (size_t)L * 6 * N * N * 4, N,
+                     N, 1);
+         tex_unit_bind(&uc, ns, &vc, &s, &st);
+         struct tex_quad q;
+         memset(&q, 0, sizeof(q));
+         /* an edge of +X and +Z, the corner of +X, +Y, +Z, inside -Y, -Z */
+         q.s[0] = 1.0f; q.t[0] = 0.25f; q.r[0] = 0.9999f;
+         q.s[1] = q.t[1] = q.r[1] = 1.0f;
+         q.s[2] = 0.3f; q.t[2] = -1.0f; q.r[2] = 0.6f;
+         q.s[3] = -0.2f; q.t[3] = 0.45f; q.r[3] = -1.0f;
+         for (unsigned p = 0; p < TEX_QUAD; p++)
+            q.layer[p] = layers[k];
+         float ra[4][TEX_QUAD], rc[4][TEX_QUAD];
+         tex_unit_sample(&ua, &q, TEX_LOD_ZERO, ra);
+         tex_unit_sample(&uc, &q, TEX_LOD_ZERO, rc);
+         CHECK(!memcmp(ra, rc, sizeof(ra)), "cube array mode %u layer %g: differs from cube %d "
+               "alone", mode, (double)layers[k], L);
+         for (unsigned p = 0; p < TEX_QUAD; p++)
+            CHECK(fabs(ra[1][p] * 255 - 80 * L) < 0.01, "cube array mode %u layer %g pixel %u: "
+                  "green %g, want cube %d's %d", mode, (double)layers[k], p, ra[1][p] * 255, L,
+                  80 * L);
+      }
+   }
+}
+
 /* Cube LOD from derivatives (textureCubeGrad, and the implicit LOD, which
  * projects the quad's direction differences the same way): against GL's
  * s = (sc/|ma| + 1)/2 differentiated in double, on directions whose major
@@ -1139,6 +1198,7 @@ int main(void)
    offsets_per_level();
    cube_faces();
    cube_seamless();
+   cube_array();
    cube_lod_grads();
    shadow();
    border_colour();

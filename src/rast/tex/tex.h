@@ -28,10 +28,14 @@
 #define TEX_LOD_NONE (-(1 << 24))   /* log2(0): below any min_lod clamp */
 
 /* TEX_TARGET_BUFFER: a buffer's texels (GL's texture buffers), one row
- * of level 0 read by texelFetch alone (GLSL samples no buffer). */
+ * of level 0 read by texelFetch alone (GLSL samples no buffer).
+ * TEX_TARGET_CUBE_ARRAY: cube map arrays, face f of cube L being layer
+ * 6 L + f of the view (its layers a multiple of six); a quad's `layer`
+ * is L, unrounded. */
 enum tex_target {
    TEX_TARGET_1D, TEX_TARGET_2D, TEX_TARGET_3D, TEX_TARGET_CUBE,
    TEX_TARGET_1D_ARRAY, TEX_TARGET_2D_ARRAY, TEX_TARGET_RECT, TEX_TARGET_BUFFER,
+   TEX_TARGET_CUBE_ARRAY,
 };
 
 /* Same order as gallium's and GL's lists. */

@@ -146,7 +146,7 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    /* Targets without coordinates to wrap on some axis, and the rules GL
     * and llvmpipe apply: cube faces clamp to their edge; rectangles
     * (texel coordinates) know no periodic modes. */
-   if (v->target == TEX_TARGET_CUBE)
+   if (tex_is_cube(v->target))
       u->samp.wrap[0] = u->samp.wrap[1] = TEX_WRAP_CLAMP_TO_EDGE;
    if (v->target == TEX_TARGET_RECT)
       u->samp.normalized = false;
@@ -167,7 +167,7 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    }
    /* Seamless cube maps: LINEAR reads across the face's edges; NEAREST
     * never leaves the face, so its CLAMP_TO_EDGE above is already right. */
-   if (v->target == TEX_TARGET_CUBE && s->seamless_cube) {
+   if (tex_is_cube(v->target) && s->seamless_cube) {
       u->addr[TEX_FILTER_LINEAR][0] = u->addr[TEX_FILTER_LINEAR][1] = tex_addr_cube_seamless;
       u->sample_level[TEX_FILTER_LINEAR] = tex_level_cube_seamless();
    }

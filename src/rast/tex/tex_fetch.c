@@ -179,7 +179,8 @@ void tex_view_texel(const struct tex_view_desc *v, const int x[TEX_QUAD], const 
       if (fetch && level[p] >= 0 && (unsigned)level[p] < v->num_levels) {
          const struct tex_level *lv = &v->level[level[p]];
          int zmax = v->target == TEX_TARGET_3D ? lv->d
-                    : (v->target == TEX_TARGET_1D_ARRAY || v->target == TEX_TARGET_2D_ARRAY)
+                    : (v->target == TEX_TARGET_1D_ARRAY || v->target == TEX_TARGET_2D_ARRAY ||
+                       v->target == TEX_TARGET_CUBE_ARRAY)
                        ? v->layers : 1;
          int hmax = (v->target == TEX_TARGET_1D || v->target == TEX_TARGET_1D_ARRAY ||
                      v->target == TEX_TARGET_BUFFER) ? 1 : lv->h;

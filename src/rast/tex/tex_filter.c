@@ -130,10 +130,14 @@ static void level_3d_linear(const struct tex_unit *u, unsigned level, const ns_v
  * from the face across it (tex_cube_across); at a corner, where the fourth
  * tap has no texel, it is the mean of the three that have one, as llvmpipe
  * and the Khronos suite's reference take it (GL leaves it open).  The
- * address unit leaves the indices unclamped (tex_addr_cube_seamless). */
+ * address unit leaves the indices unclamped (tex_addr_cube_seamless).
+ * `layer` is 6 L + face: a cube map array's faces cross to the faces of
+ * their own cube. */
 void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
-                   const int32_t y[2], unsigned face, float ref, float t[4][4])
+                   const int32_t y[2], int layer, float ref, float t[4][4])
 {
+   const unsigned face = (unsigned)layer % 6u;
+   const int base = layer - (int)face;
    const struct tex_level *lv = &u->view.level[level];
    const int32_t size = u->axis[level][0].size;
    int corner = -1;
@@ -142,9 +146,9 @@ void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
       unsigned f;
       int32_t fx, fy;
       if (tx >= 0 && tx < size && ty >= 0 && ty < size)
-         u->tap(u, lv, tx, ty, (int)face, ref, t[k]);
+         u->tap(u, lv, tx, ty, layer, ref, t[k]);
       else if (tex_cube_across(face, size, tx, ty, &f, &fx, &fy))
-         u->tap(u, lv, fx, fy, (int)f, ref, t[k]);
+         u->tap(u, lv, fx, fy, base + (int)f, ref, t[k]);
       else
          corner = (int)k;
    }
@@ -155,7 +159,8 @@ void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
    }
 }
 
-/* A seamless cube face, LINEAR (GL ES 3.0 3.8.9.1); `layer` is the face. */
+/* A seamless cube face, LINEAR (GL ES 3.0 3.8.9.1); `layer` is the face,
+ * 6 L + face in a cube map array. */
 static void level_cube_seamless(const struct tex_unit *u, unsigned level, const ns_val c[3],
                                 int layer, float ref, float out[4])
 {
@@ -164,7 +169,7 @@ static void level_cube_seamless(const struct tex_unit *u, unsigned level, const 
    u->addr[TEX_FILTER_LINEAR][0](u, &u->axis[level][0], c[0], &A);
    u->addr[TEX_FILTER_LINEAR][1](u, &u->axis[level][1], c[1], &B);
    const int32_t x[2] = { A.i0, A.i1 }, y[2] = { B.i0, B.i1 };
-   tex_cube_taps(u, level, x, y, (unsigned)layer, ref, t);
+   tex_cube_taps(u, level, x, y, layer, ref, t);
    lerp4(a, t[0], t[1], A.w);
    lerp4(b, t[2], t[3], A.w);
    lerp4(out, a, b, B.w);

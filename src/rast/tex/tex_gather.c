@@ -42,7 +42,7 @@ void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q,
                              float rgba[4][TEX_QUAD])
 {
    const struct tex_level *lv = &u->view.level[0];
-   const bool cube = u->view.target == TEX_TARGET_CUBE;
+   const bool cube = tex_is_cube(u->view.target);
    const bool array = u->view.target == TEX_TARGET_2D_ARRAY;
    /* a depth view's taps give the comparison in every colour channel */
    if (u->samp.compare)
@@ -51,7 +51,8 @@ void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q,
       ns_val s, t;
       int layer = 0;
       if (cube) {
-         layer = (int)tex_cube_face(u, tex_nsf(u, q->s[p]), tex_nsf(u, q->t[p]), tex_nsf(u, q->r[p]), &s, &t);
+         layer = (int)tex_cube_face(u, tex_nsf(u, q->s[p]), tex_nsf(u, q->t[p]), tex_nsf(u, q->r[p]), &s, &t) +
+                 tex_cube_base_of(u, q->layer[p]);
       } else {
          s = tex_nsf(u, q->s[p]);
          t = tex_nsf(u, q->t[p]);
@@ -77,7 +78,7 @@ void tex_unit_gather_generic(const struct tex_unit *u, const struct tex_quad *q,
       float taps[4][4];
       const int32_t x[2] = { A.i0, A.i1 }, y[2] = { B.i0, B.i1 };
       if (cube && u->samp.seamless_cube) {
-         tex_cube_taps(u, 0, x, y, (unsigned)layer, q->ref[p], taps);
+         tex_cube_taps(u, 0, x, y, layer, q->ref[p], taps);
       } else {
          for (unsigned k = 0; k < 4; k++)
             u->tap(u, lv, x[k & 1], y[k >> 1], layer, q->ref[p], taps[k]);

@@ -34,6 +34,13 @@ static inline int32_t tex_clamp_lod(const struct tex_unit *u, int32_t l)
    return l;
 }
 
+/* Cube maps and cube map arrays: the faces, their LOD and seamless
+ * filtering alike. */
+static inline bool tex_is_cube(enum tex_target t)
+{
+   return t == TEX_TARGET_CUBE || t == TEX_TARGET_CUBE_ARRAY;
+}
+
 /* A float coordinate into the unit's number system (tex_ns_coord). */
 static inline ns_val tex_nsf(const struct tex_unit *u, float v)
 {
@@ -48,6 +55,19 @@ static inline int32_t tex_layer_of(const struct tex_unit *u, float l)
    if (!(f > 0.0f))
       return 0;
    return f >= (float)(u->view.layers - 1) ? u->view.layers - 1 : (int32_t)f;
+}
+
+/* The first layer of the cube a cube map array's coordinate picks, GL's
+ * clamp(floor(layer + 0.5), 0, cubes - 1) times six; 0 for a cube map. */
+static inline int32_t tex_cube_base_of(const struct tex_unit *u, float l)
+{
+   if (u->view.target != TEX_TARGET_CUBE_ARRAY)
+      return 0;
+   const int32_t cubes = u->view.layers / 6;
+   float f = floorf(l + 0.5f);
+   if (!(f > 0.0f) || cubes < 1)
+      return 0;
+   return 6 * (f >= (float)(cubes - 1) ? cubes - 1 : (int32_t)f);
 }
 
 /* Shadow comparison of the reference with a texel's depth. */
@@ -98,7 +118,7 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
 tex_level_fn tex_level_choose(unsigned dims, enum tex_filter filter);
 tex_level_fn tex_level_cube_seamless(void);
 void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
-                   const int32_t y[2], unsigned face, float ref, float t[4][4]);
+                   const int32_t y[2], int layer, float ref, float t[4][4]);
 tex_tap_fn tex_tap_choose(bool compare);
 void tex_lerp4(float o[4], const float a[4], const float b[4], uint32_t w);   /* w: 2^-8 */
 

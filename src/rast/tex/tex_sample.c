@@ -132,7 +132,7 @@ int32_t tex_lod_quad(const struct tex_unit *u, const struct tex_quad *q)
       c[p][1] = tex_nsf(u, q->t[p]);
       c[p][2] = tex_nsf(u, q->r[p]);
    }
-   if (u->view.target == TEX_TARGET_CUBE) {
+   if (tex_is_cube(u->view.target)) {
       int face[TEX_QUAD];
       int32_t lod[TEX_QUAD];
       for (unsigned p = 0; p < TEX_QUAD; p++) {
@@ -217,19 +217,20 @@ static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
                            enum tex_lod_control ctl, const int8_t *offset,
                            float rgba[4][TEX_QUAD])
 {
-   const bool cube = u->view.target == TEX_TARGET_CUBE;
+   const bool cube = tex_is_cube(u->view.target);
    ns_val c[TEX_QUAD][3], dir[TEX_QUAD][3];
-   int layer[TEX_QUAD];
+   int layer[TEX_QUAD], face[TEX_QUAD];
    int32_t lod[TEX_QUAD];
    float out[TEX_QUAD][4];
 
    for (unsigned p = 0; p < TEX_QUAD; p++) {
-      layer[p] = 0;
+      layer[p] = face[p] = 0;
       if (cube) {
          dir[p][0] = tex_nsf(u, q->s[p]);
          dir[p][1] = tex_nsf(u, q->t[p]);
          dir[p][2] = tex_nsf(u, q->r[p]);
-         layer[p] = (int)tex_cube_face(u, dir[p][0], dir[p][1], dir[p][2], &c[p][0], &c[p][1]);
+         face[p] = (int)tex_cube_face(u, dir[p][0], dir[p][1], dir[p][2], &c[p][0], &c[p][1]);
+         layer[p] = face[p] + tex_cube_base_of(u, q->layer[p]);
          continue;
       }
       c[p][0] = tex_nsf(u, q->s[p]);
@@ -245,7 +246,7 @@ static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
    case TEX_LOD_IMPLICIT:
    case TEX_LOD_BIAS: {
       if (cube) {
-         cube_lod(u, layer, dir, lod);
+         cube_lod(u, face, dir, lod);
       } else {
          const int32_t l = tex_lod_diffs(u, c, u->dims);
          for (unsigned p = 0; p < TEX_QUAD; p++)
@@ -272,7 +273,7 @@ static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
             gy[a] = tex_nsf(u, dy[a]);
             scale[a] = u->axis[0][a].scale;
          }
-         lod[p] = cube ? cube_lod_grads(u, (unsigned)layer[p], dir[p], gx, gy)
+         lod[p] = cube ? cube_lod_grads(u, (unsigned)face[p], dir[p], gx, gy)
                        : tex_lod_derivs(u, dx, dy, n, scale);
       }
       break;
