@@ -203,6 +203,7 @@ static enum tex_target fp_tex_target(enum pipe_texture_target t)
    case PIPE_TEXTURE_2D_ARRAY: return TEX_TARGET_2D_ARRAY;
    case PIPE_TEXTURE_RECT: return TEX_TARGET_RECT;
    case PIPE_BUFFER: return TEX_TARGET_BUFFER;
+   case PIPE_TEXTURE_CUBE_ARRAY: return TEX_TARGET_CUBE_ARRAY;
    default: return TEX_TARGET_2D;
    }
 }
@@ -572,9 +573,12 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
          control = TGSI_SAMPLER_LOD_EXPLICIT;
    }
 
-   /* tgsi's operands per target: the array layer, the shadow reference. */
+   /* tgsi's operands per target: the array layer, the shadow reference
+    * (a cube map array's layer in c0, its reference in c1, where no LOD
+    * operand goes with it). */
    struct tex_quad q;
    const enum pipe_texture_target target = fv->base.target;
+   const bool cube_array = target == PIPE_TEXTURE_CUBE_ARRAY;
    const bool ref_in_c0 = target == PIPE_TEXTURE_2D_ARRAY || target == PIPE_TEXTURE_CUBE;
    const bool clamp_ref = fv->zs && fv->base.format != PIPE_FORMAT_Z32_FLOAT &&
                           fv->base.format != PIPE_FORMAT_Z32_FLOAT_S8X24_UINT;
@@ -582,8 +586,8 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
       q.s[p] = s[p];
       q.t[p] = t[p];
       q.r[p] = r[p];
-      q.layer[p] = target == PIPE_TEXTURE_1D_ARRAY ? t[p] : r[p];
-      q.ref[p] = ref_in_c0 ? c0[p] : r[p];
+      q.layer[p] = target == PIPE_TEXTURE_1D_ARRAY ? t[p] : cube_array ? c0[p] : r[p];
+      q.ref[p] = ref_in_c0 ? c0[p] : cube_array ? c1[p] : r[p];
       if (clamp_ref)
          q.ref[p] = CLAMP(q.ref[p], 0.0f, 1.0f);
       q.lod[p] = c1[p];
@@ -738,6 +742,10 @@ static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned s
    case PIPE_TEXTURE_2D_ARRAY:
       dims[1] = u_minify(t->height0, lev);
       dims[2] = v->u.tex.last_layer - v->u.tex.first_layer + 1;
+      break;
+   case PIPE_TEXTURE_CUBE_ARRAY:   /* textureSize: the cubes */
+      dims[1] = u_minify(t->height0, lev);
+      dims[2] = (v->u.tex.last_layer - v->u.tex.first_layer + 1) / 6;
       break;
    case PIPE_TEXTURE_3D:
       dims[1] = u_minify(t->height0, lev);

@@ -131,6 +131,8 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_CLEAR_TEXTURE:
    case PIPE_CAP_CULL_DISTANCE:            /* draw's user-cull stage, before the model */
    case PIPE_CAP_POLYGON_OFFSET_CLAMP:     /* draw's offset stage (fp_state_fb.c) */
+   case PIPE_CAP_SEAMLESS_CUBE_MAP:        /* the sampler's flag (tex_sampler_desc) */
+   case PIPE_CAP_CUBE_MAP_ARRAY:           /* the unit's TEX_TARGET_CUBE_ARRAY */
       return 1;
    /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
     * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled
@@ -163,7 +165,6 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_MAX_STREAM_OUTPUT_INTERLEAVED_COMPONENTS:
       return 16 * 4;
    case PIPE_CAP_ALPHA_TEST:                 /* st lowers it into the shader */
-   case PIPE_CAP_SEAMLESS_CUBE_MAP:
    case PIPE_CAP_SHADER_STENCIL_EXPORT:
    case PIPE_CAP_SHAREABLE_SHADERS:         /* draw's shaders are per context */
    case PIPE_CAP_ACCELERATED:
@@ -172,7 +173,7 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 0;
    case PIPE_CAP_GLSL_FEATURE_LEVEL:
    case PIPE_CAP_GLSL_FEATURE_LEVEL_COMPATIBILITY:
-      return 140;   /* desktop GL 3.1 (docs/driver.md) */
+      return 330;   /* desktop GL 3.3 (docs/driver.md) */
    case PIPE_CAP_MAX_RENDER_TARGETS:
       return RAST_MAX_CBUFS;
    case PIPE_CAP_FBFETCH:                  /* the back end reads the target first */
