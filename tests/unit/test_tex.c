@@ -415,7 +415,32 @@ static void mip_levels(void)
       tex_unit_sample(&u, &q, TEX_LOD_EXPLICIT, rgba);
       CHECK(fabs(rgba[0][0] * 255 - cases[k].want) < 1.0, "mip case %u: %g want %g", k,
             rgba[0][0] * 255, cases[k].want);
+      /* textureQueryLod: the levels the sample read (level l is 40 + 60 l),
+       * and the LOD with the sampler's bias, unclamped */
+      float level[TEX_QUAD], lod[TEX_QUAD];
+      tex_unit_query_lod(&u, &q, TEX_LOD_EXPLICIT, level, lod);
+      CHECK(fabs(40 + 60 * level[0] - cases[k].want) < 1.0, "query lod case %u: level %g, the "
+            "sample read %g", k, level[0], cases[k].want);
+      CHECK(lod[0] == cases[k].lod + cases[k].bias, "query lod case %u: lod %g, want %g", k,
+            lod[0], cases[k].lod + cases[k].bias);
    }
+   /* the implicit LOD: the unit's own (2 texels a pixel: 1), biased */
+   samp_init(&s, TEX_WRAP_REPEAT, TEX_FILTER_LINEAR);
+   s.mip = TEX_MIP_LINEAR;
+   s.lod_bias = 0.5f;
+   tex_unit_bind(&u, ns, &v, &s, &st);
+   struct tex_quad q;
+   memset(&q, 0, sizeof(q));
+   const float qs[4] = { 0.1f, 0.35f, 0.1f, 0.35f }, qt[4] = { 0.2f, 0.2f, 0.45f, 0.45f };
+   memcpy(q.s, qs, sizeof(qs));
+   memcpy(q.t, qt, sizeof(qt));
+   float level[TEX_QUAD], lod[TEX_QUAD];
+   tex_unit_query_lod(&u, &q, TEX_LOD_IMPLICIT, level, lod);
+   const float want = (float)tex_lod_quad(&u, &q) / TEX_LOD_ONE + 0.5f;
+   for (unsigned p = 0; p < TEX_QUAD; p++)
+      CHECK(lod[p] == want && fabs(want - 1.5f) < 0.02f && level[p] == want,
+            "query lod implicit pixel %u: lod %g level %g, want %g (about 1.5)", p, lod[p],
+            level[p], want);
 }
 
 /* textureOffset at the level sampled: on level 1 (4x4) an offset of one

@@ -296,6 +296,15 @@ void tex_unit_sample_quads(const struct tex_unit *u, const struct tex_quad *q, u
 void tex_unit_sample_generic(const struct tex_unit *u, const struct tex_quad *q,
                              enum tex_lod_control ctl, float rgba[4][TEX_QUAD]);
 
+/* textureQueryLod (tex_sample.c): per pixel the LOD register the unit
+ * computes with the sampler's bias, before its clamps (-infinity for
+ * log2 0), in lod; and in level the mip levels it then reads: the level
+ * (NEAREST mip filter), the lower level plus the weight of the upper
+ * (LINEAR), 0 without mipmapping.  The table path's stages, as
+ * tex_unit_sample_generic takes them. */
+void tex_unit_query_lod(const struct tex_unit *u, const struct tex_quad *q,
+                        enum tex_lod_control ctl, float level[TEX_QUAD], float lod[TEX_QUAD]);
+
 /* textureOffset and its kin: `offset` texels (per axis, GLSL's constant
  * offsets) added at the level sampled, not at the base level: the
  * coordinate moves by offset / size of each level the filter reads, before

@@ -213,15 +213,23 @@ void tex_unit_sample_offset(const struct tex_unit *u, const struct tex_quad *q,
    sample_generic(u, q, ctl, offset, rgba);
 }
 
-static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
-                           enum tex_lod_control ctl, const int8_t *offset,
-                           float rgba[4][TEX_QUAD])
-{
-   const bool cube = tex_is_cube(u->view.target);
+/* The table path's first stages, which a sample and a LOD query share:
+ * the quad's coordinates into the number system (a cube's direction and
+ * its face coordinates, the layer), then each pixel's LOD as the
+ * requests' control asks, before the sampler's bias and clamps. */
+struct generic_quad {
    ns_val c[TEX_QUAD][3], dir[TEX_QUAD][3];
    int layer[TEX_QUAD], face[TEX_QUAD];
    int32_t lod[TEX_QUAD];
-   float out[TEX_QUAD][4];
+};
+
+static void generic_coords_lod(const struct tex_unit *u, const struct tex_quad *q,
+                               enum tex_lod_control ctl, struct generic_quad *g)
+{
+   const bool cube = tex_is_cube(u->view.target);
+   ns_val (*c)[3] = g->c, (*dir)[3] = g->dir;
+   int *layer = g->layer, *face = g->face;
+   int32_t *lod = g->lod;
 
    for (unsigned p = 0; p < TEX_QUAD; p++) {
       layer[p] = face[p] = 0;
@@ -282,6 +290,18 @@ static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
          lod[p] = 0;
       break;
    }
+}
+
+static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
+                           enum tex_lod_control ctl, const int8_t *offset,
+                           float rgba[4][TEX_QUAD])
+{
+   struct generic_quad g;
+   float out[TEX_QUAD][4];
+   generic_coords_lod(u, q, ctl, &g);
+   const ns_val (*c)[3] = (const ns_val (*)[3])g.c;
+   const int *layer = g.layer;
+   const int32_t *lod = g.lod;
 
    for (unsigned p = 0; p < TEX_QUAD; p++) {
       unsigned l0, l1;
@@ -305,5 +325,26 @@ static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
       const unsigned s = u->view.swizzle[ch];
       for (unsigned p = 0; p < TEX_QUAD; p++)
          rgba[ch][p] = s < 4 ? out[p][s] : s == TEX_SWZ_1 ? tex_one(&u->view) : 0.0f;
+   }
+}
+
+void tex_unit_query_lod(const struct tex_unit *u, const struct tex_quad *q,
+                        enum tex_lod_control ctl, float level[TEX_QUAD], float lod[TEX_QUAD])
+{
+   struct generic_quad g;
+   generic_coords_lod(u, q, ctl, &g);
+   for (unsigned p = 0; p < TEX_QUAD; p++) {
+      /* the LOD register with the sampler's bias; log2(0) stays below any
+       * value, as the unit's clamp treats it */
+      lod[p] = g.lod[p] == TEX_LOD_NONE ? -INFINITY
+                                       : (float)(g.lod[p] + u->lod_bias) / (float)TEX_LOD_ONE;
+      unsigned l0, l1;
+      uint32_t frac;
+      enum tex_filter f;
+      tex_unit_select(u, tex_clamp_lod(u, g.lod[p]), &l0, &l1, &frac, &f);
+      level[p] = u->samp.mip == TEX_MIP_NONE ? 0.0f
+                 : u->samp.mip == TEX_MIP_NEAREST
+                    ? (float)l0
+                    : (float)l0 + (float)frac / (float)TEX_LOD_ONE;
    }
 }
