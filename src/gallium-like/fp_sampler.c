@@ -712,6 +712,40 @@ void fp_tgsi_gather_quads(struct tgsi_sampler *tgsi_sampler, uint32_t sview_inde
    }
 }
 
+/* textureQueryLod: the unit's own LOD and level choice (tex_unit_query_lod)
+ * for the quad tgsi gives, its operands as fp_tgsi_get_samples takes them. */
+static void fp_tgsi_query_lod(const struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
+                              const unsigned sampler_index, const float s[TGSI_QUAD_SIZE],
+                              const float t[TGSI_QUAD_SIZE], const float p[TGSI_QUAD_SIZE],
+                              const float c0[TGSI_QUAD_SIZE],
+                              const enum tgsi_sampler_control control,
+                              float mipmap[TGSI_QUAD_SIZE], float lod[TGSI_QUAD_SIZE])
+{
+   struct fp_tgsi_sampler *ts = (struct fp_tgsi_sampler *)tgsi_sampler;
+   const struct fp_sampler_view *fv;
+   memset(mipmap, 0, sizeof(float) * TGSI_QUAD_SIZE);
+   memset(lod, 0, sizeof(float) * TGSI_QUAD_SIZE);
+   const struct tex_unit *u = fp_unit_of(ts, sview_index, sampler_index, &fv);
+   if (!u)
+      return;
+   struct tex_quad q;
+   memset(&q, 0, sizeof(q));
+   const enum pipe_texture_target target = fv->base.target;
+   for (unsigned i = 0; i < TGSI_QUAD_SIZE; i++) {
+      q.s[i] = s[i];
+      q.t[i] = t[i];
+      q.r[i] = p[i];
+      q.layer[i] = target == PIPE_TEXTURE_1D_ARRAY ? t[i]
+                   : target == PIPE_TEXTURE_CUBE_ARRAY ? c0[i] : p[i];
+   }
+   /* the implicit LOD of a fragment quad; elsewhere tgsi's quad is four
+    * unrelated vertices, whose LOD is 0 as their samples' (get_samples) */
+   const enum tex_lod_control ctl =
+      ts->stage == PIPE_SHADER_FRAGMENT ? fp_lod_control(control) : TEX_LOD_ZERO;
+   tex_unit_query_lod(u, &q, ctl, mipmap, lod);
+   fp_tex_stats(ts);
+}
+
 static void fp_tgsi_get_dims(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                              int level, int dims[4])
 {
@@ -849,5 +883,6 @@ struct fp_tgsi_sampler *fp_tgsi_sampler_create(struct fp_context *fp,
    s->base.get_samples = fp_tgsi_get_samples;
    s->base.get_dims = fp_tgsi_get_dims;
    s->base.get_texel = fp_tgsi_get_texel;
+   s->base.query_lod = fp_tgsi_query_lod;
    return s;
 }
