@@ -183,6 +183,7 @@ struct rast_color_target {
    rast_load_func load;           /* always set: RGBA float of n pixels */
    rast_store_func store;         /* always set */
    bool clamp;                    /* unorm/snorm: clamp blend inputs */
+   bool snorm;                    /* with clamp: to [-1, 1], not [0, 1] */
    size_t sample_stride;          /* multisampled: bytes from one sample's plane to the next */
    unsigned layers;               /* layered (gl_Layer): layers bound from base on, 0 or 1: one */
    size_t layer_stride;           /* bytes from one layer (with its samples) to the next */

@@ -139,12 +139,20 @@ static inline void u8_store(uint8_t *dst, unsigned n, const float (*rgba)[4])
          dst[4 * i + c] = ref_ubyte(rgba[i][c]);
 }
 
-enum tfmt { TF_RGBA8, TF_BGRA8, TF_BGRX8, TF_F32, TF_F32_CLAMP, TF_GEN8, TF_COUNT };
+/* TF_F32_SNORM: float storage of a signed normalized target, clamped to
+ * [-1, 1]. */
+enum tfmt { TF_RGBA8, TF_BGRA8, TF_BGRX8, TF_F32, TF_F32_CLAMP, TF_GEN8, TF_F32_SNORM, TF_COUNT };
 static const char *const tfmt_name[TF_COUNT] = {
-   "RGBA8", "BGRA8", "BGRX8", "F32(generic)", "F32-clamp(generic)", "RGBA8(generic)"
+   "RGBA8", "BGRA8", "BGRX8", "F32(generic)", "F32-clamp(generic)", "RGBA8(generic)",
+   "F32-snorm(generic)"
 };
 
-static inline unsigned tfmt_cpp(enum tfmt f) { return f == TF_F32 || f == TF_F32_CLAMP ? 16 : 4; }
+static inline bool is_f32(enum tfmt f)
+{
+   return f == TF_F32 || f == TF_F32_CLAMP || f == TF_F32_SNORM;
+}
+
+static inline unsigned tfmt_cpp(enum tfmt f) { return is_f32(f) ? 16 : 4; }
 
 static inline struct rast_color_target make_cbuf(enum tfmt f, uint8_t *mem)
 {
@@ -153,9 +161,10 @@ static inline struct rast_color_target make_cbuf(enum tfmt f, uint8_t *mem)
    t.base = mem;
    t.cpp = tfmt_cpp(f);
    t.stride = (int)(W * t.cpp + 12);     /* padding catches stride mistakes */
-   t.load = f == TF_F32 || f == TF_F32_CLAMP ? f32_load : u8_load;
-   t.store = f == TF_F32 || f == TF_F32_CLAMP ? f32_store : u8_store;
+   t.load = is_f32(f) ? f32_load : u8_load;
+   t.store = is_f32(f) ? f32_store : u8_store;
    t.clamp = f != TF_F32;
+   t.snorm = f == TF_F32_SNORM;
    t.layout = f == TF_RGBA8 ? RAST_CL_RGBA8 : f == TF_BGRA8 ? RAST_CL_BGRA8 :
               f == TF_BGRX8 ? RAST_CL_BGRX8 : RAST_CL_GENERIC;
    return t;
@@ -177,13 +186,13 @@ static inline float cb_get(enum tfmt f, const struct rast_color_target *t, const
    const uint8_t *p = cb_pixel(t, mem, x, y);
    float v;
    switch (f) {
-   case TF_F32: case TF_F32_CLAMP: memcpy(&v, p + 4 * c, 4); return v;
+   case TF_F32: case TF_F32_CLAMP: case TF_F32_SNORM: memcpy(&v, p + 4 * c, 4); return v;
    case TF_BGRA8: case TF_BGRX8: return p[c == 3 ? 3 : 2 - c];
    default: return p[c];
    }
 }
 
-static inline bool is8(enum tfmt f) { return f != TF_F32 && f != TF_F32_CLAMP; }
+static inline bool is8(enum tfmt f) { return !is_f32(f); }
 
 /* ------------------------------------------------------------------ */
 /* Reference depth/stencil.                                             */
@@ -642,6 +651,12 @@ static inline void random_face(struct rast_stencil_face *f)
 /* Blend.                                                               */
 
 static inline double clampd(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
+static inline double clamp_snorm(double v) { return v < -1 ? -1 : v > 1 ? 1 : v; }
+/* What a target of format f clamps blend inputs and results to. */
+static inline double clamp_fmt(enum tfmt f, double v)
+{
+   return f == TF_F32 ? v : f == TF_F32_SNORM ? clamp_snorm(v) : clampd(v);
+}
 
 static inline double ref_factor(enum rast_blend_factor f, unsigned c, const double s[4],
                          const double s1[4], const double d[4], const double k[4])
@@ -743,7 +758,7 @@ static inline void color_fill_random(struct color_ctx *cc, unsigned i, enum tfmt
          cc->mem[i][b] = (uint8_t)rnd64();
    } else {
       for (unsigned b = 0; b + 4 <= CBUF_BYTES; b += 4) {
-         float v = rndf(-0.5f, 1.5f);
+         float v = rndf(f == TF_F32_SNORM ? -1.5f : -0.5f, 1.5f);
          memcpy(&cc->mem[i][b], &v, 4);
       }
    }
@@ -765,8 +780,7 @@ static inline bool chan_ok(enum tfmt f, unsigned c, float got, double want)
       const double w = clampd(want) * 255.0;
       return fabs(got - w) <= 1.0;    /* 1/255 after rounding */
    }
-   if (f == TF_F32_CLAMP)
-      want = clampd(want);
+   want = clamp_fmt(f, want);
    return fabs(got - want) <= 1e-5 + 1e-5 * fabs(want);
 }
 
@@ -776,7 +790,7 @@ static inline double dst_value(enum tfmt f, float raw, unsigned c)
       return 1.0;
    if (is8(f))
       return raw / 255.0;
-   return f == TF_F32_CLAMP ? clampd(raw) : raw;
+   return clamp_fmt(f, raw);
 }
 
 /* The seed (FIXPIPE_TEST_SEED, default fixed), printed by each program. */

@@ -41,11 +41,13 @@ static void test_blend(void)
                static uint8_t old[CBUF_BYTES];
                color_fill_keep(&cc, 0, f, old);
                struct rast_quad q = random_quad();
-               /* A quarter of the values outside [0, 1]: the clamps matter. */
+               /* A quarter of the values outside [0, 1] (of a signed
+                * target's, [-1, 1]): the clamps matter. */
+               const float lo = f == TF_F32_SNORM ? -1.5f : -0.25f;
                for (unsigned o = 0; o < 2; o++)
                   for (unsigned c = 0; c < 4; c++)
                      for (unsigned i = 0; i < 4; i++)
-                        cc.sd.color[o][c][i] = rndf(-0.25f, 1.25f);
+                        cc.sd.color[o][c][i] = rndf(lo, 1.25f);
                rc->quad(rc, &q);
 
                const bool clampin = f != TF_F32;
@@ -60,8 +62,8 @@ static void test_blend(void)
                      d[c] = dst_value(f, cb_get(f, &cc.t[0], old, p.x, p.y, c), c);
                      kk[c] = k[c];
                      if (clampin) {
-                        s[c] = clampd(s[c]); s1[c] = clampd(s1[c]);
-                        d[c] = clampd(d[c]); kk[c] = clampd(kk[c]);
+                        s[c] = clamp_fmt(f, s[c]); s1[c] = clamp_fmt(f, s1[c]);
+                        d[c] = clamp_fmt(f, d[c]); kk[c] = clamp_fmt(f, kk[c]);
                      }
                   }
                   for (unsigned c = 0; c < 4; c++) {
@@ -308,8 +310,7 @@ static void test_colormask(void)
                      continue;
                   }
                   double d = dst_value(f, was, c);
-                  if (f != TF_F32)
-                     d = clampd(d);
+                  d = clamp_fmt(f, d);
                   const double s = cc.sd.color[0][c][i];
                   const double want = blend ? s * sa + d * (1 - sa) : s;
                   CHECK(chan_ok(f, c, got, want), "%s mask %x blend %u: chan %u", tfmt_name[f],

@@ -3,7 +3,7 @@
  *
  * Blending is GL's, in float: with the target's `clamp` set, the source
  * colours, the destination and the constant colour are clamped to [0, 1]
- * first (and so is the result); MIN and MAX ignore the factors;
+ * ([-1, 1] for a signed normalized target) first (and so is the result); MIN and MAX ignore the factors;
  * SRC_ALPHA_SATURATE is min(As, 1 - Ad) for RGB and 1 for alpha.  The
  * factor and equation are chosen once per quad and channel, never per
  * pixel.  Unorm8 pixels read as x * (1/255) (Mesa's ubyte_to_float) and
@@ -74,21 +74,22 @@ static void blend_quad(const struct rast_cbuf_plan *p, const float (*src_in)[RAS
    const float (*sp)[RAST_QUAD_SIZE] = src_in, (*s1p)[RAST_QUAD_SIZE] = src1_in;
    const float (*dp)[RAST_QUAD_SIZE] = d_in;
 
+   const float lo = p->clamp_lo;
    if (p->clamp) {
       for (unsigned c = 0; c < 4; c++)
          for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-            s[c][i] = clamp01(src_in[c][i]);
+            s[c][i] = rast_clamp_lo(src_in[c][i], lo);
       sp = (const float (*)[RAST_QUAD_SIZE])s;
       if (p->uses_src1) {
          for (unsigned c = 0; c < 4; c++)
             for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-               s1[c][i] = clamp01(src1_in[c][i]);
+               s1[c][i] = rast_clamp_lo(src1_in[c][i], lo);
          s1p = (const float (*)[RAST_QUAD_SIZE])s1;
       }
       if (p->clamp_dst) {
          for (unsigned c = 0; c < 4; c++)
             for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
-               d[c][i] = clamp01(d_in[c][i]);
+               d[c][i] = rast_clamp_lo(d_in[c][i], lo);
          dp = (const float (*)[RAST_QUAD_SIZE])d;
       }
    }
@@ -120,7 +121,7 @@ static void blend_quad(const struct rast_cbuf_plan *p, const float (*src_in)[RAS
       }
       if (p->clamp_dst)    /* 8-bit stores clamp by themselves */
          for (i = 0; i < RAST_QUAD_SIZE; i++)
-            res[c][i] = clamp01(res[c][i]);
+            res[c][i] = rast_clamp_lo(res[c][i], lo);
    }
 }
 
@@ -272,7 +273,7 @@ static void gen_store(const struct rast_cbuf_plan *p, int x, int y, unsigned mas
          p->load(px, 1, v);
       for (unsigned c = 0; c < 4; c++)
          if (p->colormask & (1u << c))
-            v[0][c] = p->clamp ? clamp01(src[c][i]) : src[c][i];
+            v[0][c] = p->clamp ? rast_clamp_lo(src[c][i], p->clamp_lo) : src[c][i];
       p->store(px, 1, (const float (*)[4])v);
    }
 }
@@ -386,6 +387,7 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       p->load = t->load;
       p->store = t->store;
       p->clamp = t->clamp;
+      p->clamp_lo = t->clamp && t->snorm ? -1.0f : 0.0f;
       p->colormask = bt->colormask & 0xf;
       p->quad4 = !(rc->opts & RAST_OPT_SCALAR);
       p->fb_w = (int)rc->fb.width;
@@ -432,6 +434,7 @@ void rast_color_plan(struct rast_backend *be, const struct rast_context *rc)
       if (p->quad4 && rast_lanes()->c8_group && (affine || p->fast8 != RAST_CL_GENERIC))
          p->group = rast_lanes()->c8_group(layout, affine);
       for (unsigned c = 0; c < 4; c++)
-         p->konst[c] = p->clamp ? clamp01(rc->blend_color[c]) : rc->blend_color[c];
+         p->konst[c] = p->clamp ? rast_clamp_lo(rc->blend_color[c], p->clamp_lo)
+                                : rc->blend_color[c];
    }
 }

@@ -129,7 +129,7 @@ static void gen_logicop(const struct rast_cbuf_plan *p, int x, int y, unsigned m
       memcpy(di, lpixel(p, rast_qx(x, i), rast_qy(y, i)), cpp);
       float v[1][4];
       for (unsigned c = 0; c < 4; c++)
-         v[0][c] = rast_clamp01(src[c][i]);
+         v[0][c] = rast_clamp_lo(src[c][i], p->clamp_lo);
       p->store(si, 1, (const float (*)[4])v);
    }
    p->lop(s, d, res, RAST_QUAD_SIZE * cpp);

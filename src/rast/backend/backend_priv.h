@@ -61,6 +61,7 @@ struct rast_cbuf_plan {
    rast_load_func load;
    rast_store_func store;
    bool clamp;
+   float clamp_lo;                /* clamp's lower bound: 0, or -1 for snorm targets */
    uint8_t colormask;
    bool clamp_dst;                /* generic target that clamps: dst and result can
                                      leave [0, 1] */
@@ -203,6 +204,15 @@ static inline int rast_qy(int y, unsigned i) { return y + (int)(i >> 1); }
 static inline float rast_clamp01(float v)
 {
    v = v > 0.0f ? v : 0.0f;          /* NaN -> 0; compiles to maxss/minss */
+   return v < 1.0f ? v : 1.0f;
+}
+
+/* A clamping target's clamp: [lo, 1], lo 0 (unorm) or -1 (snorm), a
+ * constant of the plan; NaN gives 0, as util's packing of either. */
+static inline float rast_clamp_lo(float v, float lo)
+{
+   v = v == v ? v : 0.0f;
+   v = v > lo ? v : lo;
    return v < 1.0f ? v : 1.0f;
 }
 
