@@ -39,7 +39,12 @@ static void store_##fmt(uint8_t *dst, unsigned n, const float (*rgba)[4]) \
    X(R16_UINT) X(R16G16_UINT) X(R16G16B16A16_UINT) \
    X(R16_SINT) X(R16G16_SINT) X(R16G16B16A16_SINT) \
    X(R32_UINT) X(R32G32_UINT) X(R32G32B32A32_UINT) \
-   X(R32_SINT) X(R32G32_SINT) X(R32G32B32A32_SINT) X(R10G10B10A2_UINT)
+   X(R32_SINT) X(R32G32_SINT) X(R32G32B32A32_SINT) X(R10G10B10A2_UINT) \
+   X(R8_SNORM) X(R8G8_SNORM) X(R8G8B8A8_SNORM) X(R16_SNORM) X(R16G16_SNORM) \
+   X(R16G16B16A16_SNORM) \
+   X(R8G8B8X8_SNORM) X(R8G8B8X8_UINT) X(R8G8B8X8_SINT) X(R16G16B16X16_UNORM) \
+   X(R16G16B16X16_SNORM) X(R16G16B16X16_UINT) X(R16G16B16X16_SINT) \
+   X(R32G32B32X32_UINT) X(R32G32B32X32_SINT)
 
 FP_RT_LIST(FP_RT)
 
@@ -74,6 +79,7 @@ bool fp_format_color_target(enum pipe_format format, struct rast_color_target *c
    ct->load = f->load;
    ct->store = f->store;
    ct->clamp = util_format_is_unorm(format) || util_format_is_snorm(format);
+   ct->snorm = util_format_is_snorm(format);
    switch (format) {
    case PIPE_FORMAT_R8G8B8A8_UNORM: ct->layout = RAST_CL_RGBA8; break;
    case PIPE_FORMAT_B8G8R8A8_UNORM: ct->layout = RAST_CL_BGRA8; break;

@@ -134,6 +134,7 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_SEAMLESS_CUBE_MAP:        /* the sampler's flag (tex_sampler_desc) */
    case PIPE_CAP_CUBE_MAP_ARRAY:           /* the unit's TEX_TARGET_CUBE_ARRAY */
    case PIPE_CAP_TEXTURE_QUERY_LOD:        /* the unit's LOD (tex_unit_query_lod) */
+   case PIPE_CAP_SAMPLER_VIEW_TARGET:      /* views: their own target, format, levels, layers */
       return 1;
    /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
     * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled
