@@ -31,6 +31,8 @@ struct rast_context *rast_create(const struct rast_profile *profile)
    for (unsigned i = 0; i < RAST_MAX_VIEWPORTS; i++)
       rc->viewports[i] = (struct rast_scissor){ -(1 << 30), -(1 << 30), 1 << 30, 1 << 30 };
    rc->viewport = rc->viewports[0];
+   for (unsigned i = 0; i < RAST_MAX_VIEWPORTS; i++)
+      rc->depth_ranges[i] = (struct rast_depth_range){ 0.0f, 1.0f };
    rc->vl.vertex_size = 1;
    rc->texfmt = numsys_default();
    rc->dirty = true;
@@ -111,6 +113,16 @@ void rast_set_viewports(struct rast_context *rc, unsigned first, unsigned n,
    rast_flush(rc);
    for (unsigned i = 0; i < n && first + i < RAST_MAX_VIEWPORTS; i++)
       rc->viewports[first + i] = vp[i];
+   select_viewport_0(rc);
+   state_changed(rc);
+}
+
+void rast_set_depth_ranges(struct rast_context *rc, unsigned first, unsigned n,
+                           const struct rast_depth_range *r)
+{
+   rast_flush(rc);
+   for (unsigned i = 0; i < n && first + i < RAST_MAX_VIEWPORTS; i++)
+      rc->depth_ranges[first + i] = r[i];
    select_viewport_0(rc);
    state_changed(rc);
 }

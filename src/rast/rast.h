@@ -253,6 +253,11 @@ struct rast_raster_state {
                                     (GL ES: a wide point by the viewport's edge keeps its
                                     pixels inside); each is scissored to the viewport
                                     (rast_set_viewport), as llvmpipe does */
+   /* GL's depth clamp (ARB_depth_clamp, EXT_depth_clamp): draw no longer
+    * clips z, and the back end clamps each fragment's depth, the Z
+    * register's or the shader's, to the depth range of the primitive's
+    * viewport (rast_set_depth_ranges) instead of [0, 1]. */
+   bool depth_clamp;
 };
 
 struct rast_scissor { int minx, miny, maxx, maxy; };   /* max exclusive */
@@ -476,6 +481,14 @@ void rast_set_scissors(struct rast_context *rc, unsigned first, unsigned n,
                        const struct rast_scissor *sc);
 void rast_set_viewports(struct rast_context *rc, unsigned first, unsigned n,
                         const struct rast_scissor *vp);
+/* The depth ranges of viewports first to first + n - 1: glDepthRange's n
+ * and f as window depths, for rs.depth_clamp, which clamps a fragment's
+ * depth to [min(n, f), max(n, f)] of its primitive's viewport.  Each end is
+ * taken into [0, 1] (NaN: 0), GL's range, then into the Z register as set-up
+ * takes a vertex's depth.  [0, 1] until set. */
+struct rast_depth_range { float n, f; };
+void rast_set_depth_ranges(struct rast_context *rc, unsigned first, unsigned n,
+                           const struct rast_depth_range *r);
 void rast_set_depth_stencil(struct rast_context *rc, const struct rast_depth_stencil_state *dsa);
 void rast_set_stencil_ref(struct rast_context *rc, uint8_t front, uint8_t back);
 /* The samples drawn on a multisampled target (bit k: sample k; GL's sample

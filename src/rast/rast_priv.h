@@ -28,6 +28,7 @@ struct rast_context {
    struct rast_raster_state rs;
    struct rast_scissor scissors[RAST_MAX_VIEWPORTS];
    struct rast_scissor viewports[RAST_MAX_VIEWPORTS];
+   struct rast_depth_range depth_ranges[RAST_MAX_VIEWPORTS];
    struct rast_depth_stencil_state dsa;
    uint8_t stencil_ref[2];
    unsigned sample_mask;
@@ -54,7 +55,8 @@ struct rast_context {
    struct rast_stats mark;
 
    /* Chosen per primitive (set-up, rast_primitive_viewport): its viewport
-    * index and that viewport's scissor and pixels. */
+    * index and that viewport's scissor and pixels (and, in the back end,
+    * its depth range: rast_backend_viewport). */
    unsigned vp_index;
    struct rast_scissor scissor;
    struct rast_scissor viewport;
@@ -159,6 +161,10 @@ void rast_backend_sample(struct rast_context *rc, unsigned s);
  * gl_Layer, rast_vertex_layout.has_layer), and a target's address of a
  * layer and sample. */
 void rast_backend_layer(struct rast_context *rc, unsigned layer);
+/* The viewport whose depth range the next primitives' depths are clamped
+ * to (rs.depth_clamp; backend_zs.c), after validation, which plans
+ * rc->vp_index's. */
+void rast_backend_viewport(struct rast_context *rc, unsigned vp);
 uint8_t *rast_target_place(uint8_t *base0, unsigned layers, size_t layer_stride,
                            unsigned layer, unsigned s, size_t sample_stride);
 /* The clip of the scissor and framebuffer (setup.c): at validation, and
@@ -179,6 +185,7 @@ static inline void rast_primitive_viewport(struct rast_context *rc, const float 
          rc->scissor = rc->scissors[i];
          rc->viewport = rc->viewports[i];
          rast_compute_clip(rc);
+         rast_backend_viewport(rc, i);
       }
    }
 }

@@ -181,9 +181,10 @@ rast_c8_group_fn LANES_FN(c8_group_lanes)(enum rast_color_layout layout, bool bl
 /* ---- the early depth test of a group (lanes.h's rast_zgroup_fn) ----
  *
  * Sixteen lanes, quad i's pixels in lanes 4i to 4i + 3, each lane the
- * per-quad path's operations on its pixel: zconv_mul's clamp and rule
- * (backend_zs.c), the comparison with the stored 24 bits, and where it
- * passes on a covered pixel the write that keeps the word's top byte.
+ * per-quad path's operations on its pixel: zconv_mul's clamp (to the
+ * viewport's bounds, rast_zrange) and rule (backend_zs.c), the comparison
+ * with the stored 24 bits, and where it passes on a covered pixel the
+ * write that keeps the word's top byte.
  * zconv_mul divides t = (2 z max + full) >> s by B with a multiply;
  * here a division of doubles gives the same floor(t / B) for the states
  * rast_zs_plan lets through (zdiv_exact_in_doubles). */
@@ -197,8 +198,8 @@ static inline __m256i zs_unorm8(const struct rast_backend *be, const struct rast
 {
    __m512i z = _mm512_set_epi64(b->z[3], b->z[2], b->z[1], b->z[0], a->z[3], a->z[2], a->z[1],
                                 a->z[0]);
-   z = _mm512_min_epi64(_mm512_max_epi64(z, _mm512_setzero_si512()),
-                        _mm512_set1_epi64((long long)be->z_full));
+   z = _mm512_min_epi64(_mm512_max_epi64(z, _mm512_set1_epi64((long long)be->zr.lo)),
+                        _mm512_set1_epi64((long long)be->zr.hi));
    const __m512i n = _mm512_add_epi64(_mm512_mullo_epi64(z, _mm512_set1_epi64((long long)(2 * be->z_max))),
                                       _mm512_set1_epi64((long long)be->z_full));
    const __m512i t = _mm512_srl_epi64(n, _mm_cvtsi32_si128((int)be->zdiv.s));

@@ -104,6 +104,15 @@ struct rast_zdiv {
    unsigned s, k;
 };
 
+/* The bounds a fragment's depth is clamped to: the Z registers lo and hi
+ * (Zc = clamp(Z, lo, hi)), and the same bounds in the buffer's units,
+ * which clamp a depth the shader wrote (backend_zs.c).  Without the depth
+ * clamp, 0 and FULL: [0, 1]. */
+struct rast_zrange {
+   uint64_t lo, hi;
+   union { uint32_t u; float f; } code_lo, code_hi;
+};
+
 struct rast_backend {
    /* Depth/stencil. */
    rast_zconv_func zconv;
@@ -129,6 +138,11 @@ struct rast_backend {
    unsigned z_frac;               /* frac_bits of the profile */
    unsigned z_nbits;              /* N */
    struct rast_zdiv zdiv;         /* the rule's division as a multiply */
+   /* The depth range of each viewport (rs.depth_clamp), and that of the
+    * viewport being drawn (rast_backend_viewport): what every conversion
+    * of a Z register or shader depth clamps to. */
+   struct rast_zrange zranges[RAST_MAX_VIEWPORTS];
+   struct rast_zrange zr;
    /* A group's early depth test on lanes (lanes.h), or NULL; zgroup_b is
     * the rule's divisor (2 z_full >> zdiv.s) as a double, and the target's
     * size says which quads have all four pixels in it. */

@@ -6,8 +6,10 @@
  *
  *  From the rasterizer: q->z[i] is the Z register, Zfixed in units of
  *  2^-frac_bits, and FULL = (2^z_bits - 1) << frac_bits means depth 1.0.
- *  Zc = clamp(Zfixed, 0, FULL).  For an N-bit unorm buffer (Z16, Z24 in any
- *  of its four packings, Z32)
+ *  Zc = clamp(Zfixed, LO, HI), where [LO, HI] is [0, FULL] (depth [0, 1])
+ *  or, with the depth clamp (rs.depth_clamp), the Z registers of the
+ *  primitive's viewport's min(n, f) and max(n, f), which lie inside it.
+ *  For an N-bit unorm buffer (Z16, Z24 in any of its four packings, Z32)
  *
  *        stored = floor((2 * Zc * (2^N - 1) + FULL) / (2 * FULL))
  *
@@ -27,7 +29,11 @@
  *
  *  Written by the shader: d = out->depth[i] clamped to [0, 1] (NaN -> 0);
  *  unorm N: floor(d * (2^N - 1) + 1/2) computed exactly in integers from the
- *  float's bits; Z32F: d itself.
+ *  float's bits; Z32F: d itself.  With the depth clamp, a d below LO / FULL
+ *  (exactly) stores what Zc = LO stores, one above HI / FULL what HI does:
+ *  both rules round the exact depth to the buffer monotonically, so that is
+ *  the shader's value clamped in buffer units to the bounds' values, which
+ *  validation computes once per viewport (struct rast_zrange).
  *
  * The compare is "fragment func buffer" in those units.  Stencil per GL ES:
  * (ref & valuemask) func (stencil & valuemask), then the face's fail, zfail
@@ -177,11 +183,12 @@ uint32_t rast_float_to_unorm(float d, unsigned nbits)
    return (uint32_t)((m * max + (UINT64_C(1) << (s - 1))) >> s);
 }
 
+/* The bounds are registers of the state and the viewport, [0, FULL]
+ * without the depth clamp: one code path either way, no flag per pixel. */
 static inline uint64_t clamp_z(const struct rast_backend *be, int64_t z)
 {
-   if (z <= 0)
-      return 0;
-   return (uint64_t)z > be->z_full ? be->z_full : (uint64_t)z;
+   const int64_t lo = (int64_t)be->zr.lo, hi = (int64_t)be->zr.hi;
+   return (uint64_t)(z < lo ? lo : z > hi ? hi : z);
 }
 
 static inline float clamp_depth(float d)
@@ -250,6 +257,30 @@ static void zconv_shader_float(const struct rast_backend *be, const struct rast_
    (void)be; (void)q;
    for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
       z->f[i] = clamp_depth(out->depth[i]);
+}
+
+/* The depth clamp of a shader's depth: its value in buffer units clamped
+ * to the bounds' (the header comment says why that is the exact clamp). */
+static void zconv_shader_unorm_clamp(const struct rast_backend *be, const struct rast_quad *q,
+                                     const struct rast_shaded_quad *out, union rast_zq *z)
+{
+   (void)q;
+   const uint32_t lo = be->zr.code_lo.u, hi = be->zr.code_hi.u;
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      const uint32_t u = rast_float_to_unorm(clamp_depth(out->depth[i]), be->z_nbits);
+      z->u[i] = u < lo ? lo : u > hi ? hi : u;
+   }
+}
+
+static void zconv_shader_float_clamp(const struct rast_backend *be, const struct rast_quad *q,
+                                     const struct rast_shaded_quad *out, union rast_zq *z)
+{
+   (void)q;
+   const float lo = be->zr.code_lo.f, hi = be->zr.code_hi.f;
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      const float d = clamp_depth(out->depth[i]);
+      z->f[i] = d < lo ? lo : d > hi ? hi : d;
+   }
 }
 
 /* ------------------------------------------------------------------ */
@@ -483,6 +514,51 @@ static bool layout_has_stencil(enum rast_zs_layout l)
           l == RAST_ZS_Z32F_S8X24 || l == RAST_ZS_S8;
 }
 
+/* A depth range's end in the Z register, as set-up takes a vertex's depth
+ * (rast_setup_attribs), from GL's [0, 1] (NaN: 0): never saturated. */
+static uint64_t depth_register(const struct rast_profile *prof, float v)
+{
+   const double d = v > 0.0f ? (v < 1.0f ? (double)v : 1.0) : 0.0;
+   const double zfull = (double)(INT64_C(1) << prof->z_bits) - 1.0;
+   struct fx_sat none = { 0, 0 };
+   return (uint64_t)fx_from_double(prof->z, d * zfull, &none);
+}
+
+/* Every viewport's bounds: its depth range's with the depth clamp, else
+ * [0, FULL]; and their values in the buffer's units, by the register's
+ * rule (zconv_float's, or the unorm rule that every zconv_* computes). */
+static void zranges_plan(struct rast_backend *be, const struct rast_context *rc)
+{
+   const bool is_float = be->zfamily == RAST_ZF_F32 || be->zfamily == RAST_ZF_F32S8;
+   for (unsigned i = 0; i < RAST_MAX_VIEWPORTS; i++) {
+      struct rast_zrange *r = &be->zranges[i];
+      r->lo = 0;
+      r->hi = be->z_full;
+      if (rc->rs.depth_clamp) {
+         const uint64_t a = depth_register(rc->profile, rc->depth_ranges[i].n);
+         const uint64_t b = depth_register(rc->profile, rc->depth_ranges[i].f);
+         r->lo = a < b ? a : b;
+         r->hi = a < b ? b : a;
+      }
+      if (is_float) {
+         r->code_lo.f = (float)((double)r->lo / (double)be->z_full);
+         r->code_hi.f = (float)((double)r->hi / (double)be->z_full);
+      } else {
+         r->code_lo.u = rast_z_to_unorm(r->lo, be->z_full, be->z_max);
+         r->code_hi.u = rast_z_to_unorm(r->hi, be->z_full, be->z_max);
+      }
+   }
+   be->zr = be->zranges[rc->vp_index < RAST_MAX_VIEWPORTS ? rc->vp_index
+                                                          : RAST_MAX_VIEWPORTS - 1];
+}
+
+void rast_backend_viewport(struct rast_context *rc, unsigned vp)
+{
+   struct rast_backend *be = rc->back_priv;
+   if (be)
+      be->zr = be->zranges[vp < RAST_MAX_VIEWPORTS ? vp : RAST_MAX_VIEWPORTS - 1];
+}
+
 void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
 {
    const struct rast_depth_stencil_state *dsa = &rc->dsa;
@@ -501,6 +577,7 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
    be->z_max = nbits ? (UINT64_C(1) << nbits) - 1 : 0;
    be->z_frac = rc->profile->z.frac_bits;
    be->z_full = ((UINT64_C(1) << rc->profile->z_bits) - 1) << be->z_frac;
+   zranges_plan(be, rc);
 
    /* GL: without a depth buffer the depth test passes, without a stencil
     * buffer the stencil test passes, and nothing is written. */
@@ -528,7 +605,9 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
    if (!be->depth_test)
       return;
    const bool is_float = be->zfamily == RAST_ZF_F32 || be->zfamily == RAST_ZF_F32S8;
-   if (rc->fs.writes_depth)
+   if (rc->fs.writes_depth && rc->rs.depth_clamp)
+      be->zconv = is_float ? zconv_shader_float_clamp : zconv_shader_unorm_clamp;
+   else if (rc->fs.writes_depth)
       be->zconv = is_float ? zconv_shader_float : zconv_shader_unorm;
    else if (is_float)
       be->zconv = zconv_float;

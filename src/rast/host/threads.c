@@ -418,6 +418,7 @@ static void sync_state(struct rast_context *w, const struct rast_context *rc, un
    w->rs = rc->rs;
    memcpy(w->scissors, rc->scissors, sizeof(w->scissors));
    memcpy(w->viewports, rc->viewports, sizeof(w->viewports));
+   memcpy(w->depth_ranges, rc->depth_ranges, sizeof(w->depth_ranges));
    w->vp_index = rc->vp_index;
    w->scissor = rc->scissor;
    w->viewport = rc->viewport;
