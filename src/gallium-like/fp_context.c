@@ -178,6 +178,11 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    rast_set_texfmt(fp->rast, fp->opts->texfmt);
    rast_set_options(fp->rast, fp_options_rast(fp->opts));
    rast_set_interp(fp->rast, fp->opts->interp);
+   /* GL's default depth range, [0, 1], which the model starts with */
+   for (unsigned i = 0; i < PIPE_MAX_VIEWPORTS; i++) {
+      fp->viewports[i].scale[2] = fp->viewports[i].translate[2] = 0.5f;
+      fp->depth_ranges[i] = (struct rast_depth_range){ 0.0f, 1.0f };
+   }
    fp->vectors_pending = fp->opts->vectors.dir[0] != '\0';
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);

@@ -146,6 +146,11 @@ struct fp_context {
    const struct fp_velems *velems;
 
    struct pipe_framebuffer_state framebuffer;
+   /* The viewports as set, and the depth ranges last given to the model
+    * (fp_update_depth_ranges): they follow both these and the
+    * rasterizer's clip_halfz. */
+   struct pipe_viewport_state viewports[PIPE_MAX_VIEWPORTS];
+   struct rast_depth_range depth_ranges[PIPE_MAX_VIEWPORTS];
    struct pipe_vertex_buffer vertex_buffer[PIPE_MAX_ATTRIBS];
    unsigned num_vertex_buffers;
    struct pipe_constant_buffer constants[PIPE_SHADER_TYPES][PIPE_MAX_CONSTANT_BUFFERS];

@@ -135,6 +135,10 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_CUBE_MAP_ARRAY:           /* the unit's TEX_TARGET_CUBE_ARRAY */
    case PIPE_CAP_TEXTURE_QUERY_LOD:        /* the unit's LOD (tex_unit_query_lod) */
    case PIPE_CAP_SAMPLER_VIEW_TARGET:      /* views: their own target, format, levels, layers */
+   /* GL's depth clamp: draw stops clipping z (depth_clip_near/far) and the
+    * model clamps each fragment's depth to its viewport's range
+    * (rast_raster_state.depth_clamp). */
+   case PIPE_CAP_DEPTH_CLIP_DISABLE:
       return 1;
    /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
     * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled

@@ -218,7 +218,31 @@ static void *fp_create_rasterizer_state(struct pipe_context *pipe,
    s->rast.point_quad_rasterization = r->point_quad_rasterization;
    s->rast.sprite_coord_lower_left = r->sprite_coord_mode == PIPE_SPRITE_COORD_LOWER_LEFT;
    s->rast.point_tri_clip = r->point_tri_clip;
+   /* st clears depth_clip_near/far for GL's depth clamp, and draw then
+    * stops clipping z; depth_clamp (st: !depth_clip_far) makes the model
+    * clamp each fragment's depth to its viewport's range instead. */
+   s->rast.depth_clamp = r->depth_clamp;
    return s;
+}
+
+/* The model's depth ranges: each viewport's n and f, the ends of its z
+ * transform (util_viewport_zmin_zmax's, unordered: the model orders
+ * them), with the rasterizer's clip_halfz.  Given to the model only when
+ * they change: every setter flushes it. */
+static void fp_update_depth_ranges(struct fp_context *fp)
+{
+   STATIC_ASSERT(PIPE_MAX_VIEWPORTS == RAST_MAX_VIEWPORTS);
+   const bool halfz = fp->rasterizer && fp->rasterizer->base.clip_halfz;
+   struct rast_depth_range r[PIPE_MAX_VIEWPORTS];
+   for (unsigned i = 0; i < PIPE_MAX_VIEWPORTS; i++) {
+      const struct pipe_viewport_state *vp = &fp->viewports[i];
+      r[i].n = halfz ? vp->translate[2] : vp->translate[2] - vp->scale[2];
+      r[i].f = vp->translate[2] + vp->scale[2];
+   }
+   if (memcmp(r, fp->depth_ranges, sizeof(r))) {
+      memcpy(fp->depth_ranges, r, sizeof(r));
+      rast_set_depth_ranges(fp->rast, 0, PIPE_MAX_VIEWPORTS, r);
+   }
 }
 
 static void fp_bind_rasterizer_state(struct pipe_context *pipe, void *cso)
@@ -230,6 +254,7 @@ static void fp_bind_rasterizer_state(struct pipe_context *pipe, void *cso)
    draw_set_rasterizer_state(fp->draw, s ? &s->draw : NULL, s);
    if (s)
       rast_set_raster_state(fp->rast, &s->rast);
+   fp_update_depth_ranges(fp);   /* clip_halfz moves n */
    fp->vl_valid = false;   /* sprite_coord_enable changes the vertex layout */
 }
 
@@ -358,8 +383,11 @@ static void fp_set_viewport_states(struct pipe_context *pipe, unsigned start, un
                                     (int)(vp[i].scale[0] * 2.0f + x0 - 0.501f) + 1,
                                     (int)(half_height * 2.0f + y0 - 0.501f) + 1 };
    }
-   if (num)
+   if (num) {
       rast_set_viewports(fp->rast, start, num, r);
+      memcpy(&fp->viewports[start], vp, num * sizeof(*vp));
+      fp_update_depth_ranges(fp);
+   }
 }
 
 static void fp_set_scissor_states(struct pipe_context *pipe, unsigned start, unsigned num,
