@@ -63,6 +63,14 @@ const struct rast_profile *rast_get_profile(const struct rast_context *rc)
    return rc->profile;
 }
 
+/* A setter's change starts the next primitives at viewport 0 again. */
+static void select_viewport_0(struct rast_context *rc)
+{
+   rc->vp_index = 0;
+   rc->scissor = rc->scissors[0];
+   rc->viewport = rc->viewports[0];
+}
+
 void rast_set_framebuffer(struct rast_context *rc, const struct rast_framebuffer *fb)
 {
    rast_flush(rc);
@@ -77,13 +85,6 @@ void rast_set_raster_state(struct rast_context *rc, const struct rast_raster_sta
    state_changed(rc);
 }
 
-/* A setter's change starts the next primitives at viewport 0 again. */
-static void select_viewport_0(struct rast_context *rc)
-{
-   rc->vp_index = 0;
-   rc->scissor = rc->scissors[0];
-   rc->viewport = rc->viewports[0];
-}
 
 void rast_set_scissors(struct rast_context *rc, unsigned first, unsigned n,
                        const struct rast_scissor *sc)
@@ -165,6 +166,10 @@ void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_la
 {
    rast_flush(rc);
    rc->vl = *vl;
+   /* Set-up picks a primitive's viewport only from an index in its vertex:
+    * a layout without one draws with viewport 0 (GL's, unless a geometry
+    * shader writes gl_ViewportIndex), not with the last index seen. */
+   select_viewport_0(rc);
    state_changed(rc);
 }
 

@@ -24,7 +24,9 @@
  * in groups; and without the clamp, [0, 1] as before.  Each part also
  * counts the fragments the clamp moved, so that a run it never acted on
  * fails.  Part 3: a vertex depth beyond the Z register saturates at set-up,
- * counted, and its fragments still land inside the range.
+ * counted, and its fragments still land inside the range.  Part 4: after
+ * primitives with a viewport index, those of a layout without one take
+ * viewport 0's scissor and range.
  *
  *   test_depth_clamp          (FIXPIPE_TEST_SEED: the random seed)
  */
@@ -576,11 +578,107 @@ static void test_reach(void)
    printf("part 3, the Z register's reach: %s\n", failures == before ? "ok" : "FAILED");
 }
 
+/* ------------------------------------------------------------------ */
+/* Part 4: primitives without a viewport index take viewport 0.          */
+
+/* A triangle over the whole target at window depth z (slots as make_tris). */
+static void whole_target(struct tri *t, float z, uint32_t vp)
+{
+   const float xy[3][2] = { { -4, -4 }, { 3 * TW, -4 }, { -4, 3 * TH } };
+   memset(t, 0, sizeof *t);
+   for (unsigned v = 0; v < 3; v++) {
+      t->v[v][0][0] = xy[v][0];
+      t->v[v][0][1] = xy[v][1];
+      t->v[v][0][2] = z;
+      t->v[v][0][3] = 1.0f;
+      memcpy(&t->v[v][3][0], &vp, sizeof vp);
+   }
+}
+
+/* A draw whose primitives take viewport 2 by their index, then one whose
+ * layout has no index: GL draws the second with viewport 0, its scissor
+ * and its depth range, whatever index the last primitive before it had. */
+static void test_no_index(void)
+{
+   const unsigned before = failures;
+   const struct rast_profile *p = profile_named("seed");
+   const enum rast_zs_layout l = RAST_ZS_Z24_S8;
+   static struct seen seen;
+   memset(zbuf, 0, sizeof zbuf);
+   memset(cbuf, 0, sizeof cbuf);
+   memset(&seen, 0xff, sizeof seen);
+   struct rast_context *rc = rast_create(p);
+   struct rast_framebuffer fb;
+   memset(&fb, 0, sizeof fb);
+   fb.width = TW;
+   fb.height = TH;
+   fb.nr_cbufs = 1;
+   fb.cbuf[0] = (struct rast_color_target){ .base = cbuf, .stride = TW * 4, .cpp = 4,
+                                            .layout = RAST_CL_RGBA8, .load = u8_load,
+                                            .store = u8_store, .clamp = true };
+   fb.zs = (struct rast_zs_target){ .base = zbuf, .stride = TW * 4, .layout = l };
+   rast_set_framebuffer(rc, &fb);
+   struct rast_raster_state rs;
+   memset(&rs, 0, sizeof rs);
+   rs.half_pixel_center = true;
+   rs.depth_clamp = true;
+   rs.scissor = true;
+   rast_set_raster_state(rc, &rs);
+   set_plain_blend(rc);
+   set_depth_test(rc, RAST_FUNC_ALWAYS);
+   struct rast_depth_range ranges[RAST_MAX_VIEWPORTS];
+   struct rast_scissor sc[RAST_MAX_VIEWPORTS];
+   for (unsigned i = 0; i < RAST_MAX_VIEWPORTS; i++) {
+      ranges[i] = (struct rast_depth_range){ 0.7f, 0.9f };
+      sc[i] = (struct rast_scissor){ 0, 0, 8, 8 };
+   }
+   ranges[0] = (struct rast_depth_range){ 0.2f, 0.6f };
+   sc[0] = (struct rast_scissor){ 0, 0, TW, TH };
+   rast_set_depth_ranges(rc, 0, RAST_MAX_VIEWPORTS, ranges);
+   rast_set_scissors(rc, 0, RAST_MAX_VIEWPORTS, sc);
+   struct rast_vertex_layout vl;
+   memset(&vl, 0, sizeof vl);
+   vl.vertex_size = 4;
+   vl.num_varyings = 2;
+   vl.varying[0] = (struct rast_varying){ .slot = 1, .interp = RAST_INTERP_CONSTANT,
+                                          .usage_mask = 1 };
+   vl.varying[1] = (struct rast_varying){ .slot = 2, .interp = RAST_INTERP_LINEAR,
+                                          .usage_mask = 1 };
+   vl.has_viewport_index = true;
+   vl.viewport_slot = 3;
+   rast_set_vertex_layout(rc, &vl);
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof fs);
+   fs.ctx = &seen;
+   fs.shade = shade_seen;
+   fs.num_outputs = 1;
+   rast_set_shader(rc, &fs);
+   whole_target(&tris[0], 0.3f, 2);
+   rast_triangle(rc, (const float (*)[4])tris[0].v[0], (const float (*)[4])tris[0].v[1],
+                 (const float (*)[4])tris[0].v[2]);
+   vl.has_viewport_index = false;
+   rast_set_vertex_layout(rc, &vl);
+   whole_target(&tris[0], 0.95f, 2);
+   rast_triangle(rc, (const float (*)[4])tris[0].v[0], (const float (*)[4])tris[0].v[1],
+                 (const float (*)[4])tris[0].v[2]);
+   rast_flush(rc);
+   rast_destroy(rc);
+   const uint32_t want = ref_zconv_reg(p, l, (int64_t)ref_range_of(p, ranges[0], true).hi);
+   unsigned bad = 0;
+   for (int px = 0; px < TW * TH; px++)
+      bad += zbuf_get(l, px) != want;
+   CHECK(bad == 0, "%u of %u pixels not drawn with viewport 0's scissor and depth range "
+         "(pixel (%d, %d): %08x, want %08x)", bad, TW * TH, TW - 1, TH - 1,
+         zbuf_get(l, TW * TH - 1), want);
+   printf("part 4, no index after an index: %s\n", failures == before ? "ok" : "FAILED");
+}
+
 int main(void)
 {
    backend_seed("test_depth_clamp");
    test_quads();
    test_triangles();
    test_reach();
+   test_no_index();
    return backend_summary();
 }
