@@ -153,6 +153,15 @@ static void fp_jit_sample(struct tgsi_sampler *s, uint32_t texture, uint32_t sam
       return;
    }
 
+   if (op == LP_SAMPLER_OP_LODQ) {
+      /* textureQueryLod: the unit's levels in x, its LOD in y, as gallivm
+       * returns them; exec_lodq takes the implicit LOD */
+      memset(rgba, 0, sizeof(float[4][RAST_QUAD_SIZE]));
+      s->query_lod(s, texture, sampler, arg[0], arg[1], arg[2], arg[3], TGSI_SAMPLER_LOD_NONE,
+                   rgba[0], rgba[1]);
+      return;
+   }
+
    if (op == LP_SAMPLER_OP_GATHER) {
       /* exec_tex's TG4: the component in the last operand's bits */
       union { uint32_t u; float f; } comp = {
