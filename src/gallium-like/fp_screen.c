@@ -139,6 +139,12 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
     * model clamps each fragment's depth to its viewport's range
     * (rast_raster_state.depth_clamp). */
    case PIPE_CAP_DEPTH_CLIP_DISABLE:
+   /* Indirect draws: util_draw_indirect reads the arguments (fp_draw.c),
+    * as for GL ES 3.1; st loops over multi-draws. */
+   case PIPE_CAP_DRAW_INDIRECT:
+   /* copy_image: resource_copy_region copies blocks of one size whatever
+    * the formats (util_resource_copy_region), compressed or not. */
+   case PIPE_CAP_COPY_BETWEEN_COMPRESSED_AND_PLAIN_FORMATS:
       return 1;
    /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
     * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled
