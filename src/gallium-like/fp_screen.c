@@ -145,6 +145,11 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    /* copy_image: resource_copy_region copies blocks of one size whatever
     * the formats (util_resource_copy_region), compressed or not. */
    case PIPE_CAP_COPY_BETWEEN_COMPRESSED_AND_PLAIN_FORMATS:
+   /* Doubles: shader arithmetic (tgsi_exec, draw's gallivm; compiled
+    * fragment shaders with 64-bit operations stay in tgsi_exec), outside
+    * the model; a double varying is flat, two 32-bit words the model
+    * copies from the provoking vertex. */
+   case PIPE_CAP_DOUBLES:
       return 1;
    /* Uniform blocks are read by byte offset (TGSI LOAD in tgsi_exec and
     * draw's gallivm, mesa/patches 0009-0011; NIR's load_ubo in compiled
