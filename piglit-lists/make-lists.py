@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the piglit test lists (gles2, gles3, gles31, raster, texture, xfb, smoke) from piglit's profiles.
+"""Writes the piglit test lists (gles2, gles3, gles31, raster, texture, gl3, xfb, smoke) from piglit's profiles.
 
 usage: make-lists.py [--piglit DIR] [--out DIR] [--check]
 
@@ -156,6 +156,24 @@ def in_xfb(t):
     """Transform feedback is off topic for raster and texture, not here."""
     return es_version(t) is None and t.program != "glslparsertest" and \
         t.profile != "glslparser" and bool(XFB_GROUPS.match(t.group))
+
+
+# Desktop GL 3.1 to 3.3 and GLSL 1.40 to 3.30, the versions fixpipe exposes: their own groups and
+# the extensions they are made of.  Left out: the glslparser profile and the generated
+# built-in-function tests (the compiler's, not the model's: thousands of them), and the depth
+# clamp and seamless cube map groups, which raster and texture run.
+GL3_GROUPS = re.compile(r"^spec@(!opengl 3\.[123]|glsl-1\.[45]0|glsl-3\.30|arb_texture_buffer_object"
+                        r"|arb_texture_buffer_range|arb_uniform_buffer_object"
+                        r"|arb_explicit_attrib_location|arb_shader_bit_encoding|arb_occlusion_query2"
+                        r"|arb_timer_query|arb_sync|arb_texture_multisample"
+                        r"|arb_draw_elements_base_vertex|arb_fragment_coord_conventions"
+                        r"|arb_instanced_arrays|arb_vertex_type_2_10_10_10_rev"
+                        r"|arb_geometry_shader4)$")
+
+
+def in_gl3(t):
+    return es_version(t) is None and t.profile != "glslparser" and \
+        bool(GL3_GROUPS.match(t.group)) and "built-in-functions" not in t.lname
 
 
 def in_texture(t):
@@ -344,6 +362,10 @@ def main():
         "texture": ([t.name for t in tests if in_texture(t)],
                     "# Desktop GL tests about textures: formats, wrap, filtering, mipmaps, cube\n"
                     "# maps, NPOT, LOD, texelFetch, shadow samplers (see docs/piglit.md).\n"),
+        "gl3": ([t.name for t in tests if in_gl3(t)],
+                "# Desktop GL 3.1 to 3.3 and GLSL 1.40 to 3.30: texture buffers, uniform blocks,\n"
+                "# geometry shaders and layered rendering, multisample textures, sync objects\n"
+                "# (see docs/piglit.md).\n"),
         "xfb": ([t.name for t in tests if in_xfb(t)],
                 "# Desktop GL tests of transform feedback: EXT_transform_feedback,\n"
                 "# ARB_transform_feedback2/3, the overflow queries (see docs/piglit.md).\n"),
