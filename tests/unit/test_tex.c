@@ -993,6 +993,103 @@ static void texel_fetch_and_swizzle(void)
       CHECK(rgba[0][p] == 0 && rgba[3][p] == 0 && rgba[1][p] == 1, "out of range %u", p);
 }
 
+/* Min/max reduction (ARB_texture_filter_minmax): LINEAR on a level gives
+ * the least or greatest tap among those with a nonzero weight, per
+ * channel, against a reference that lists the footprint's texels itself;
+ * coordinates a quarter texel apart (weights 0, 64, 128, 192 exactly),
+ * 2-D and 3-D; and with two mip levels, the least or greatest of the two
+ * levels' results, as the reduction takes every texel with a nonzero
+ * weight (D3D's and llvmpipe's reading; the LOD's fraction is not 0). */
+static void reduction_minmax(void)
+{
+   enum { N = 8 };
+   static uint8_t texels[N * N * N * 4], lv1[(N / 2) * (N / 2) * 4];
+   for (unsigned i = 0; i < sizeof(texels); i++)
+      texels[i] = (uint8_t)(t_rand() * 256);
+   for (unsigned i = 0; i < sizeof(lv1); i++)
+      lv1[i] = (uint8_t)(t_rand() * 256);
+   const struct numsys *ns = numsys_default();
+   unsigned checked = 0;
+   for (unsigned dims = 2; dims <= 3; dims++)
+      for (unsigned r = TEX_REDUCE_MIN; r <= TEX_REDUCE_MAX; r++) {
+         struct tex_view_desc v;
+         struct tex_sampler_desc sd;
+         struct tex_unit u;
+         view_1level(&v, dims == 3 ? TEX_TARGET_3D : TEX_TARGET_2D, TEX_FMT_RGBA8, texels, N, N,
+                     dims == 3 ? N : 1);
+         samp_init(&sd, TEX_WRAP_CLAMP_TO_EDGE, TEX_FILTER_LINEAR);
+         sd.reduction = (enum tex_reduction)r;
+         tex_unit_bind(&u, ns, &v, &sd, &st);
+         for (unsigned k = 0; k < 200; k++) {
+            int i[3], q[3];
+            struct tex_quad quad;
+            memset(&quad, 0, sizeof(quad));
+            for (unsigned a = 0; a < 3; a++) {
+               i[a] = (int)(t_rand() * (N - 1));
+               q[a] = (int)(t_rand() * 4);
+            }
+            /* texel space i + q/4 is coordinate (i + 1/2 + q/4) / N */
+            quad.s[0] = (i[0] + 0.5f + q[0] * 0.25f) / N;
+            quad.t[0] = (i[1] + 0.5f + q[1] * 0.25f) / N;
+            quad.r[0] = (i[2] + 0.5f + q[2] * 0.25f) / N;
+            for (unsigned p = 1; p < TEX_QUAD; p++) {
+               quad.s[p] = quad.s[0];
+               quad.t[p] = quad.t[0];
+               quad.r[p] = quad.r[0];
+            }
+            float rgba[4][TEX_QUAD];
+            tex_unit_sample(&u, &quad, TEX_LOD_ZERO, rgba);
+            for (unsigned c = 0; c < 4; c++) {
+               int want = r == TEX_REDUCE_MIN ? 256 : -1;
+               for (int dz = 0; dz <= (dims == 3 && q[2] ? 1 : 0); dz++)
+                  for (int dy = 0; dy <= (q[1] ? 1 : 0); dy++)
+                     for (int dx = 0; dx <= (q[0] ? 1 : 0); dx++) {
+                        const int z = dims == 3 ? i[2] + dz : 0;
+                        const int t = texels[4 * ((z * N + i[1] + dy) * N + i[0] + dx) + c];
+                        want = r == TEX_REDUCE_MIN ? (t < want ? t : want) : (t > want ? t : want);
+                     }
+               CHECK(fabs(rgba[c][0] * 255 - want) < 1e-3, "%s %uD at %d+%d/4 %d+%d/4: ch %u %g, "
+                     "want %d", r == TEX_REDUCE_MIN ? "min" : "max", dims, i[0], q[0], i[1], q[1],
+                     c, rgba[c][0] * 255, want);
+               checked++;
+            }
+         }
+         if (dims != 2)
+            continue;
+         /* two levels: each level reduced, then the two reduced again */
+         v.num_levels = 2;
+         v.level[1].data = lv1;
+         v.level[1].w = v.level[1].h = N / 2;
+         v.level[1].row_stride = 4 * (N / 2);
+         sd.mip = TEX_MIP_LINEAR;
+         struct tex_unit um, u0, u1;
+         tex_unit_bind(&um, ns, &v, &sd, &st);
+         sd.min_lod = sd.max_lod = 0.0f;
+         tex_unit_bind(&u0, ns, &v, &sd, &st);
+         sd.min_lod = sd.max_lod = 1.0f;
+         tex_unit_bind(&u1, ns, &v, &sd, &st);
+         struct tex_quad quad;
+         memset(&quad, 0, sizeof(quad));
+         for (unsigned p = 0; p < TEX_QUAD; p++) {
+            quad.s[p] = 0.37f + 0.05f * (float)p;
+            quad.t[p] = 0.61f - 0.03f * (float)p;
+            quad.lod[p] = 0.25f + 0.125f * (float)p;
+         }
+         float m[4][TEX_QUAD], a0[4][TEX_QUAD], a1[4][TEX_QUAD];
+         tex_unit_sample(&um, &quad, TEX_LOD_EXPLICIT, m);
+         tex_unit_sample(&u0, &quad, TEX_LOD_EXPLICIT, a0);
+         tex_unit_sample(&u1, &quad, TEX_LOD_EXPLICIT, a1);
+         for (unsigned p = 0; p < TEX_QUAD; p++)
+            for (unsigned c = 0; c < 4; c++) {
+               const float want = r == TEX_REDUCE_MIN ? fminf(a0[c][p], a1[c][p])
+                                                      : fmaxf(a0[c][p], a1[c][p]);
+               CHECK(fabsf(m[c][p] - want) < 1e-5f, "%s mip pixel %u ch %u: %g, want %g",
+                     r == TEX_REDUCE_MIN ? "min" : "max", p, c, m[c][p], want);
+            }
+      }
+   CHECK(checked == 2 * 2 * 200 * 4, "reduction checks %u", checked);
+}
+
 /* A texture buffer: one row of texels, by index alone; the row and the
  * layer must be zero (the glue passes zero), indices outside the row read
  * zero before the swizzle. */
@@ -1230,6 +1327,7 @@ int main(void)
    formats();
    texel_fetch_and_swizzle();
    texel_fetch_buffer();
+   reduction_minmax();
    gather();
    printf("  range events counted: sat %llu flush %llu\n", (unsigned long long)st.sat,
           (unsigned long long)st.flush);

@@ -47,6 +47,10 @@ enum tex_wrap {
 };
 
 enum tex_filter { TEX_FILTER_NEAREST, TEX_FILTER_LINEAR };
+/* How LINEAR combines a level's taps (GL's TEXTURE_REDUCTION_MODE, gallium's
+ * order): the weighted average, or the least or greatest of the taps whose
+ * weight is not zero (ARB/EXT_texture_filter_minmax). */
+enum tex_reduction { TEX_REDUCE_AVERAGE, TEX_REDUCE_MIN, TEX_REDUCE_MAX };
 enum tex_mip { TEX_MIP_NONE, TEX_MIP_NEAREST, TEX_MIP_LINEAR };
 
 /* Comparison functions in GL's order. */
@@ -115,6 +119,7 @@ struct tex_sampler_desc {
    enum tex_mip mip;
    bool normalized;             /* false: texel coordinates (RECT) */
    bool seamless_cube;          /* cube maps filtered across face edges (GL ES 3.0) */
+   enum tex_reduction reduction;
    bool compare;
    enum tex_func func;
    float lod_bias, min_lod, max_lod;
@@ -190,6 +195,10 @@ struct tex_unit {
    tex_addr_fn addr[2][3];        /* [filter][axis] */
    tex_level_fn sample_level[2];   /* [filter] */
    tex_tap_fn tap;
+   /* how LINEAR mipmapping combines the two levels' results, the upper's
+    * weight in 2^-TEX_WEIGHT_BITS: their lerp, or their min or max under a
+    * min/max reduction, which takes every texel with a nonzero weight */
+   void (*mix_levels)(float o[4], const float a[4], const float b[4], uint32_t w);
    tex_fetch_fn fetch;
    /* dfx24 and binary32: the whole quad specialised (tex_fast.c), NULL for
     * the table path above. */

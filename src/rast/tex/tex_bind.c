@@ -163,15 +163,17 @@ void tex_unit_bind(struct tex_unit *u, const struct numsys *ns, const struct tex
    for (unsigned f = 0; f < 2; f++) {
       for (unsigned a = 0; a < 3; a++)
          u->addr[f][a] = tex_addr_choose(u->samp.wrap[a], (enum tex_filter)f);
-      u->sample_level[f] = tex_level_choose(u->dims, (enum tex_filter)f);
+      u->sample_level[f] = tex_level_choose(u->dims, (enum tex_filter)f, s->reduction);
    }
    /* Seamless cube maps: LINEAR reads across the face's edges; NEAREST
     * never leaves the face, so its CLAMP_TO_EDGE above is already right. */
    if (tex_is_cube(v->target) && s->seamless_cube) {
       u->addr[TEX_FILTER_LINEAR][0] = u->addr[TEX_FILTER_LINEAR][1] = tex_addr_cube_seamless;
-      u->sample_level[TEX_FILTER_LINEAR] = tex_level_cube_seamless();
+      u->sample_level[TEX_FILTER_LINEAR] = tex_level_cube_seamless(s->reduction);
    }
    u->tap = tex_tap_choose(u->samp.compare && v->depth);
+   u->mix_levels = s->reduction == TEX_REDUCE_MIN   ? tex_min4
+                   : s->reduction == TEX_REDUCE_MAX ? tex_max4 : tex_lerp4;
    u->fetch = tex_format_fetch(v->format);
    if (!u->fetch)
       u->fetch = v->fetch;

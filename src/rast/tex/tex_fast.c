@@ -336,7 +336,9 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
       { quad_dfx19_1d, quad_dfx19_2d, quad_dfx19_3d },
       { quad_float_1d, quad_float_2d, quad_float_3d },
    };
-   if (tex_is_cube(u->view.target) || u->dims < 1 || u->dims > 3)
+   /* cube maps and the min/max reductions take the table path */
+   if (tex_is_cube(u->view.target) || u->dims < 1 || u->dims > 3 ||
+       u->samp.reduction != TEX_REDUCE_AVERAGE)
       return NULL;
    if (u->kind == TEX_NS_DFX && u->ns->dfx.mant_bits == DFX_MANT_BITS_SEED) {
       if (!scalar && u->dims == 2 && rast_lanes()->tex_dfx19_2d) {

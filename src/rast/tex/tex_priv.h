@@ -115,12 +115,16 @@ tex_quad_fn tex_fast_choose(const struct tex_unit *u, bool scalar, bool noskip, 
                             tex_quad2_fn *pair, tex_quad4_fn *four);
 
 /* tex_filter.c */
-tex_level_fn tex_level_choose(unsigned dims, enum tex_filter filter);
-tex_level_fn tex_level_cube_seamless(void);
+tex_level_fn tex_level_choose(unsigned dims, enum tex_filter filter, enum tex_reduction r);
+tex_level_fn tex_level_cube_seamless(enum tex_reduction r);
 void tex_cube_taps(const struct tex_unit *u, unsigned level, const int32_t x[2],
                    const int32_t y[2], int layer, float ref, float t[4][4]);
 tex_tap_fn tex_tap_choose(bool compare);
 void tex_lerp4(float o[4], const float a[4], const float b[4], uint32_t w);   /* w: 2^-8 */
+/* the min/max reductions' combination of two taps or levels: b takes part
+ * where its weight w is not zero */
+void tex_min4(float o[4], const float a[4], const float b[4], uint32_t w);
+void tex_max4(float o[4], const float a[4], const float b[4], uint32_t w);
 
 /* A float LOD value (bias, clamp, explicit) as the LOD register. */
 static inline int32_t tex_lod_fixed(float v)

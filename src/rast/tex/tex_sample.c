@@ -317,7 +317,7 @@ static void sample_generic(const struct tex_unit *u, const struct tex_quad *q,
          if (offset)
             offset_at(u, l1, offset, c[p], co);
          u->sample_level[f](u, l1, offset ? co : c[p], layer[p], q->ref[p], b);
-         tex_lerp4(out[p], out[p], b, frac);
+         u->mix_levels(out[p], out[p], b, frac);
       }
    }
 
