@@ -282,6 +282,9 @@ static void fp_sampler_desc(const struct fp_sampler_view *fv, const struct pipe_
                                                                : TEX_MIP_NONE;
    d->normalized = !ss->unnormalized_coords;
    d->seamless_cube = ss->seamless_cube_map;
+   d->reduction = ss->reduction_mode == PIPE_TEX_REDUCTION_MIN   ? TEX_REDUCE_MIN
+                  : ss->reduction_mode == PIPE_TEX_REDUCTION_MAX ? TEX_REDUCE_MAX
+                                                                  : TEX_REDUCE_AVERAGE;
    d->compare = ss->compare_mode != PIPE_TEX_COMPARE_NONE && fv->zs;
    d->func = (enum tex_func)ss->compare_func;
    d->lod_bias = ss->lod_bias;

@@ -139,6 +139,10 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
     * model clamps each fragment's depth to its viewport's range
     * (rast_raster_state.depth_clamp). */
    case PIPE_CAP_DEPTH_CLIP_DISABLE:
+   /* min/max reduction filtering: the unit's LINEAR levels take the least
+    * or greatest tap (tex_sampler_desc.reduction) */
+   case PIPE_CAP_SAMPLER_REDUCTION_MINMAX:
+   case PIPE_CAP_SAMPLER_REDUCTION_MINMAX_ARB:
    /* Indirect draws: util_draw_indirect reads the arguments (fp_draw.c),
     * as for GL ES 3.1; st loops over multi-draws. */
    case PIPE_CAP_DRAW_INDIRECT:
