@@ -143,6 +143,9 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
     * or greatest tap (tex_sampler_desc.reduction) */
    case PIPE_CAP_SAMPLER_REDUCTION_MINMAX:
    case PIPE_CAP_SAMPLER_REDUCTION_MINMAX_ARB:
+   /* an explicit LOD, bias or offset with a shadow 2-D array or cube map:
+    * the unit compares at any level it samples */
+   case PIPE_CAP_TEXTURE_SHADOW_LOD:
    /* Indirect draws: util_draw_indirect reads the arguments (fp_draw.c),
     * as for GL ES 3.1; st loops over multi-draws. */
    case PIPE_CAP_DRAW_INDIRECT:
