@@ -330,6 +330,10 @@ struct rast_quad {
    int x, y;                         /* pixel 0; both even */
    unsigned mask;                    /* coverage, bit i = pixel i */
    bool front_facing;
+   /* The sample whose walk made the quad on a multisampled target shaded
+    * once a sample (rast_shader.per_sample, fetch_mask): gl_SampleID.  0
+    * otherwise. */
+   uint8_t sample;
    float frag_z[RAST_QUAD_SIZE];     /* Z register as window depth in [0,1] */
    float frag_w[RAST_QUAD_SIZE];     /* 1/w_clip, gl_FragCoord.w */
    int64_t z[RAST_QUAD_SIZE];        /* Z register, raw profile format */
@@ -374,6 +378,11 @@ struct rast_shader {
     * fills the quad's `last` with them before shading, and a multisampled
     * target is shaded once a sample (msaa.c). */
    unsigned fetch_mask;
+   /* Shaded once a sample on a multisampled target, with the registers at
+    * the sample's position and the sample in the quad (rast_quad.sample):
+    * GL's sample shading, and a shader that reads gl_SampleID,
+    * gl_SamplePosition or gl_SampleMaskIn.  Once a pixel otherwise. */
+   bool per_sample;
 };
 
 /* ------------------------------------------------------------------ */

@@ -273,6 +273,13 @@ static inline void fr_set_facing(struct rast_front *fr, bool front)
       fr->quad[i].front_facing = front;
 }
 
+/* The sample a multisampled walk shades at, in every quad of a group. */
+static inline void fr_set_sample(struct rast_front *fr, unsigned sample)
+{
+   for (unsigned i = 0; i < FR_AHEAD_MAX; i++)
+      fr->quad[i].sample = (uint8_t)sample;
+}
+
 /* What nq quads divided count besides their lanes' events, however they
  * were divided (interp_lanes.c, interp_axes.c): the skips, and the events
  * of the values computed once per primitive, for every pixel. */

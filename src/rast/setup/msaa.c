@@ -23,9 +23,11 @@
  *                for the samples after it.
  *
  * A shader that reads the target (framebuffer fetch) reads one sample's
- * colour, so it runs once a sample instead: no centre walk and no cache,
- * the back end of sample k's walk shades each pixel covered at sample k
- * with the registers at sample k, after fetching sample k's colour.
+ * colour, and one shaded per sample (sample shading, gl_SampleID) must see
+ * each sample's own inputs, so such shaders run once a sample instead: no
+ * centre walk and no cache, the back end of sample k's walk shades each
+ * pixel covered at sample k with the registers at sample k (after fetching
+ * sample k's colour), the quads telling the shader k.
  *
  * docs/msaa.md has the argument, the costs and what stays single-sampled.
  */
@@ -269,7 +271,7 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    const struct rast_shader fs = rc->fs;
    const bool counting = rc->counting;
    const bool shades = rast_backend_shades(rc);
-   const bool per_sample = fs.fetch_mask != 0;
+   const bool per_sample = fs.fetch_mask != 0 || fs.per_sample;
    bool first = true;
    m->shade = fs.shade;
    m->shade_n = fs.shade_n;
@@ -307,10 +309,12 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
          fr->Hx = fr->H - fr->S / 2 + (int64_t)(rast_sample_pos_4x[k][0] * (float)fr->S);
          fr->Hy = fr->H - fr->S / 2 + (int64_t)(rast_sample_pos_4x[k][1] * (float)fr->S);
          rast_backend_sample(rc, k);
+         fr_set_sample(fr, k);
          one_pass(rc, kind, v0, v1, v2, &first);
       }
    }
    rast_backend_sample(rc, 0);
+   fr_set_sample(fr, 0);
    rc->fs = fs;
    fr->Hx = fr->Hy = fr->H;
    rc->msaa_busy = false;

@@ -1,0 +1,259 @@
+/*
+ * Per-sample shading (rast_shader.per_sample, msaa.c), on random triangles
+ * with a COLOR, a PERSPECTIVE and a LINEAR varying:
+ *
+ *  - the shader runs once for each covered sample, with the sample in the
+ *    quad (gl_SampleID): sample k's calls are exactly the pixels the exact
+ *    reference (tutil.c) finds covered at k's position, and no others;
+ *  - its inputs are the interpolators' at the sample: every component, bit
+ *    for bit, is what the single-sampled model gives the pixel centre of
+ *    the triangle moved by (1/2 - sx, 1/2 - sy), on 1 and 2 threads;
+ *  - the colour register of seed 002's vector method (FIXPIPE_INTERP=vector)
+ *    lies within that method's bound, (|ΔA1| + |ΔA2|)·2^-24 + 1/2 of a last
+ *    bit, of the exact plane through the vertices' registers evaluated at
+ *    the sample's position in rational arithmetic; the centre's value
+ *    misses it by the gradient times the sample's offset.
+ *
+ *   test_sample_shading [--scenes N] [--seed S]
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tutil.h"
+
+#define W 64
+#define H 80
+#define NS RAST_MSAA_SAMPLES
+#define PLANE ((size_t)W * H)
+#define NCOMP 8                  /* colour r, g, b, a; perspective s, t; linear u, v */
+#define SLOTS 4                  /* position, perspective, colour, linear */
+
+static uint64_t rng = 0x2545f4914f6cdd1dull;
+
+/* What the shader saw at each sample of each pixel (a single-sampled
+ * target: plane 0). */
+struct record {
+   uint8_t calls[NS][PLANE];
+   float v[NS][PLANE][NCOMP];
+};
+
+static void keep(struct record *r, const struct rast_quad *q, unsigned i)
+{
+   const size_t p = (size_t)(q->y + (int)(i >> 1)) * W + (size_t)(q->x + (int)(i & 1));
+   r->calls[q->sample][p]++;
+   float *v = r->v[q->sample][p];
+   for (unsigned c = 0; c < 4; c++)
+      v[c] = q->in[1][c][i];
+   for (unsigned c = 0; c < 2; c++) {
+      v[4 + c] = q->in[0][c][i];
+      v[6 + c] = q->in[2][c][i];
+   }
+}
+
+static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
+{
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      if (q->mask >> i & 1u)
+         keep(ctx, q, i);
+      for (unsigned c = 0; c < 4; c++)
+         out->color[0][c][i] = q->in[1][c][i];
+   }
+   return q->mask;
+}
+
+struct target {
+   struct rast_context *rc;
+   uint8_t color[NS][PLANE * 4];
+   uint32_t zs[NS][PLANE];
+};
+
+static void target_init(struct target *t, struct record *r, unsigned samples, unsigned interp,
+                        unsigned threads)
+{
+   char err[128];
+   static struct rast_profile_buf prof;
+   if (!rast_profile_parse("seed", &prof, err, sizeof err))
+      exit(1);
+   t->rc = rast_create(&prof.p);
+   t_bind_rgba8_z24s8_samples(t->rc, t->color[0], t->zs[0], W, H, samples);
+   t_plain_state(t->rc);
+   struct rast_vertex_layout vl = t_layout_pos();
+   t_layout_add(&vl, RAST_INTERP_PERSPECTIVE, 0x3);
+   t_layout_add(&vl, RAST_INTERP_COLOR, 0xf);
+   t_layout_add(&vl, RAST_INTERP_LINEAR, 0x3);
+   rast_set_vertex_layout(t->rc, &vl);
+   rast_set_interp(t->rc, interp);
+   rast_set_threads(t->rc, threads);
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof fs);
+   fs.ctx = r;
+   fs.shade = shade;
+   fs.num_outputs = 1;
+   fs.per_sample = true;
+   rast_set_shader(t->rc, &fs);
+   memset(r, 0, sizeof *r);
+}
+
+struct tri { float v[3][SLOTS][4]; };
+
+static float snap(float v) { return roundf(v * 4096.0f) / 4096.0f; }
+
+static void random_tri(struct tri *tr)
+{
+   const double pick = t_rand();
+   const float cx = (float)(W * t_rand()), cy = (float)(H * t_rand());
+   const float r = pick < 0.3 ? 4.0f : pick < 0.8 ? 20.0f : 60.0f;
+   for (int i = 0; i < 3; i++) {
+      float *pos = tr->v[i][0];
+      pos[0] = snap(cx + (float)(r * (2 * t_rand() - 1)));
+      pos[1] = snap(cy + (float)(r * (2 * t_rand() - 1)));
+      pos[2] = (float)t_rand();
+      pos[3] = 1.0f / (float)(0.5 + 3.5 * t_rand());      /* 1/w */
+      for (int s = 1; s < SLOTS; s++)
+         for (int c = 0; c < 4; c++)
+            tr->v[i][s][c] = (float)(s == 2 ? t_rand() : 8 * t_rand() - 4);
+   }
+}
+
+static void draw(struct target *t, const struct tri *tr, float dx, float dy)
+{
+   static float v[3][SLOTS][4];
+   memcpy(v, tr->v, sizeof v);
+   for (int i = 0; i < 3; i++) {
+      v[i][0][0] += dx;               /* exact: both on the 1/4096 grid, |v| < 2^11 */
+      v[i][0][1] += dy;
+   }
+   t_tri(t->rc, v[0], v[1], v[2]);
+   rast_flush(t->rc);
+}
+
+static float sdx(unsigned k) { return 0.5f - rast_sample_pos_4x[k][0]; }
+static float sdy(unsigned k) { return 0.5f - rast_sample_pos_4x[k][1]; }
+
+struct refmark { uint8_t *in; };
+static void mark(void *ctx, int x, int y)
+{
+   ((struct refmark *)ctx)->in[(size_t)y * W + (size_t)x] = 1;
+}
+
+__extension__ typedef __int128 i128;
+
+/* The exact plane of the colour registers a (of the vertices' registers
+ * ra[3]) at window point (px, py) in 1/4096 pixels, in last bits. */
+static long double exact_plane(const int64_t X[3], const int64_t Y[3], const int64_t ra[3],
+                               int64_t px, int64_t py)
+{
+   const int64_t e1x = X[1] - X[0], e1y = Y[1] - Y[0], e2x = X[2] - X[0], e2y = Y[2] - Y[0];
+   const int64_t qx = px - X[0], qy = py - Y[0];
+   const i128 det = (i128)e1x * e2y - (i128)e1y * e2x;
+   const i128 na = (i128)qx * e2y - (i128)qy * e2x, nb = (i128)e1x * qy - (i128)e1y * qx;
+   const i128 num = na * (ra[1] - ra[0]) + nb * (ra[2] - ra[0]);
+   return (long double)ra[0] + (long double)num / (long double)det;
+}
+
+static void one_tri(unsigned threads)
+{
+   static struct target ms, ss;
+   static struct record rm, rs;
+   struct tri tr;
+   random_tri(&tr);
+
+   target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, threads);
+   draw(&ms, &tr, 0, 0);
+   unsigned bad_calls = 0, bad_values = 0;
+   for (unsigned k = 0; k < NS; k++) {
+      uint8_t in[PLANE];
+      memset(in, 0, sizeof in);
+      int64_t X[3], Y[3];
+      for (int i = 0; i < 3; i++) {
+         X[i] = (int64_t)llroundf((tr.v[i][0][0] + sdx(k)) * 4096.0f);
+         Y[i] = (int64_t)llroundf((tr.v[i][0][1] + sdy(k)) * 4096.0f);
+      }
+      struct refmark r = { in };
+      t_ref_triangle(X, Y, 4096, 2048, false, (struct rast_scissor){ 0, 0, W, H }, mark, &r);
+
+      target_init(&ss, &rs, 1, RAST_INTERP_SCANLINE, 1);
+      draw(&ss, &tr, sdx(k), sdy(k));
+      for (size_t p = 0; p < PLANE; p++) {
+         bad_calls += rm.calls[k][p] != in[p];
+         if (in[p] && rs.calls[0][p] == 1)
+            bad_values += memcmp(rm.v[k][p], rs.v[0][p], sizeof rm.v[k][p]) != 0;
+      }
+      rast_destroy(ss.rc);
+   }
+   CHECK(bad_calls == 0, "%u sample(s) shaded otherwise than once where covered (%u threads)",
+         bad_calls, threads);
+   CHECK(bad_values == 0, "%u sample(s) whose inputs differ from the moved centre's (%u threads)",
+         bad_values, threads);
+   rast_destroy(ms.rc);
+}
+
+/* Seed 002's colour registers against the exact plane at the samples; the
+ * largest error in last bits over the bound, and the same measure for the
+ * pixel centre's plane value (which must miss). */
+static void one_tri_exact(double *worst, double *centre_worst)
+{
+   static struct target ms;
+   static struct record rm;
+   struct tri tr;
+   random_tri(&tr);
+   target_init(&ms, &rm, NS, RAST_INTERP_VECTOR, 1);
+   draw(&ms, &tr, 0, 0);
+   /* the register holds colour·255 in 12 fraction bits; the shader reads
+    * it scaled back to [0, 1] */
+   const long double unit = 255.0L * 4096.0L;
+   int64_t X[3], Y[3];
+   for (int i = 0; i < 3; i++) {
+      X[i] = (int64_t)llroundf(tr.v[i][0][0] * 4096.0f);
+      Y[i] = (int64_t)llroundf(tr.v[i][0][1] * 4096.0f);
+   }
+   unsigned bad = 0;
+   for (unsigned c = 0; c < 4; c++) {
+      int64_t ra[3];
+      for (int i = 0; i < 3; i++)
+         ra[i] = (int64_t)llroundl((long double)tr.v[i][2][c] * unit);
+      const double bound = (double)(llabs(ra[1] - ra[0]) + llabs(ra[2] - ra[0])) / 16777216.0 +
+                           0.5 + 0.5;   /* and half a bit of the vertex's own rounding */
+      for (unsigned k = 0; k < NS; k++)
+         for (size_t p = 0; p < PLANE; p++) {
+            if (!rm.calls[k][p])
+               continue;
+            const int64_t x = (int64_t)(p % W), y = (int64_t)(p / W);
+            const int64_t sx = (int64_t)(rast_sample_pos_4x[k][0] * 4096.0f);
+            const int64_t sy = (int64_t)(rast_sample_pos_4x[k][1] * 4096.0f);
+            const long double got = (long double)rm.v[k][p][c] * unit;
+            const double err = (double)fabsl(got - exact_plane(X, Y, ra, x * 4096 + sx,
+                                                              y * 4096 + sy)) / bound;
+            const double cerr = (double)fabsl(got - exact_plane(X, Y, ra, x * 4096 + 2048,
+                                                               y * 4096 + 2048)) / bound;
+            bad += err > 1.0;
+            if (err > *worst)
+               *worst = err;
+            if (cerr > *centre_worst)
+               *centre_worst = cerr;
+         }
+   }
+   CHECK(bad == 0, "%u colour register(s) outside seed 002's bound of the exact plane at the "
+         "sample", bad);
+   rast_destroy(ms.rc);
+}
+
+int main(int argc, char **argv)
+{
+   unsigned scenes = 200;
+   t_scene_args(argc, argv, "test_sample_shading", &scenes, &rng);
+   t_seed(rng);
+   double worst = 0, centre_worst = 0;
+   for (unsigned n = 0; n < scenes; n++) {
+      one_tri(1);
+      if (n % 8 == 0)
+         one_tri(2);
+      one_tri_exact(&worst, &centre_worst);
+   }
+   printf("sample shading: largest colour error %.3f of the bound at the samples, %.1f at the "
+          "pixel centres\n", worst, centre_worst);
+   CHECK(centre_worst > 1.0, "the pixel centre's value is within the bound too: the test "
+         "cannot tell the sample from the centre");
+   return t_summary("sample_shading");
+}
