@@ -348,6 +348,8 @@ struct rast_quad {
 struct rast_shaded_quad {
    float color[RAST_MAX_CBUFS][4][RAST_QUAD_SIZE];   /* [cbuf][chan][pixel] */
    float depth[RAST_QUAD_SIZE];      /* when the shader writes depth: [0,1] */
+   /* gl_SampleMask, when the shader writes it (rast_shader.writes_sample_mask) */
+   uint32_t sample_mask[RAST_QUAD_SIZE];
 };
 
 /* The fragment shader, bound once per state change.  shade() returns the
@@ -383,6 +385,11 @@ struct rast_shader {
     * GL's sample shading, and a shader that reads gl_SampleID,
     * gl_SamplePosition or gl_SampleMaskIn.  Once a pixel otherwise. */
    bool per_sample;
+   /* It writes gl_SampleMask (sample_mask of its outputs): a multisampled
+    * target shades it once a sample, as per_sample, and keeps the sample
+    * where the output has the sample's bit.  Single-sampled targets
+    * ignore the output. */
+   bool writes_sample_mask;
 };
 
 /* ------------------------------------------------------------------ */

@@ -12,7 +12,9 @@
  *    lies within that method's bound, (|ΔA1| + |ΔA2|)·2^-24 + 1/2 of a last
  *    bit, of the exact plane through the vertices' registers evaluated at
  *    the sample's position in rational arithmetic; the centre's value
- *    misses it by the gradient times the sample's offset.
+ *    misses it by the gradient times the sample's offset;
+ *  - gl_SampleMask (writes_sample_mask) alone shades once a sample, and a
+ *    sample is written where the output has its bit.
  *
  *   test_sample_shading [--scenes N] [--seed S]
  */
@@ -34,6 +36,7 @@ static uint64_t rng = 0x2545f4914f6cdd1dull;
 /* What the shader saw at each sample of each pixel (a single-sampled
  * target: plane 0). */
 struct record {
+   bool white_masked;            /* write white and gl_SampleMask = mask_of(x, y) */
    uint8_t calls[NS][PLANE];
    float v[NS][PLANE][NCOMP];
 };
@@ -51,13 +54,21 @@ static void keep(struct record *r, const struct rast_quad *q, unsigned i)
    }
 }
 
+/* A gl_SampleMask that differs from pixel to pixel, every pattern. */
+static uint32_t mask_of(int x, int y)
+{
+   return (uint32_t)(x * 7 + y * 3) & 15u;
+}
+
 static unsigned shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
+   const struct record *r = ctx;
    for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
       if (q->mask >> i & 1u)
          keep(ctx, q, i);
       for (unsigned c = 0; c < 4; c++)
-         out->color[0][c][i] = q->in[1][c][i];
+         out->color[0][c][i] = r->white_masked ? 1.0f : q->in[1][c][i];
+      out->sample_mask[i] = mask_of(q->x + (int)(i & 1), q->y + (int)(i >> 1));
    }
    return q->mask;
 }
@@ -69,7 +80,7 @@ struct target {
 };
 
 static void target_init(struct target *t, struct record *r, unsigned samples, unsigned interp,
-                        unsigned threads)
+                        unsigned threads, bool white_masked)
 {
    char err[128];
    static struct rast_profile_buf prof;
@@ -90,9 +101,12 @@ static void target_init(struct target *t, struct record *r, unsigned samples, un
    fs.ctx = r;
    fs.shade = shade;
    fs.num_outputs = 1;
-   fs.per_sample = true;
+   fs.per_sample = !white_masked;     /* the mask alone asks for it */
+   fs.writes_sample_mask = white_masked;
    rast_set_shader(t->rc, &fs);
    memset(r, 0, sizeof *r);
+   memset(t->color, 0, sizeof t->color);
+   r->white_masked = white_masked;
 }
 
 struct tri { float v[3][SLOTS][4]; };
@@ -159,7 +173,7 @@ static void one_tri(unsigned threads)
    struct tri tr;
    random_tri(&tr);
 
-   target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, threads);
+   target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, threads, false);
    draw(&ms, &tr, 0, 0);
    unsigned bad_calls = 0, bad_values = 0;
    for (unsigned k = 0; k < NS; k++) {
@@ -173,7 +187,7 @@ static void one_tri(unsigned threads)
       struct refmark r = { in };
       t_ref_triangle(X, Y, 4096, 2048, false, (struct rast_scissor){ 0, 0, W, H }, mark, &r);
 
-      target_init(&ss, &rs, 1, RAST_INTERP_SCANLINE, 1);
+      target_init(&ss, &rs, 1, RAST_INTERP_SCANLINE, 1, false);
       draw(&ss, &tr, sdx(k), sdy(k));
       for (size_t p = 0; p < PLANE; p++) {
          bad_calls += rm.calls[k][p] != in[p];
@@ -198,7 +212,7 @@ static void one_tri_exact(double *worst, double *centre_worst)
    static struct record rm;
    struct tri tr;
    random_tri(&tr);
-   target_init(&ms, &rm, NS, RAST_INTERP_VECTOR, 1);
+   target_init(&ms, &rm, NS, RAST_INTERP_VECTOR, 1, false);
    draw(&ms, &tr, 0, 0);
    /* the register holds colour·255 in 12 fraction bits; the shader reads
     * it scaled back to [0, 1] */
@@ -239,6 +253,40 @@ static void one_tri_exact(double *worst, double *centre_worst)
    rast_destroy(ms.rc);
 }
 
+/* gl_SampleMask: each covered sample shaded once, and written where the
+ * output has its bit, whatever the shader's other state asks. */
+static void one_tri_masked(void)
+{
+   static struct target ms;
+   static struct record rm;
+   struct tri tr;
+   random_tri(&tr);
+   target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, 1, true);
+   draw(&ms, &tr, 0, 0);
+   unsigned bad_calls = 0, bad_written = 0;
+   for (unsigned k = 0; k < NS; k++) {
+      uint8_t in[PLANE];
+      memset(in, 0, sizeof in);
+      int64_t X[3], Y[3];
+      for (int i = 0; i < 3; i++) {
+         X[i] = (int64_t)llroundf((tr.v[i][0][0] + sdx(k)) * 4096.0f);
+         Y[i] = (int64_t)llroundf((tr.v[i][0][1] + sdy(k)) * 4096.0f);
+      }
+      struct refmark r = { in };
+      t_ref_triangle(X, Y, 4096, 2048, false, (struct rast_scissor){ 0, 0, W, H }, mark, &r);
+      for (size_t p = 0; p < PLANE; p++) {
+         const bool want = in[p] && (mask_of((int)(p % W), (int)(p / W)) >> k & 1u);
+         bad_calls += rm.calls[k][p] != in[p];
+         bad_written += (ms.color[k][p * 4] == 255) != want;
+      }
+   }
+   CHECK(bad_calls == 0, "gl_SampleMask: %u sample(s) shaded otherwise than once where covered",
+         bad_calls);
+   CHECK(bad_written == 0, "gl_SampleMask: %u sample(s) written otherwise than the mask says",
+         bad_written);
+   rast_destroy(ms.rc);
+}
+
 int main(int argc, char **argv)
 {
    unsigned scenes = 200;
@@ -250,6 +298,7 @@ int main(int argc, char **argv)
       if (n % 8 == 0)
          one_tri(2);
       one_tri_exact(&worst, &centre_worst);
+      one_tri_masked();
    }
    printf("sample shading: largest colour error %.3f of the bound at the samples, %.1f at the "
           "pixel centres\n", worst, centre_worst);

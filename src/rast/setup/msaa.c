@@ -27,7 +27,9 @@
  * each sample's own inputs, so such shaders run once a sample instead: no
  * centre walk and no cache, the back end of sample k's walk shades each
  * pixel covered at sample k with the registers at sample k (after fetching
- * sample k's colour), the quads telling the shader k.
+ * sample k's colour), the quads telling the shader k.  A shader writing
+ * gl_SampleMask runs so too, its invocation for sample k keeping k where
+ * the output has bit k.
  *
  * docs/msaa.md has the argument, the costs and what stays single-sampled.
  */
@@ -221,6 +223,34 @@ static unsigned sample_shade_n(void *ctx, const struct rast_quad *const q[],
    return kept;
 }
 
+/* gl_SampleMask: of the pixels `kept`, those whose output has the bit of
+ * the sample drawn. */
+static inline unsigned out_mask(const struct rast_msaa *m, const struct rast_shaded_quad *out,
+                                unsigned kept)
+{
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+      if (!(out->sample_mask[i] >> m->sample & 1u))
+         kept &= ~(1u << i);
+   return kept;
+}
+
+static unsigned sample_shade_mask(void *ctx, const struct rast_quad *q,
+                                  struct rast_shaded_quad *out)
+{
+   return out_mask(((struct rast_context *)ctx)->msaa, out, sample_shade(ctx, q, out));
+}
+
+static unsigned sample_shade_mask_n(void *ctx, const struct rast_quad *const q[],
+                                    struct rast_shaded_quad *const out[], unsigned n)
+{
+   const struct rast_msaa *m = ((struct rast_context *)ctx)->msaa;
+   const unsigned got = sample_shade_n(ctx, q, out, n);
+   unsigned kept = 0;
+   for (unsigned i = 0; i < n; i++)
+      kept |= out_mask(m, out[i], got >> 4 * i & 15u) << 4 * i;
+   return kept;
+}
+
 static unsigned cached_shade_n(void *ctx, const struct rast_quad *const q[],
                                struct rast_shaded_quad *const out[], unsigned n)
 {
@@ -271,7 +301,7 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    const struct rast_shader fs = rc->fs;
    const bool counting = rc->counting;
    const bool shades = rast_backend_shades(rc);
-   const bool per_sample = fs.fetch_mask != 0 || fs.per_sample;
+   const bool per_sample = fs.fetch_mask != 0 || fs.per_sample || fs.writes_sample_mask;
    bool first = true;
    m->shade = fs.shade;
    m->shade_n = fs.shade_n;
@@ -280,8 +310,13 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    rc->msaa_busy = true;
    /* the samples' back end shades through the cache; the centre's calls
     * the shader itself (centre_quad) */
-   rc->fs.shade = per_sample ? sample_shade : cached_shade;
-   rc->fs.shade_n = !fs.shade_n ? NULL : per_sample ? sample_shade_n : cached_shade_n;
+   rc->fs.shade = fs.writes_sample_mask ? sample_shade_mask
+                  : per_sample          ? sample_shade
+                                        : cached_shade;
+   rc->fs.shade_n = !fs.shade_n              ? NULL
+                    : fs.writes_sample_mask ? sample_shade_mask_n
+                    : per_sample            ? sample_shade_n
+                                            : cached_shade_n;
    rc->fs.ctx = rc;
 
    for (int64_t y = top; y < bot; y += MSAA_STRIP_ROWS) {
