@@ -52,6 +52,14 @@ struct fp_fragment_shader {
    bool writes_depth;
    bool may_discard;
    bool reads_fragcoord;          /* gl_FragCoord, an input or a system value */
+   /* Sample shading (docs/msaa.md): the SYSTEM_VALUE registers of
+    * gl_SampleID, gl_SamplePosition and gl_SampleMaskIn (-1 where not
+    * read), the gl_SampleMask output (-1 where not written), and whether
+    * the shader runs once a sample whatever glMinSampleShading says (it
+    * reads one of those, or has `sample` inputs). */
+   int sv_sample_id, sv_sample_pos, sv_sample_mask;
+   int sample_mask_output;
+   bool per_sample;
    int depth_output;                /* output register, or -1 */
    int color_output[RAST_MAX_CBUFS];
    unsigned num_color_outputs;
@@ -161,6 +169,7 @@ struct fp_context {
    const struct pipe_sampler_state *samplers[PIPE_SHADER_TYPES][PIPE_MAX_SAMPLERS];
    unsigned sample_mask;
    unsigned fb_samples;             /* samples a pixel of the bound framebuffer: 1 or 4 */
+   unsigned min_samples;            /* set_min_samples: sample shading where above 1 */
 
    /* The samplers of draw's stages; the fragment stage's is thread 0's. */
    struct fp_tgsi_sampler *tgsi_sampler[PIPE_SHADER_TYPES];

@@ -20,6 +20,7 @@
 
 #include "util/u_memory.h"
 #include "util/u_atomic.h"
+#include "util/u_math.h"
 #include "tgsi/tgsi_exec.h"
 #include "tgsi/tgsi_parse.h"
 
@@ -100,6 +101,56 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
          out->depth[p] = mach->Outputs[fs->depth_output].xyzw[2].f[p];
    }
    return mask;
+}
+
+/* A system value the same on a quad's four pixels: channel c is v[c]
+ * (bit patterns: integers go through uif). */
+static void fp_fs_splat(struct tgsi_exec_vector *sv, const float v[4])
+{
+   for (unsigned c = 0; c < 4; c++)
+      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+         sv->xyzw[c].f[p] = v[c];
+}
+
+/* A shader shaded once a sample (docs/msaa.md): its sample's system values
+ * from the thread's tables (fp_fs_sample_tables) before it runs, its
+ * gl_SampleMask into the model's output after.  The quad's lanes share the
+ * sample: one walk of the model made them. */
+static unsigned fp_fs_shade_sample(void *ctx, const struct rast_quad *q,
+                                   struct rast_shaded_quad *out)
+{
+   struct fp_fs_thread *th = ctx;
+   const struct fp_fragment_shader *fs = th->fp->fs;
+   struct tgsi_exec_machine *mach = th->mach;
+   const unsigned k = q->sample;
+   if (fs->sv_sample_id >= 0)
+      fp_fs_splat(&mach->SystemValue[fs->sv_sample_id], (float[4]){ uif(k), 0, 0, 0 });
+   if (fs->sv_sample_pos >= 0)
+      fp_fs_splat(&mach->SystemValue[fs->sv_sample_pos],
+                  (float[4]){ th->jit_ctx.sample_pos[k][0], th->jit_ctx.sample_pos[k][1], 0, 0 });
+   if (fs->sv_sample_mask >= 0)
+      fp_fs_splat(&mach->SystemValue[fs->sv_sample_mask],
+                  (float[4]){ uif(th->jit_ctx.sample_mask_in[k]), 0, 0, 0 });
+   const unsigned kept = fp_fs_shade(ctx, q, out);
+   if (fs->sample_mask_output >= 0)
+      for (unsigned p = 0; p < RAST_QUAD_SIZE; p++)
+         out->sample_mask[p] = mach->Outputs[fs->sample_mask_output].xyzw[0].u[p];
+   return kept;
+}
+
+/* The values fp_fs_shade_sample and the compiled code give a shader for
+ * the sample a quad is shaded for, by the framebuffer's samples. */
+static void fp_fs_sample_tables(struct fp_context *fp)
+{
+   for (unsigned t = 0; t < fp->num_threads; t++) {
+      struct fp_jit_context *jc = &fp->fs_thread[t].jit_ctx;
+      for (unsigned k = 0; k < RAST_MSAA_SAMPLES; k++) {
+         const bool ms = fp->fb_samples > 1;
+         jc->sample_pos[k][0] = ms ? rast_sample_pos_4x[k][0] : 0.5f;
+         jc->sample_pos[k][1] = ms ? rast_sample_pos_4x[k][1] : 0.5f;
+         jc->sample_mask_in[k] = ms ? 1u << k : 1u;
+      }
+   }
 }
 
 /* A quad's four lanes from its mask (lane = ~0 where the pixel is live). */
@@ -308,6 +359,9 @@ void fp_fs_validate(struct fp_context *fp)
    rs.may_discard = fp->fs->may_discard;
    rs.reads_fragcoord = fp->fs->reads_fragcoord;
    rs.fetch_mask = fp->fs->fetch_mask;
+   rs.per_sample = fp->fs->per_sample || fp->min_samples > 1;
+   rs.writes_sample_mask = fp->fs->sample_mask_output >= 0;
+   fp_fs_sample_tables(fp);
 
    if (fp_fs_compiled(fp)) {
       for (unsigned t = 0; t < fp->num_threads; t++) {
@@ -337,7 +391,7 @@ void fp_fs_validate(struct fp_context *fp)
       fp_fs_drop_input_decls(th->mach);
    }
 
-   rs.shade = fp_fs_shade;
+   rs.shade = fp->fs->per_sample ? fp_fs_shade_sample : fp_fs_shade;
    rast_set_shader(fp->rast, &rs);
    fp->fs_dirty = false;
 }

@@ -61,6 +61,11 @@ struct fp_jit_context {
     * lanes of the others repeating the first quad's (a quad alone, the
     * last of a primitive) */
    uint32_t quads;
+   /* gl_SamplePosition and gl_SampleMaskIn of each sample a quad may be
+    * shaded for (rast_quad.sample): the pattern and 1 << k on a
+    * multisampled target, the centre and 1 on a single-sampled one */
+   float sample_pos[RAST_MSAA_SAMPLES][2];
+   uint32_t sample_mask_in[RAST_MSAA_SAMPLES];
 };
 
 /* A texture unit's registers for compiled gathers, filled before the

@@ -27,6 +27,7 @@
 #include "gallivm/lp_bld_init.h"
 #include "gallivm/lp_bld_intr.h"
 #include "gallivm/lp_bld_nir.h"
+#include "gallivm/lp_bld_struct.h"
 #include "gallivm/lp_bld_tgsi.h"
 #include "gallivm/lp_bld_type.h"
 #include "nir/tgsi_to_nir.h"
@@ -143,14 +144,15 @@ static void fp_jit_prepare_nir(nir_shader *nir)
    fp_jit_opt_nir(nir, true);
 }
 
-/* The output slots gallivm gives a NIR shader's colours and depth: the
- * outputs' driver_location (lp_build_nir_soa indexes its outputs so), by
- * the colour buffer their location names.  False for an output the back
- * end has no place for (stencil export, sample mask). */
+/* The output slots gallivm gives a NIR shader's colours, depth and
+ * gl_SampleMask: the outputs' driver_location (lp_build_nir_soa indexes its
+ * outputs so), by the colour buffer their location names.  False for an
+ * output the back end has no place for (stencil export). */
 static bool fp_jit_nir_outputs(const nir_shader *nir, int *depth_output,
-                               int color_output[RAST_MAX_CBUFS])
+                               int color_output[RAST_MAX_CBUFS], int *sample_mask_output)
 {
    *depth_output = -1;
+   *sample_mask_output = -1;
    for (unsigned cb = 0; cb < RAST_MAX_CBUFS; cb++)
       color_output[cb] = -1;
    nir_foreach_shader_out_variable(var, nir) {
@@ -164,6 +166,8 @@ static bool fp_jit_nir_outputs(const nir_shader *nir, int *depth_output,
          color_output[1] = base;
       } else if (loc == FRAG_RESULT_DEPTH) {
          *depth_output = base;
+      } else if (loc == FRAG_RESULT_SAMPLE_MASK) {
+         *sample_mask_output = base;
       } else if (loc == FRAG_RESULT_COLOR) {
          color_output[0] = base;
       } else if (loc >= FRAG_RESULT_DATA0) {
@@ -275,7 +279,7 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
                                 const struct tgsi_shader_info *info,
                                 const struct lp_build_sampler_soa *sampler, int depth_output,
                                 const int *color_output, unsigned num_color_outputs,
-                                unsigned nq)
+                                int sample_mask_output, unsigned nq)
 {
    LLVMContextRef lc = gallivm->context;
    LLVMBuilderRef b = gallivm->builder;
@@ -370,9 +374,30 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
          if (!inputs[i][c])
             inputs[i][c] = lp_build_const_vec(gallivm, type, 0.0);
 
-   /* no system values: the screen has FACE, POSITION and PCOORD as inputs */
+   /* System values (the screen has FACE, POSITION and PCOORD as inputs):
+    * the sample's, of sample shading.  The quads of a call are of one walk
+    * of the model: q0's sample is theirs; its position and mask come from
+    * the context's tables (fp_fs_sample_tables), as the interpreter's. */
    struct lp_bld_tgsi_system_values system_values;
    memset(&system_values, 0, sizeof(system_values));
+   {
+      LLVMTypeRef i8 = LLVMInt8TypeInContext(lc), i32 = LLVMInt32TypeInContext(lc);
+      LLVMValueRef sid = LLVMBuildLoad2(
+         b, i8, fp_byte_ptr(gallivm, quads[0], offsetof(struct rast_quad, sample), i8), "");
+      sid = LLVMBuildZExt(b, sid, i32, "");
+      system_values.sample_id = sid;
+      system_values.sample_pos_type =
+         LLVMArrayType(LLVMFloatTypeInContext(lc), RAST_MSAA_SAMPLES * 2);
+      system_values.sample_pos = fp_byte_ptr(gallivm, ctx, offsetof(struct fp_jit_context, sample_pos),
+                                             system_values.sample_pos_type);
+      LLVMTypeRef masks_type = LLVMArrayType(i32, RAST_MSAA_SAMPLES);
+      LLVMValueRef masks = fp_byte_ptr(gallivm, ctx, offsetof(struct fp_jit_context, sample_mask_in),
+                                       masks_type);
+      struct lp_build_context ibld;
+      lp_build_context_init(&ibld, gallivm, lp_int_type(type));
+      system_values.sample_mask_in =
+         lp_build_broadcast_scalar(&ibld, lp_build_array_get2(gallivm, masks_type, masks, sid));
+   }
 
    LLVMTypeRef buffers_type = LLVMArrayType(lp_build_create_jit_buffer_type(gallivm),
                                             LP_MAX_TGSI_CONST_BUFFERS);
@@ -424,6 +449,15 @@ static LLVMValueRef fp_build_fs(struct gallivm_state *gallivm, nir_shader *nir,
          v = LLVMBuildLoad2(b, fvec, outputs[depth_output][2], "");
       for (unsigned k = 0; k < nq; k++)
          fp_store(gallivm, outs[k], offsetof(struct rast_shaded_quad, depth),
+                  fp_jit_quad_part(gallivm, v, k, nq));
+   }
+
+   if (sample_mask_output >= 0 && outputs[sample_mask_output][0]) {
+      /* gl_SampleMask: an integer in the float output's bits */
+      LLVMValueRef v = LLVMBuildLoad2(b, fvec, outputs[sample_mask_output][0], "");
+      v = LLVMBuildBitCast(b, v, ivec, "");
+      for (unsigned k = 0; k < nq; k++)
+         fp_store(gallivm, outs[k], offsetof(struct rast_shaded_quad, sample_mask),
                   fp_jit_quad_part(gallivm, v, k, nq));
    }
 
@@ -516,7 +550,7 @@ static bool fp_jit_shader_ok(const struct tgsi_shader_info *info)
       case TGSI_SEMANTIC_POSITION:
          break;
       default:
-         return false;   /* stencil export, sample mask: not in what fixpipe exposes */
+         return false;   /* stencil export, sample mask: not from TGSI alone (st's come as NIR) */
       }
    }
    return true;
@@ -550,8 +584,8 @@ static void fp_jit_cache_key(const struct tgsi_token *tokens, const nir_shader *
    /* 2: tgsi_exec derivatives; 3: plain 2-D samples lay out their quad;
     * 4: two quads a call; 5: the quads by pointer arrays, four a call for
     * texturing shaders; 6: st's NIR, gathers and multisample fetches;
-    * 7: gathers of 2-D views in the code */
-   static const char version[] = "fixpipe fs quad 7";
+    * 7: gathers of 2-D views in the code; 8: the sample's system values */
+   static const char version[] = "fixpipe fs quad 8";
    /* the quads a call (noskip: one, which also leaves the quads laid out
     * by the code out: fp_jit_sample.c) */
    _mesa_sha1_init(&ctx);
@@ -585,8 +619,9 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    /* st's NIR: every operation gallivm has, its outputs by their NIR slots;
     * TGSI alone: what tgsi_to_nir can read */
    int nir_color_output[RAST_MAX_CBUFS];
+   int sample_mask_output = -1;
    if (src_nir) {
-      if (!fp_jit_nir_outputs(src_nir, &depth_output, nir_color_output))
+      if (!fp_jit_nir_outputs(src_nir, &depth_output, nir_color_output, &sample_mask_output))
          return NULL;
       color_output = nir_color_output;
    } else if (!fp_jit_shader_ok(info)) {
@@ -643,7 +678,7 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
       return NULL;
    }
    LLVMValueRef func = fp_build_fs(v->gallivm, nir, info, sampler, depth_output, color_output,
-                                   num_color_outputs, v->quads);
+                                   num_color_outputs, sample_mask_output, v->quads);
    v->num_gather_units = fp_jit_sampler_gather_units(sampler, v->gather_units);
    gallivm_compile_module(v->gallivm);
    v->func = (fp_jit_fs_func)gallivm_jit_function(v->gallivm, func);

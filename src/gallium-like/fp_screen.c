@@ -204,6 +204,14 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return RAST_MAX_CBUFS;
    case PIPE_CAP_FBFETCH_COHERENT:         /* primitives reach it in order */
       return 1;
+   /* Sample shading (ARB_sample_shading; OES_sample_shading and
+    * OES_sample_variables with mesa/patches/0015): the model shades once a
+    * sample with its interpolators at the sample (docs/msaa.md), every
+    * input, so st need not make `sample` variants of a shader for
+    * glMinSampleShading: set_min_samples says when. */
+   case PIPE_CAP_SAMPLE_SHADING:
+   case PIPE_CAP_FORCE_PERSAMPLE_INTERP:
+      return 1;
    case PIPE_CAP_MAX_DUAL_SOURCE_RENDER_TARGETS:
       return 1;     /* output 1 is the back end's second source (SRC1 factors) */
    case PIPE_CAP_MAX_TEXTURE_2D_SIZE:

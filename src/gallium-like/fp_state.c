@@ -441,9 +441,15 @@ static void fp_set_polygon_stipple(struct pipe_context *pipe, const struct pipe_
    (void)pipe; (void)s;
 }
 
+/* glMinSampleShading (st: the invocations a fragment it asks for): any
+ * number above one shades once a sample, four invocations being at least
+ * what is asked on the model's 4-sample targets. */
 static void fp_set_min_samples(struct pipe_context *pipe, unsigned n)
 {
-   (void)pipe; (void)n;
+   struct fp_context *fp = fp_context(pipe);
+   if ((fp->min_samples > 1) != (n > 1))
+      fp->fs_dirty = true;
+   fp->min_samples = n;
 }
 
 void fp_init_state_functions(struct fp_context *fp)

@@ -106,6 +106,9 @@ static void fp_set_framebuffer_state(struct pipe_context *pipe,
    /* no attachments (GL ES 3.1): the framebuffer's own sample count */
    if (!rfb.samples && fb->samples > 1)
       rfb.samples = fb->samples == RAST_MSAA_SAMPLES ? RAST_MSAA_SAMPLES : 1;
+   /* the shader's sample positions and masks follow the sample count */
+   if (fp->fb_samples != MAX2(rfb.samples, 1))
+      fp->fs_dirty = true;
    fp->fb_samples = MAX2(rfb.samples, 1);
    rast_set_framebuffer(fp->rast, &rfb);
    fp_set_polygon_offset_unit(fp, fb->zsbuf ? fb->zsbuf->format : PIPE_FORMAT_NONE);

@@ -25,6 +25,31 @@ static void fp_fs_free(struct fp_fragment_shader *fs)
    FREE(fs);
 }
 
+/* What makes the shader run once a sample (docs/msaa.md): gl_SampleID,
+ * gl_SamplePosition, gl_SampleMaskIn (each invocation has its sample's
+ * bit alone, which GL allows, so the model need not know a pixel's
+ * coverage before shading it), `sample` inputs, gl_SampleMask. */
+static void fp_fs_scan_samples(struct fp_fragment_shader *fs)
+{
+   const struct tgsi_shader_info *info = &fs->info;
+   fs->sv_sample_id = fs->sv_sample_pos = fs->sv_sample_mask = fs->sample_mask_output = -1;
+   for (unsigned i = 0; i < info->num_system_values; i++) {
+      switch (info->system_value_semantic_name[i]) {
+      case TGSI_SEMANTIC_SAMPLEID:   fs->sv_sample_id = (int)i; break;
+      case TGSI_SEMANTIC_SAMPLEPOS:  fs->sv_sample_pos = (int)i; break;
+      case TGSI_SEMANTIC_SAMPLEMASK: fs->sv_sample_mask = (int)i; break;
+      default: break;
+      }
+   }
+   for (unsigned i = 0; i < info->num_outputs; i++)
+      if (info->output_semantic_name[i] == TGSI_SEMANTIC_SAMPLEMASK)
+         fs->sample_mask_output = (int)i;
+   fs->per_sample = fs->sv_sample_id >= 0 || fs->sv_sample_pos >= 0 || fs->sv_sample_mask >= 0 ||
+                    fs->sample_mask_output >= 0;
+   for (unsigned i = 0; i < info->num_inputs; i++)
+      fs->per_sample |= info->input_interpolate_loc[i] == TGSI_INTERPOLATE_LOC_SAMPLE;
+}
+
 static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_shader_state *templ)
 {
    struct fp_context *fp = fp_context(pipe);
@@ -74,6 +99,7 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
    fs->color0_to_all = info->properties[TGSI_PROPERTY_FS_COLOR0_WRITES_ALL_CBUFS] != 0;
    fs->may_discard = info->uses_kill;
    fs->reads_fragcoord = info->reads_position;
+   fp_fs_scan_samples(fs);
    fs->depth_output = -1;
    for (unsigned i = 0; i < RAST_MAX_CBUFS; i++)
       fs->color_output[i] = -1;
