@@ -258,6 +258,14 @@ struct rast_raster_state {
     * register's or the shader's, to the depth range of the primitive's
     * viewport (rast_set_depth_ranges) instead of [0, 1]. */
    bool depth_clamp;
+   /* GL_MULTISAMPLE disabled (gallium's multisample false) on a
+    * multisampled target: every sample takes the pixel centre's coverage,
+    * depth and colour, as a single-sampled target's pixel would, and the
+    * shader runs once a pixel with sample 0 (its per_sample and
+    * writes_sample_mask do not apply: GL shades per sample and applies
+    * gl_SampleMask only with multisampling on).  A framebuffer-fetch
+    * shader still runs for each sample's colour, at the centre. */
+   bool single_sample;
 };
 
 struct rast_scissor { int minx, miny, maxx, maxy; };   /* max exclusive */

@@ -14,7 +14,10 @@
  *    the sample's position in rational arithmetic; the centre's value
  *    misses it by the gradient times the sample's offset;
  *  - gl_SampleMask (writes_sample_mask) alone shades once a sample, and a
- *    sample is written where the output has its bit.
+ *    sample is written where the output has its bit;
+ *  - GL_MULTISAMPLE disabled (rs.single_sample): the same shader runs once
+ *    a pixel, sample 0, with the centre's inputs, and every sample of a
+ *    pixel whose centre is covered is written, whatever the mask.
  *
  *   test_sample_shading [--scenes N] [--seed S]
  */
@@ -287,6 +290,54 @@ static void one_tri_masked(void)
    rast_destroy(ms.rc);
 }
 
+/* GL_MULTISAMPLE disabled: per_sample and gl_SampleMask do not apply;
+ * each sample plane is the single-sampled model's image. */
+static void one_tri_single_sample(void)
+{
+   static struct target ms, ss;
+   static struct record rm, rs;
+   struct tri tr;
+   random_tri(&tr);
+   target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, 1, true);
+   struct rast_raster_state st;
+   memset(&st, 0, sizeof st);
+   st.half_pixel_center = true;
+   st.line_width = 1.0f;
+   st.point_size = 1.0f;
+   st.single_sample = true;
+   rast_set_raster_state(ms.rc, &st);
+   struct rast_shader fs;
+   memset(&fs, 0, sizeof fs);
+   fs.ctx = &rm;
+   fs.shade = shade;
+   fs.num_outputs = 1;
+   fs.per_sample = true;
+   fs.writes_sample_mask = true;
+   rast_set_shader(ms.rc, &fs);
+   rm.white_masked = false;
+   draw(&ms, &tr, 0, 0);
+   target_init(&ss, &rs, 1, RAST_INTERP_SCANLINE, 1, false);
+   draw(&ss, &tr, 0, 0);
+   unsigned bad_calls = 0, bad_values = 0, bad_planes = 0;
+   for (size_t p = 0; p < PLANE; p++) {
+      bad_calls += rm.calls[0][p] != rs.calls[0][p];
+      for (unsigned k = 1; k < NS; k++)
+         bad_calls += rm.calls[k][p] != 0;
+      if (rs.calls[0][p])
+         bad_values += memcmp(rm.v[0][p], rs.v[0][p], sizeof rm.v[0][p]) != 0;
+      for (unsigned k = 0; k < NS; k++)
+         bad_planes += memcmp(&ms.color[k][p * 4], &ss.color[0][p * 4], 4) != 0;
+   }
+   CHECK(bad_calls == 0, "multisampling off: %u pixel(s) shaded otherwise than once at the "
+         "centre, as sample 0", bad_calls);
+   CHECK(bad_values == 0, "multisampling off: %u pixel(s) with other inputs than the centre's",
+         bad_values);
+   CHECK(bad_planes == 0, "multisampling off: %u sample(s) unlike the single-sampled image",
+         bad_planes);
+   rast_destroy(ms.rc);
+   rast_destroy(ss.rc);
+}
+
 int main(int argc, char **argv)
 {
    unsigned scenes = 200;
@@ -299,6 +350,7 @@ int main(int argc, char **argv)
          one_tri(2);
       one_tri_exact(&worst, &centre_worst);
       one_tri_masked();
+      one_tri_single_sample();
    }
    printf("sample shading: largest colour error %.3f of the bound at the samples, %.1f at the "
           "pixel centres\n", worst, centre_worst);

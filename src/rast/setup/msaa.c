@@ -29,7 +29,8 @@
  * pixel covered at sample k with the registers at sample k (after fetching
  * sample k's colour), the quads telling the shader k.  A shader writing
  * gl_SampleMask runs so too, its invocation for sample k keeping k where
- * the output has bit k.
+ * the output has bit k.  With GL_MULTISAMPLE disabled (rs.single_sample)
+ * every walk samples the centre, and the shader runs once a pixel.
  *
  * docs/msaa.md has the argument, the costs and what stays single-sampled.
  */
@@ -301,7 +302,10 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    const struct rast_shader fs = rc->fs;
    const bool counting = rc->counting;
    const bool shades = rast_backend_shades(rc);
-   const bool per_sample = fs.fetch_mask != 0 || fs.per_sample || fs.writes_sample_mask;
+   /* GL_MULTISAMPLE disabled: every walk at the centre, sample 0 */
+   const bool at_centre = rc->rs.single_sample;
+   const bool masks = fs.writes_sample_mask && !at_centre;
+   const bool per_sample = fs.fetch_mask != 0 || masks || (fs.per_sample && !at_centre);
    bool first = true;
    m->shade = fs.shade;
    m->shade_n = fs.shade_n;
@@ -310,13 +314,13 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
    rc->msaa_busy = true;
    /* the samples' back end shades through the cache; the centre's calls
     * the shader itself (centre_quad) */
-   rc->fs.shade = fs.writes_sample_mask ? sample_shade_mask
-                  : per_sample          ? sample_shade
-                                        : cached_shade;
-   rc->fs.shade_n = !fs.shade_n              ? NULL
-                    : fs.writes_sample_mask ? sample_shade_mask_n
-                    : per_sample            ? sample_shade_n
-                                            : cached_shade_n;
+   rc->fs.shade = masks        ? sample_shade_mask
+                  : per_sample ? sample_shade
+                               : cached_shade;
+   rc->fs.shade_n = !fs.shade_n   ? NULL
+                    : masks      ? sample_shade_mask_n
+                    : per_sample ? sample_shade_n
+                                 : cached_shade_n;
    rc->fs.ctx = rc;
 
    for (int64_t y = top; y < bot; y += MSAA_STRIP_ROWS) {
@@ -341,10 +345,12 @@ void rast_msaa_pass(struct rast_context *rc, enum rast_prim_kind kind, const flo
          if (!(samples >> k & 1u))
             continue;
          m->sample = k;
-         fr->Hx = fr->H - fr->S / 2 + (int64_t)(rast_sample_pos_4x[k][0] * (float)fr->S);
-         fr->Hy = fr->H - fr->S / 2 + (int64_t)(rast_sample_pos_4x[k][1] * (float)fr->S);
+         fr->Hx = at_centre ? fr->H
+                            : fr->H - fr->S / 2 + (int64_t)(rast_sample_pos_4x[k][0] * (float)fr->S);
+         fr->Hy = at_centre ? fr->H
+                            : fr->H - fr->S / 2 + (int64_t)(rast_sample_pos_4x[k][1] * (float)fr->S);
          rast_backend_sample(rc, k);
-         fr_set_sample(fr, k);
+         fr_set_sample(fr, at_centre ? 0 : k);
          one_pass(rc, kind, v0, v1, v2, &first);
       }
    }
