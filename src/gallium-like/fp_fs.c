@@ -139,13 +139,14 @@ static unsigned fp_fs_shade_sample(void *ctx, const struct rast_quad *q,
 }
 
 /* The values fp_fs_shade_sample and the compiled code give a shader for
- * the sample a quad is shaded for, by the framebuffer's samples. */
+ * the sample a quad is shaded for, by the framebuffer's samples and
+ * GL_MULTISAMPLE (off: the model shades at the centre as sample 0). */
 static void fp_fs_sample_tables(struct fp_context *fp)
 {
+   const bool ms = fp->fb_samples > 1 && fp->rasterizer && fp->rasterizer->base.multisample;
    for (unsigned t = 0; t < fp->num_threads; t++) {
       struct fp_jit_context *jc = &fp->fs_thread[t].jit_ctx;
       for (unsigned k = 0; k < RAST_MSAA_SAMPLES; k++) {
-         const bool ms = fp->fb_samples > 1;
          jc->sample_pos[k][0] = ms ? rast_sample_pos_4x[k][0] : 0.5f;
          jc->sample_pos[k][1] = ms ? rast_sample_pos_4x[k][1] : 0.5f;
          jc->sample_mask_in[k] = ms ? 1u << k : 1u;

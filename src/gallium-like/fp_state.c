@@ -222,6 +222,8 @@ static void *fp_create_rasterizer_state(struct pipe_context *pipe,
     * stops clipping z; depth_clamp (st: !depth_clip_far) makes the model
     * clamp each fragment's depth to its viewport's range instead. */
    s->rast.depth_clamp = r->depth_clamp;
+   /* GL_MULTISAMPLE disabled: a multisampled target drawn at the centres */
+   s->rast.single_sample = !r->multisample;
    return s;
 }
 
@@ -249,6 +251,9 @@ static void fp_bind_rasterizer_state(struct pipe_context *pipe, void *cso)
 {
    struct fp_context *fp = fp_context(pipe);
    struct fp_rasterizer_state *s = cso;
+   /* the shader's sample positions and masks follow GL_MULTISAMPLE */
+   if (s && (!fp->rasterizer || fp->rasterizer->base.multisample != s->base.multisample))
+      fp->fs_dirty = true;
    fp->rasterizer = s;
    /* draw flushes itself here unless it is the caller (wide points). */
    draw_set_rasterizer_state(fp->draw, s ? &s->draw : NULL, s);
