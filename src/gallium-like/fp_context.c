@@ -229,6 +229,10 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    }
    if (!fp->draw)
       goto fail;
+   /* the texture instructions of draw's compiled shaders call the same
+    * per-stage glue as its interpreted ones (fp_jit_draw.c) */
+   if (fp->jit)
+      fp_jit_draw_samplers(fp->draw, fp);
    draw_texture_sampler(fp->draw, PIPE_SHADER_VERTEX,
                         fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_VERTEX]));
    draw_texture_sampler(fp->draw, PIPE_SHADER_GEOMETRY,

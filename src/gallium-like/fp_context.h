@@ -79,9 +79,6 @@ struct fp_fragment_shader {
    bool hot_loop;                 /* hot by the rendering loop's rule only */
 };
 
-/* Tiered like fragment shaders: draw runs it in tgsi_exec until it is hot,
- * then compiled (draw's LLVM path); one that samples textures stays in
- * tgsi_exec, where its samples reach the modeled unit (fp_state_shader.c). */
 /* A geometry shader: draw runs it in tgsi_exec (mesa/patches 0013), where
  * its texture instructions reach the modeled unit as a vertex shader's
  * do; while one is bound, the vertex shader is the interpreted one too. */
@@ -90,11 +87,13 @@ struct fp_geometry_shader {
    struct pipe_shader_state state;  /* its own copy of the tokens */
 };
 
+/* Tiered like fragment shaders: draw runs it in tgsi_exec until it is hot,
+ * then compiled (draw's LLVM path); its texture instructions reach the
+ * modeled unit either way (fp_jit_draw.c). */
 struct fp_vertex_shader {
    struct draw_vertex_shader *draw_vs;        /* the one bound */
    struct draw_vertex_shader *draw_vs_llvm;   /* once compiled */
    struct pipe_shader_state state;  /* its own copy of the tokens */
-   bool samples;
    bool llvm_failed;
    uint64_t vertices;
 };

@@ -125,6 +125,16 @@ void fp_jit_fs_destroy(struct fp_jit_variant *v);
 struct lp_build_sampler_soa;
 struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
                                                   void *nir_shader);
+/* The same for a stage draw compiles (fp_jit_draw.c): every texture
+ * instruction calls `stage_sampler`, that stage's glue, through
+ * fp_jit_sample(); nir_shader NULL for TGSI. */
+struct lp_build_sampler_soa *fp_jit_sampler_create_stage(const struct tgsi_shader_info *info,
+                                                        void *nir_shader,
+                                                        struct tgsi_sampler *stage_sampler);
+/* fp_jit_draw.c: draw builds its compiled shaders' samplers so
+ * (mesa/patches/0015) */
+struct draw_context;
+void fp_jit_draw_samplers(struct draw_context *draw, struct fp_context *fp);
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);
 /* A member at byte `offset` of the struct `base` points to, loaded in
  * compiled code as `type` (fp_jit_context's, a unit's registers). */

@@ -25,6 +25,7 @@
 #include "tgsi/tgsi_exec.h"
 #include "tgsi/tgsi_util.h"
 #include "util/u_memory.h"
+#include "util/u_pointer.h"
 
 #include "fp_context.h"
 #include "fp_jit.h"
@@ -54,6 +55,11 @@ struct fp_jit_memo {
 
 struct fp_jit_sampler {
    struct lp_build_sampler_soa base;
+   /* A stage draw compiles (fp_jit_draw.c): its glue, the tgsi_sampler
+    * tgsi_exec calls for that stage, and the C functions, constants in the
+    * code, for draw's jit context has no place for them; NULL for a
+    * fragment shader, which reads them from fp_jit_context. */
+   struct tgsi_sampler *stage_sampler;
    /* per texture index, from the shader's texture instructions */
    uint8_t tgsi_target[PIPE_MAX_SHADER_SAMPLER_VIEWS];
    /* the memo of the last gathers, valid in block `memo_block` alone: the
@@ -244,18 +250,27 @@ static void fp_store_vec(struct gallivm_state *gallivm, LLVMValueRef array, LLVM
 }
 
 /* A call of the C function at `fn_offset` in fp_jit_context, with the
- * context's sampler glue as its first argument (args[0] is set here). */
-static void fp_emit_ctx_call(struct gallivm_state *gallivm, LLVMValueRef context_ptr,
-                             size_t fn_offset, LLVMTypeRef *arg_types, LLVMValueRef *args,
-                             unsigned n)
+ * context's sampler glue as its first argument (args[0] is set here); in a
+ * stage draw compiles, of `stage_fn` with the stage's glue, both constants. */
+static void fp_emit_ctx_call(struct gallivm_state *gallivm, const struct fp_jit_sampler *js,
+                             LLVMValueRef context_ptr, size_t fn_offset, func_pointer stage_fn,
+                             LLVMTypeRef *arg_types, LLVMValueRef *args, unsigned n)
 {
+   LLVMBuilderRef b = gallivm->builder;
    LLVMTypeRef fn_type = LLVMFunctionType(LLVMVoidTypeInContext(gallivm->context), arg_types,
                                           n, 0);
-   LLVMValueRef fn = fp_jit_load(gallivm, context_ptr, fn_offset,
-                                 LLVMPointerType(fn_type, 0));
-   args[0] = fp_jit_load(gallivm, context_ptr, offsetof(struct fp_jit_context, sampler),
-                         arg_types[0]);
-   LLVMBuildCall2(gallivm->builder, fn_type, fn, args, n, "");
+   LLVMValueRef fn;
+   if (js->stage_sampler) {
+      fn = lp_build_const_func_pointer_from_type(gallivm, func_to_pointer(stage_fn), fn_type,
+                                                 "fp_stage_fn");
+      args[0] = LLVMBuildBitCast(b, lp_build_const_int_pointer(gallivm, js->stage_sampler),
+                                 arg_types[0], "");
+   } else {
+      fn = fp_jit_load(gallivm, context_ptr, fn_offset, LLVMPointerType(fn_type, 0));
+      args[0] = fp_jit_load(gallivm, context_ptr, offsetof(struct fp_jit_context, sampler),
+                            arg_types[0]);
+   }
+   LLVMBuildCall2(b, fn_type, fn, args, n, "");
 }
 
 /* The quads of a call (fp_jit_fs.c). */
@@ -355,7 +370,8 @@ static LLVMValueRef fp_emit_tex_quads(struct gallivm_state *gallivm,
 /* A plain 2-D sample on the quads of a call: the struct tex_quad
  * fp_tgsi_get_samples would build, one a quad, stored by the code, and one
  * call into the unit's glue. */
-static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_sampler_params *params)
+static void fp_emit_tex_quad(const struct fp_jit_sampler *js, struct gallivm_state *gallivm,
+                             const struct lp_sampler_params *params)
 {
    const struct fp_call_types ct = fp_call_types(gallivm, params);
    const unsigned nq = ct.nq;
@@ -373,8 +389,9 @@ static void fp_emit_tex_quad(struct gallivm_state *gallivm, const struct lp_samp
    LLVMTypeRef arg_types[] = { voidp, i32, i32, i32, i32, i32, vp, vp };
    LLVMValueRef args[] = { NULL, texture, sampler, ctl, quads, lp_build_const_int32(gallivm, nq),
                            q, rgba };
-   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample_quads),
-                    arg_types, args, ARRAY_SIZE(args));
+   fp_emit_ctx_call(gallivm, js, params->context_ptr,
+                    offsetof(struct fp_jit_context, sample_quads), NULL, arg_types, args,
+                    ARRAY_SIZE(args));
    fp_load_texels(gallivm, ct.type4, rgba, nq, params->texel);
 }
 
@@ -402,7 +419,7 @@ static bool fp_gather_2d(enum tgsi_texture_type target, const struct lp_sampler_
 
 /* Such a gather on the quads of a call: their struct tex_quad stored by
  * the code, and one call into the unit's glue; the texels to texel[4]. */
-static void fp_emit_gather_call(struct gallivm_state *gallivm,
+static void fp_emit_gather_call(const struct fp_jit_sampler *js, struct gallivm_state *gallivm,
                                 const struct lp_sampler_params *params,
                                 enum tgsi_texture_type target, LLVMValueRef texel[4])
 {
@@ -430,8 +447,9 @@ static void fp_emit_gather_call(struct gallivm_state *gallivm,
                            lp_build_const_int32(gallivm, params->sampler_index),
                            lp_build_const_int32(gallivm, comp), off[0], off[1], quads,
                            lp_build_const_int32(gallivm, nq), q, rgba };
-   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, gather_quads),
-                    arg_types, args, ARRAY_SIZE(args));
+   fp_emit_ctx_call(gallivm, js, params->context_ptr,
+                    offsetof(struct fp_jit_context, gather_quads), NULL, arg_types, args,
+                    ARRAY_SIZE(args));
    fp_load_texels(gallivm, ct.type4, rgba, nq, texel);
 }
 
@@ -516,7 +534,7 @@ static void fp_emit_gather_quads(struct fp_jit_sampler *js, struct gallivm_state
       }
    }
    if (!compiled) {
-      fp_emit_gather_call(gallivm, params, target, params->texel);
+      fp_emit_gather_call(js, gallivm, params, target, params->texel);
       return;
    }
    LLVMTypeRef i8 = LLVMInt8TypeInContext(lc), i32 = LLVMInt32TypeInContext(lc);
@@ -599,7 +617,7 @@ static void fp_emit_gather_quads(struct fp_jit_sampler *js, struct gallivm_state
 
    LLVMPositionBuilderAtEnd(b, call_bb);
    LLVMValueRef slow[4];
-   fp_emit_gather_call(gallivm, params, target, slow);
+   fp_emit_gather_call(js, gallivm, params, target, slow);
    LLVMBasicBlockRef call_end = LLVMGetInsertBlock(b);
    LLVMBuildBr(b, merge_bb);
 
@@ -684,8 +702,34 @@ static void fp_emit_tex_general(const struct fp_jit_sampler *js, struct gallivm_
       NULL, texture, lp_build_const_int32(gallivm, params->sampler_index),
       lp_build_const_int32(gallivm, key), coords, lod, derivs, offsets, rgba,
    };
-   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, sample),
-                    arg_types, args, ARRAY_SIZE(args));
+   fp_emit_ctx_call(gallivm, js, params->context_ptr, offsetof(struct fp_jit_context, sample),
+                    (func_pointer)fp_jit_sample, arg_types, args, ARRAY_SIZE(args));
+}
+
+/* An instruction of a stage draw compiles: its lanes are unrelated vertices,
+ * patches or primitives (4, 8 or 16), which tgsi_exec hands the glue four at
+ * a time; so does the code, every instruction through fp_jit_sample(), whose
+ * glue takes the stage's LOD rule (fp_tgsi_get_samples: no implicit LOD
+ * outside the fragment stage).  Every lane is real: a lane past the last
+ * vertex is sampled as tgsi_exec samples the stale lanes of its last quad,
+ * its texels unused. */
+static void fp_emit_tex_stage(const struct fp_jit_sampler *js, struct gallivm_state *gallivm,
+                              const struct lp_sampler_params *params, unsigned key)
+{
+   if (params->type.length % RAST_QUAD_SIZE) {
+      /* draw's lanes come in fours (lp_native_vector_width / 32, or 4) */
+      for (unsigned c = 0; c < 4; c++)
+         params->texel[c] = LLVMConstNull(lp_build_vec_type(gallivm, params->type));
+      return;
+   }
+   const struct fp_call_types ct = fp_call_types(gallivm, params);
+   LLVMValueRef rgba = fp_vec_array(gallivm, ct.fvec, 4 * ct.nq, "texel");
+   for (unsigned k = 0; k < ct.nq; k++) {
+      LLVMValueRef idx = lp_build_const_int32(gallivm, 4 * k);
+      fp_emit_tex_general(js, gallivm, params, key, k, ct.nq,
+                          LLVMBuildGEP2(gallivm->builder, ct.fvec, rgba, &idx, 1, ""));
+   }
+   fp_load_texels(gallivm, ct.type4, rgba, ct.nq, params->texel);
 }
 
 static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
@@ -697,12 +741,16 @@ static void fp_emit_tex_sample(const struct lp_build_sampler_soa *base,
    const enum tgsi_texture_type target =
       unit < PIPE_MAX_SHADER_SAMPLER_VIEWS ? js->tgsi_target[unit] : TGSI_TEXTURE_2D;
    const unsigned key = params->sample_key | (unsigned)target << FP_KEY_TARGET_SHIFT;
+   if (js->stage_sampler) {
+      fp_emit_tex_stage(js, gallivm, params, key);
+      return;
+   }
    const unsigned nq = fp_quads(params);
    /* noskip compiles one quad a call and sends every instruction through
     * get_samples; a dynamic unit index, which may differ between the two
     * quads, takes the call per quad below */
    if (nq >= 2 && fp_plain_2d(target, params->sample_key) && !params->texture_index_offset) {
-      fp_emit_tex_quad(gallivm, params);
+      fp_emit_tex_quad(js, gallivm, params);
       return;
    }
    if (nq >= 2 && fp_gather_2d(target, params)) {
@@ -746,7 +794,6 @@ static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
    LLVMTypeRef voidp = LLVMPointerType(LLVMInt8TypeInContext(lc), 0);
    struct lp_build_context int_bld;
    lp_build_context_init(&int_bld, gallivm, params->int_type);
-   (void)base;
 
    if (params->samples_only) {
       /* no multisampled textures: one sample */
@@ -767,8 +814,9 @@ static void fp_emit_size_query(const struct lp_build_sampler_soa *base,
                                              "dims");
    LLVMTypeRef arg_types[] = { voidp, i32, i32, LLVMPointerType(i32, 0) };
    LLVMValueRef args[] = { NULL, texture, lod, dims };
-   fp_emit_ctx_call(gallivm, params->context_ptr, offsetof(struct fp_jit_context, size),
-                    arg_types, args, ARRAY_SIZE(args));
+   fp_emit_ctx_call(gallivm, (const struct fp_jit_sampler *)base, params->context_ptr,
+                    offsetof(struct fp_jit_context, size), (func_pointer)fp_jit_size, arg_types,
+                    args, ARRAY_SIZE(args));
    for (unsigned c = 0; c < 4; c++) {
       LLVMValueRef idx = lp_build_const_int32(gallivm, c);
       LLVMValueRef v = LLVMBuildLoad2(b, i32, LLVMBuildGEP2(b, i32, dims, &idx, 1, ""), "");
@@ -787,15 +835,25 @@ unsigned fp_jit_sampler_gather_units(const struct lp_build_sampler_soa *sampler,
 struct lp_build_sampler_soa *fp_jit_sampler_create(const struct tgsi_shader_info *info,
                                                   void *shader)
 {
+   return fp_jit_sampler_create_stage(info, shader, NULL);
+}
+
+struct lp_build_sampler_soa *fp_jit_sampler_create_stage(const struct tgsi_shader_info *info,
+                                                        void *shader,
+                                                        struct tgsi_sampler *stage_sampler)
+{
    struct fp_jit_sampler *js = CALLOC_STRUCT(fp_jit_sampler);
    if (!js)
       return NULL;
    js->base.emit_tex_sample = fp_emit_tex_sample;
    js->base.emit_size_query = fp_emit_size_query;
+   js->stage_sampler = stage_sampler;
    for (unsigned i = 0; i < PIPE_MAX_SHADER_SAMPLER_VIEWS; i++)
       js->tgsi_target[i] = info->sampler_targets[i] ? info->sampler_targets[i]
                                                     : TGSI_TEXTURE_2D;
-   nir_shader *nir = shader;
+   nir_shader *nir = shader;   /* NULL: TGSI, whose views declare their targets */
+   if (!nir)
+      return &js->base;
    nir_foreach_function(func, nir) {
       if (!func->impl)
          continue;

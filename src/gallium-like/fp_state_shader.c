@@ -162,13 +162,8 @@ static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_sha
    if (!vs)
       return NULL;
    vs->state = *templ;
-   if (templ->type == PIPE_SHADER_IR_TGSI && templ->tokens) {
-      struct tgsi_shader_info info;
+   if (templ->type == PIPE_SHADER_IR_TGSI && templ->tokens)
       vs->state.tokens = tgsi_dup_tokens(templ->tokens);
-      tgsi_scan_shader(vs->state.tokens, &info);
-      vs->samples = info.file_count[TGSI_FILE_SAMPLER] > 0 ||
-                    info.file_count[TGSI_FILE_SAMPLER_VIEW] > 0;
-   }
    if (fp->jit)
       vs->draw_vs = draw_create_vertex_shader_exec(fp->draw, &vs->state);
    else
@@ -187,7 +182,7 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
 {
    struct fp_vertex_shader *vs = fp->vs;
    vs->vertices += vertices;
-   if (vs->draw_vs_llvm || vs->samples || vs->llvm_failed || !fp->jit ||
+   if (vs->draw_vs_llvm || vs->llvm_failed || !fp->jit ||
        !vs->state.tokens)
       return;
    /* hot as a fragment shader is (fp_fs_hot): past the threshold, or past
