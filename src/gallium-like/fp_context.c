@@ -163,6 +163,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp_init_context_resource_funcs(&fp->pipe);
    fp_init_state_functions(fp);
    fp_init_shader_functions(fp);
+   fp_init_tess_functions(fp);
    fp_init_fb_functions(fp);
    fp_init_clear_functions(fp);
    fp_init_blit_functions(fp);
@@ -217,22 +218,20 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
          goto fail;
    }
 
-   /* Compiled shaders: draw's LLVM vertex path and fixpipe's fragment shaders.
+   /* Compiled shaders: draw's LLVM path and fixpipe's fragment shaders.
     * Each makes its LLVM context with its first compiled shader (draw's own,
     * fp_llvm_context), so a process that never compiles one, as most of a
-    * conformance run's do not, never initializes LLVM. */
+    * conformance run's do not, never initializes LLVM.  draw has its LLVM
+    * path under FIXPIPE_DEBUG=nojit too, for tessellation, which has no
+    * other (fp_state_tess.c); the vertex and geometry shaders draw creates
+    * interpreted stay so there. */
    fp->jit = !(fp->opts->debug & FP_DEBUG_NOJIT);
-   if (fp->jit) {
-      fp->draw = draw_create(&fp->pipe);
-   } else {
-      fp->draw = draw_create_no_llvm(&fp->pipe);
-   }
+   fp->draw = draw_create(&fp->pipe);
    if (!fp->draw)
       goto fail;
    /* the texture instructions of draw's compiled shaders call the same
     * per-stage glue as its interpreted ones (fp_jit_draw.c) */
-   if (fp->jit)
-      fp_jit_draw_samplers(fp->draw, fp);
+   fp_jit_draw_samplers(fp->draw, fp);
    draw_texture_sampler(fp->draw, PIPE_SHADER_VERTEX,
                         fp_tgsi_sampler_base(fp->tgsi_sampler[PIPE_SHADER_VERTEX]));
    draw_texture_sampler(fp->draw, PIPE_SHADER_GEOMETRY,

@@ -11,6 +11,8 @@
 struct draw_context;
 struct draw_stage;
 struct draw_vertex_shader;
+struct draw_tess_ctrl_shader;
+struct draw_tess_eval_shader;
 struct vbuf_render;
 struct tgsi_exec_machine;
 struct fp_tgsi_sampler;
@@ -84,6 +86,9 @@ struct fp_fragment_shader {
  * do; while one is bound, the vertex shader is the interpreted one too. */
 struct fp_geometry_shader {
    struct draw_geometry_shader *draw_gs;
+   /* compiled (draw's LLVM path), made at its first draw with tessellation,
+    * which only draw's LLVM middle end runs (fp_state_tess.c) */
+   struct draw_geometry_shader *draw_gs_llvm;
    struct pipe_shader_state state;  /* its own copy of the tokens */
 };
 
@@ -150,6 +155,11 @@ struct fp_context {
    struct fp_fragment_shader *fs;
    struct fp_vertex_shader *vs;
    struct fp_geometry_shader *gs;
+   /* tessellation (fp_state_tess.c): draw's shaders, and the vertices of a
+    * patch */
+   struct draw_tess_ctrl_shader *tcs;
+   struct draw_tess_eval_shader *tes;
+   uint8_t patch_vertices;
    const struct fp_velems *velems;
 
    struct pipe_framebuffer_state framebuffer;
@@ -272,6 +282,16 @@ LLVMContextRef fp_llvm_context(struct fp_context *fp);
 
 /* fp_state_shader.c: vertex shaders, tiered */
 void fp_vs_count(struct fp_context *fp, uint64_t vertices);
+/* The compiled copy of a vertex shader, made if need be; false when gallivm
+ * refuses it (it stays interpreted). */
+bool fp_vs_compile(struct fp_context *fp, struct fp_vertex_shader *vs);
+/* Binds the vertex and geometry shaders draw is to run: interpreted or
+ * compiled, by what is bound and made. */
+void fp_bind_draw_stages(struct fp_context *fp);
+/* fp_state_tess.c: tessellation's shaders and state; before a draw, the
+ * compiled vertex and geometry shaders it needs (false: it cannot be drawn) */
+void fp_init_tess_functions(struct fp_context *fp);
+bool fp_tess_validate(struct fp_context *fp);
 
 /* fp_vbuf.c */
 struct vbuf_render *fp_create_vbuf_render(struct fp_context *fp);

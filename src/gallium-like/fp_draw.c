@@ -39,6 +39,8 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
    if (unlikely(fp->vectors_on))
       rast_vectors_draw(fp->rast);
    fp_vs_count(fp, (uint64_t)draws[0].count * info->instance_count);
+   if (!fp_tess_validate(fp))
+      return;
    if (fp->fs_dirty) {
       fp_fs_validate(fp);
       fp_vbuf_update_rebase(fp);
@@ -78,7 +80,7 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
     * flush removes them all.  Cheap, and the same slots for the same
     * state, so every draw. */
    draw_prepare_shader_outputs(draw);
-   draw_vbo(draw, info, drawid_offset, indirect, draws, num_draws, 0);
+   draw_vbo(draw, info, drawid_offset, indirect, draws, num_draws, fp->patch_vertices);
 
    for (unsigned i = 0; i < fp->num_vertex_buffers; i++)
       draw_set_mapped_vertex_buffer(draw, i, NULL, 0);

@@ -119,6 +119,9 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
                                          int depth_output, const int *color_output,
                                          unsigned num_color_outputs);
 void fp_jit_fs_destroy(struct fp_jit_variant *v);
+/* st's NIR (made with the screen's options, for nir_to_tgsi) made ready for
+ * lp_build_nir_soa, in place: gallivm's options and llvmpipe's finalisation. */
+void fp_jit_prepare_nir(struct nir_shader *nir);
 
 /* fp_jit_sample.c: the sampler gallivm calls for every texture instruction,
  * and the C functions its code calls. */

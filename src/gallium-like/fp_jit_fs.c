@@ -137,7 +137,7 @@ static char *fp_jit_finalize_nir(struct pipe_screen *screen, void *shader)
  * nir_opt_algebraic lowers what they lower that the screen's did not
  * (ldexp, the packing built-ins, fsat ...), lp_build_opt_nir the rest, as
  * llvmpipe's finalize does for its own NIR. */
-static void fp_jit_prepare_nir(nir_shader *nir)
+void fp_jit_prepare_nir(nir_shader *nir)
 {
    nir->options = &fp_jit_nir_options;
    NIR_PASS_V(nir, nir_lower_int64);

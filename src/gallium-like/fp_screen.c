@@ -242,6 +242,9 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 1024;
    case PIPE_CAP_MAX_GS_INVOCATIONS:
       return 32;
+   /* Tessellation: draw's, as llvmpipe's (fp_state_tess.c) */
+   case PIPE_CAP_MAX_SHADER_PATCH_VARYINGS:
+      return 32;
    case PIPE_CAP_ENDIANNESS:
       return PIPE_ENDIAN_NATIVE;
    case PIPE_CAP_MAX_VARYINGS:
@@ -267,13 +270,18 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
    switch (param) {
    /* Fragment shaders come as st's NIR: the compiled path takes it as it
     * is (fp_jit_fs.c), and tgsi_exec the TGSI nir_to_tgsi makes of it in
-    * the driver, as st would have (fp_state_shader.c).  The other stages
-    * are TGSI for draw and tgsi_exec. */
+    * the driver, as st would have (fp_state_shader.c).  Tessellation's
+    * stages are NIR for draw's LLVM path, the only one that runs them
+    * (draw_tess.c reads NIR alone).  The other stages are TGSI for draw and
+    * tgsi_exec. */
    case PIPE_SHADER_CAP_PREFERRED_IR:
-      return shader == PIPE_SHADER_FRAGMENT ? PIPE_SHADER_IR_NIR : PIPE_SHADER_IR_TGSI;
+      return shader == PIPE_SHADER_FRAGMENT || shader == PIPE_SHADER_TESS_CTRL ||
+                   shader == PIPE_SHADER_TESS_EVAL
+                ? PIPE_SHADER_IR_NIR : PIPE_SHADER_IR_TGSI;
    case PIPE_SHADER_CAP_SUPPORTED_IRS:
-      return shader == PIPE_SHADER_FRAGMENT
-                ? (1 << PIPE_SHADER_IR_TGSI) | (1 << PIPE_SHADER_IR_NIR)
+      return shader == PIPE_SHADER_FRAGMENT ? (1 << PIPE_SHADER_IR_TGSI) | (1 << PIPE_SHADER_IR_NIR)
+             : shader == PIPE_SHADER_TESS_CTRL || shader == PIPE_SHADER_TESS_EVAL
+                ? 1 << PIPE_SHADER_IR_NIR
                 : 1 << PIPE_SHADER_IR_TGSI;
    default:
       break;
@@ -292,6 +300,17 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
          return 0;
       return shader == PIPE_SHADER_FRAGMENT ? tgsi_exec_get_shader_param(param)
                                             : draw_get_shader_param_no_llvm(shader, param);
+   /* draw's LLVM path (gallivm's limits), their texture instructions to
+    * the modeled unit's 16 (fp_jit_draw.c) */
+   case PIPE_SHADER_TESS_CTRL:
+   case PIPE_SHADER_TESS_EVAL:
+      if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
+          param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
+         return 16;
+      if (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
+          param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
+         return 0;
+      return draw_get_shader_param(shader, param);
    case PIPE_SHADER_COMPUTE:
       if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
           param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)

@@ -1,7 +1,9 @@
 /*
- * Shader CSOs and constant buffers.  Vertex shaders belong to draw;
+ * Shader CSOs and constant buffers.  Vertex and geometry shaders belong to
+ * draw, which runs each interpreted or compiled (fp_bind_draw_stages);
  * fragment shaders keep their TGSI for tgsi_exec plus draw's copy (which
  * draw's wide-point stage reads to find sprite-coordinate inputs).
+ * Tessellation's shaders are fp_state_tess.c's.
  */
 #include "util/u_memory.h"
 #include "util/u_inlines.h"
@@ -164,16 +166,35 @@ static void *fp_create_vs_state(struct pipe_context *pipe, const struct pipe_sha
    vs->state = *templ;
    if (templ->type == PIPE_SHADER_IR_TGSI && templ->tokens)
       vs->state.tokens = tgsi_dup_tokens(templ->tokens);
-   if (fp->jit)
-      vs->draw_vs = draw_create_vertex_shader_exec(fp->draw, &vs->state);
-   else
-      vs->draw_vs = draw_create_vertex_shader(fp->draw, &vs->state);
+   /* interpreted until hot (fp_vs_count), or until tessellation needs it
+    * compiled (fp_tess_validate) */
+   vs->draw_vs = draw_create_vertex_shader_exec(fp->draw, &vs->state);
    if (!vs->draw_vs) {
       FREE((void *)vs->state.tokens);
       FREE(vs);
       return NULL;
    }
    return vs;
+}
+
+bool fp_vs_compile(struct fp_context *fp, struct fp_vertex_shader *vs)
+{
+   if (vs->draw_vs_llvm)
+      return true;
+   if (vs->llvm_failed || !vs->state.tokens)
+      return false;
+   vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
+   /* draw falls back on tgsi_exec itself when gallivm refuses */
+   if (!vs->draw_vs_llvm || vs->draw_vs_llvm->interpreted) {
+      if (vs->draw_vs_llvm)
+         draw_delete_vertex_shader(fp->draw, vs->draw_vs_llvm);
+      vs->draw_vs_llvm = NULL;
+      vs->llvm_failed = true;   /* stays interpreted */
+      fp->jit_stats.vs_failed++;
+      return false;
+   }
+   fp->jit_stats.vs_compiled++;
+   return true;
 }
 
 /* Called before each draw of `vertices` vertices: compiles the bound vertex
@@ -194,37 +215,32 @@ void fp_vs_count(struct fp_context *fp, uint64_t vertices)
    if (vs->vertices < FP_JIT_HOT_VERTICES && !loop && !snorm &&
        !(fp->opts->debug & FP_DEBUG_JITALL))
       return;
-   vs->draw_vs_llvm = draw_create_vertex_shader(fp->draw, &vs->state);
-   /* draw falls back on tgsi_exec itself when gallivm refuses */
-   if (!vs->draw_vs_llvm || vs->draw_vs_llvm->interpreted) {
-      if (vs->draw_vs_llvm)
-         draw_delete_vertex_shader(fp->draw, vs->draw_vs_llvm);
-      vs->draw_vs_llvm = NULL;
-      vs->llvm_failed = true;   /* stays interpreted */
-      fp->jit_stats.vs_failed++;
-      return;
-   }
-   fp->jit_stats.vs_compiled++;
-   if (!fp->gs)
-      draw_bind_vertex_shader(fp->draw, vs->draw_vs_llvm);
+   if (fp_vs_compile(fp, vs))
+      fp_bind_draw_stages(fp);
 }
 
-/* The vertex shader draw runs: the compiled one once there is one, unless
- * an interpreted geometry shader follows it (draw's general middle end
- * runs both). */
-static void fp_bind_draw_vs(struct fp_context *fp)
+/* Without tessellation: the vertex shader's compiled copy once there is
+ * one, unless a geometry shader follows it, which runs interpreted (draw's
+ * general middle end runs both).  With it, which only draw's LLVM middle
+ * end runs: both compiled, the copies fp_tess_validate makes. */
+void fp_bind_draw_stages(struct fp_context *fp)
 {
    struct fp_vertex_shader *vs = fp->vs;
+   struct fp_geometry_shader *gs = fp->gs;
+   const bool tess = fp->tes != NULL;
+   draw_bind_geometry_shader(fp->draw, !gs ? NULL
+                                       : tess && gs->draw_gs_llvm ? gs->draw_gs_llvm
+                                                                  : gs->draw_gs);
    draw_bind_vertex_shader(fp->draw, !vs ? NULL
-                                     : vs->draw_vs_llvm && !fp->gs ? vs->draw_vs_llvm
-                                                                   : vs->draw_vs);
+                                     : vs->draw_vs_llvm && (!gs || tess) ? vs->draw_vs_llvm
+                                                                        : vs->draw_vs);
 }
 
 static void fp_bind_vs_state(struct pipe_context *pipe, void *cso)
 {
    struct fp_context *fp = fp_context(pipe);
    fp->vs = cso;
-   fp_bind_draw_vs(fp);
+   fp_bind_draw_stages(fp);
    fp->vl_valid = false;
 }
 
@@ -252,8 +268,7 @@ static void fp_bind_gs_state(struct pipe_context *pipe, void *cso)
 {
    struct fp_context *fp = fp_context(pipe);
    fp->gs = cso;
-   draw_bind_geometry_shader(fp->draw, fp->gs ? fp->gs->draw_gs : NULL);
-   fp_bind_draw_vs(fp);
+   fp_bind_draw_stages(fp);
    fp->vl_valid = false;
 }
 
@@ -262,6 +277,8 @@ static void fp_delete_gs_state(struct pipe_context *pipe, void *cso)
    struct fp_context *fp = fp_context(pipe);
    struct fp_geometry_shader *gs = cso;
    draw_delete_geometry_shader(fp->draw, gs->draw_gs);
+   if (gs->draw_gs_llvm)
+      draw_delete_geometry_shader(fp->draw, gs->draw_gs_llvm);
    FREE((void *)gs->state.tokens);
    FREE(gs);
 }
@@ -297,7 +314,14 @@ static void fp_set_constant_buffer(struct pipe_context *pipe, enum pipe_shader_t
       data = fp_resource(c->buffer)->data + c->buffer_offset;
       size = c->buffer_size;
    }
-   if (shader == PIPE_SHADER_VERTEX || shader == PIPE_SHADER_GEOMETRY)
+   /* draw counts every stage's constants in one unit, its stride: a vec4,
+    * the unit the TGSI of vertex and geometry shaders reads; the compiled
+    * tessellation stages are NIR, whose code bounds a buffer in dwords (as
+    * llvmpipe's draw, whose stride is a float): their sizes go in four times
+    * over, so that draw's count is their dwords */
+   if (shader == PIPE_SHADER_TESS_CTRL || shader == PIPE_SHADER_TESS_EVAL)
+      size *= 4;
+   if (shader != PIPE_SHADER_FRAGMENT && shader != PIPE_SHADER_COMPUTE)
       draw_set_mapped_constant_buffer(fp->draw, shader, index, data, size);
    if (shader == PIPE_SHADER_FRAGMENT)
       fp->fs_dirty = true;
