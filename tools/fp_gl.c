@@ -135,6 +135,8 @@ static GLuint compile(GLenum type, const char *src)
       fp_die("%s shader: %s", type == GL_VERTEX_SHADER     ? "vertex"
                               : type == GL_FRAGMENT_SHADER ? "fragment"
                               : type == 0x8DD9             ? "geometry"
+                              : type == 0x8E88             ? "tessellation control"
+                              : type == 0x8E87             ? "tessellation evaluation"
                                                            : "compute", log);
    }
    return s;
@@ -152,24 +154,34 @@ static void link(GLuint p)
    }
 }
 
-GLuint fp_gl_program_gs(const char *vs, const char *gs, const char *fs,
-                        const char *const *attribs)
+GLuint fp_gl_program_stages(const char *vs, const char *tcs, const char *tes, const char *gs,
+                            const char *fs, const char *const *attribs)
 {
+   /* the stages' GL ES 3.2 enums: vertex, tessellation control and
+    * evaluation, geometry, fragment */
+   const char *const src[5] = { vs, tcs, tes, gs, fs };
+   const GLenum type[5] = { GL_VERTEX_SHADER, 0x8E88, 0x8E87, 0x8DD9, GL_FRAGMENT_SHADER };
+   GLuint sh[5] = { 0 };
    GLuint p = glCreateProgram();
-   GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
-   GLuint g = gs ? compile(0x8DD9 /* GL_GEOMETRY_SHADER, GL ES 3.2 */, gs) : 0;
-   glAttachShader(p, v);
-   if (g)
-      glAttachShader(p, g);
-   glAttachShader(p, f);
+   for (int i = 0; i < 5; i++) {
+      if (!src[i])
+         continue;
+      sh[i] = compile(type[i], src[i]);
+      glAttachShader(p, sh[i]);
+   }
    for (GLuint i = 0; attribs && attribs[i]; i++)
       glBindAttribLocation(p, i, attribs[i]);
    link(p);
-   glDeleteShader(v);
-   if (g)
-      glDeleteShader(g);
-   glDeleteShader(f);
+   for (int i = 0; i < 5; i++)
+      if (sh[i])
+         glDeleteShader(sh[i]);
    return p;
+}
+
+GLuint fp_gl_program_gs(const char *vs, const char *gs, const char *fs,
+                        const char *const *attribs)
+{
+   return fp_gl_program_stages(vs, NULL, NULL, gs, fs, attribs);
 }
 
 GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)

@@ -31,6 +31,10 @@ GLuint fp_gl_program(const char *vs, const char *fs, const char *const *attribs)
 /* The same with a geometry shader between them (gs NULL: none). */
 GLuint fp_gl_program_gs(const char *vs, const char *gs, const char *fs,
                         const char *const *attribs);
+/* The same with any of the stages between them (NULL: none): tessellation
+ * control and evaluation, geometry. */
+GLuint fp_gl_program_stages(const char *vs, const char *tcs, const char *tes, const char *gs,
+                            const char *fs, const char *const *attribs);
 /* A compute program (GL ES 3.1); errors are fatal as above. */
 GLuint fp_gl_compute_program(const char *cs);
 
