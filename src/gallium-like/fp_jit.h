@@ -135,7 +135,7 @@ struct lp_build_sampler_soa *fp_jit_sampler_create_stage(const struct tgsi_shade
                                                         void *nir_shader,
                                                         struct tgsi_sampler *stage_sampler);
 /* fp_jit_draw.c: draw builds its compiled shaders' samplers so
- * (mesa/patches/0015) */
+ * (mesa/patches/0016) */
 struct draw_context;
 void fp_jit_draw_samplers(struct draw_context *draw, struct fp_context *fp);
 void fp_jit_context_init_sampler(struct fp_jit_context *ctx, struct tgsi_sampler *s);

@@ -2,7 +2,7 @@
  * Texture instructions of the shaders draw compiles (vertex, geometry,
  * tessellation control and evaluation) reach the modeled texture unit.
  * draw builds each such shader with the lp_build_sampler_soa the driver's
- * factory makes (mesa/patches/0015): fixpipe's (fp_jit_sample.c), calling
+ * factory makes (mesa/patches/0016): fixpipe's (fp_jit_sample.c), calling
  * the stage's tgsi_sampler, the glue tgsi_exec calls for that stage
  * (fp_sampler.c).  Its pointer is a constant in the code: draw's jit
  * contexts have no slot for it, and draw's shaders belong to one context

@@ -61,7 +61,7 @@ render() {
     # reaches gallivm whole (gathers, multisample fetches, every built-in),
     # and every vertex shader compiles, those that sample textures too (their
     # texture instructions call the unit through draw's sampler factory,
-    # mesa/patches/0015), so that nojit = jitall below holds them to
+    # mesa/patches/0016), so that nojit = jitall below holds them to
     # tgsi_exec (es2-vs-cube, es2-proj-mip)
     set -- $(uncompiled "$out/$name.jitall.log")
     if [ "$4" -gt 0 ] && [ "$1" = 0 ] && [ "$2" = 0 ] && [ "$3" = 0 ] && [ "$5" -gt 0 ]; then
