@@ -616,6 +616,16 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
    const int64_t start = os_time_get_nano();
    if (info->num_inputs > RAST_MAX_VARYINGS || num_color_outputs > RAST_MAX_CBUFS)
       return NULL;
+   /* input arrays (gl_TexCoord[i], an array varying): gallivm reads one at
+    * a run-time index from an array of the inputs the compiled code does not
+    * lay out, and its code generation crashed there; tgsi_exec has them */
+   if (info->indirect_files & (1u << TGSI_FILE_INPUT))
+      return NULL;
+   if (src_nir) {
+      nir_foreach_shader_in_variable(var, src_nir)
+         if (glsl_type_is_array(var->type))
+            return NULL;
+   }
    /* st's NIR: every operation gallivm has, its outputs by their NIR slots;
     * TGSI alone: what tgsi_to_nir can read */
    int nir_color_output[RAST_MAX_CBUFS];
