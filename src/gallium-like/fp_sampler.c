@@ -549,6 +549,13 @@ static inline void fp_unit_sample(struct fp_tgsi_sampler *ts, const struct tex_u
    fp_tex_stats(ts);
 }
 
+/* The array layer among tgsi's operands of a sample or LOD query: a 1-D
+ * array's in t, a cube map array's in c0, the others' in r. */
+static inline float fp_tgsi_layer(enum pipe_texture_target target, float t, float r, float c0)
+{
+   return target == PIPE_TEXTURE_1D_ARRAY ? t : target == PIPE_TEXTURE_CUBE_ARRAY ? c0 : r;
+}
+
 static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigned sview_index,
                                 const unsigned sampler_index, const float s[TGSI_QUAD_SIZE],
                                 const float t[TGSI_QUAD_SIZE], const float r[TGSI_QUAD_SIZE],
@@ -589,7 +596,7 @@ static void fp_tgsi_get_samples(struct tgsi_sampler *tgsi_sampler, const unsigne
       q.s[p] = s[p];
       q.t[p] = t[p];
       q.r[p] = r[p];
-      q.layer[p] = target == PIPE_TEXTURE_1D_ARRAY ? t[p] : cube_array ? c0[p] : r[p];
+      q.layer[p] = fp_tgsi_layer(target, t[p], r[p], c0[p]);
       q.ref[p] = ref_in_c0 ? c0[p] : cube_array ? c1[p] : r[p];
       if (clamp_ref)
          q.ref[p] = CLAMP(q.ref[p], 0.0f, 1.0f);
@@ -738,8 +745,7 @@ static void fp_tgsi_query_lod(const struct tgsi_sampler *tgsi_sampler, const uns
       q.s[i] = s[i];
       q.t[i] = t[i];
       q.r[i] = p[i];
-      q.layer[i] = target == PIPE_TEXTURE_1D_ARRAY ? t[i]
-                   : target == PIPE_TEXTURE_CUBE_ARRAY ? c0[i] : p[i];
+      q.layer[i] = fp_tgsi_layer(target, t[i], p[i], c0[i]);
    }
    /* the implicit LOD of a fragment quad; elsewhere tgsi's quad is four
     * unrelated vertices, whose LOD is 0 as their samples' (get_samples) */
