@@ -381,6 +381,12 @@ struct rast_shader {
    bool writes_depth;
    bool color0_to_all;               /* gl_FragColor broadcast to every cbuf */
    bool may_discard;
+   /* It writes memory (storage buffers, images, atomic counters): every
+    * fragment that reaches it must run, so the back end shades before the
+    * depth and stencil tests and skips no quad for want of a visible
+    * effect.  early_tests (GL's early_fragment_tests) puts the tests
+    * before it all the same, as GL then requires. */
+   bool side_effects, early_tests;
    /* It reads gl_FragCoord: the span processor fills the quads' frag_z
     * and frag_w only then (a skip, counted in skip_fragcoord). */
    bool reads_fragcoord;

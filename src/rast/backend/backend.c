@@ -361,7 +361,8 @@ static void backend_choose(struct rast_context *rc)
    be->layer = 0;                 /* the plans' bases: layer 0 */
    /* Alpha to coverage takes samples away as a discard does. */
    const bool a2c = rc->blend.alpha_to_coverage && rc->fb.samples > 1;
-   be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard || a2c;
+   be->shade_needed = be->ncbufs > 0 || rc->fs.writes_depth || rc->fs.may_discard || a2c ||
+                      rc->fs.side_effects;
 
    /* noskip: every covered quad is shaded, the tests after it (the same
     * bits: an early test is only taken where the shader cannot change
@@ -373,7 +374,12 @@ static void backend_choose(struct rast_context *rc)
    be->skips_counted = !asked && single;
    rast_quads_func group = NULL;
    if (be->zs) {
-      const bool late = rc->fs.writes_depth || rc->fs.may_discard || a2c || noskip;
+      /* A shader with side effects sees every covered fragment, unless
+       * it asks for the tests first (then even noskip keeps them first:
+       * shading the fragments they reject would write memory) */
+      const bool late = !rc->fs.early_tests &&
+                        (rc->fs.writes_depth || rc->fs.may_discard || a2c || noskip ||
+                         rc->fs.side_effects);
       rc->quad = late ? quad_late : quad_early;
       group = late ? group_late : group_early;
    } else if (!be->shade_needed && !noskip) {

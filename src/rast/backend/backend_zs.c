@@ -605,9 +605,12 @@ void rast_zs_plan(struct rast_backend *be, const struct rast_context *rc)
    if (!be->depth_test)
       return;
    const bool is_float = be->zfamily == RAST_ZF_F32 || be->zfamily == RAST_ZF_F32S8;
-   if (rc->fs.writes_depth && rc->rs.depth_clamp)
+   /* with the tests before the shader (early_fragment_tests) its depth
+    * is not the fragment's: GL ignores it */
+   const bool shader_depth = rc->fs.writes_depth && !rc->fs.early_tests;
+   if (shader_depth && rc->rs.depth_clamp)
       be->zconv = is_float ? zconv_shader_float_clamp : zconv_shader_unorm_clamp;
-   else if (rc->fs.writes_depth)
+   else if (shader_depth)
       be->zconv = is_float ? zconv_shader_float : zconv_shader_unorm;
    else if (is_float)
       be->zconv = zconv_float;
