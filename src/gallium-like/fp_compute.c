@@ -5,16 +5,19 @@
  * until all end.  Textures are sampled by the modeled unit (the compute
  * stage's fp_tgsi_sampler, LOD 0 as outside the fragment stage); images,
  * shader storage buffers, atomic counters (st lowers them to buffers) and
- * shared memory are memory (fp_image.c).  Nothing here is a stage of the
- * modeled rasterizer, so the model's threads are not involved: a dispatch
- * runs on the calling thread, after every draw has reached memory
- * (rast_flush returns with the framebuffer written), and before the next.
+ * shared memory are memory (fp_image.c).  The fragment stage's storage
+ * buffers and images are bound here too (fp_fs.c runs them).  Nothing here
+ * is a stage of the modeled rasterizer, so the model's threads are not
+ * involved: a dispatch runs on the calling thread, after every draw has
+ * reached memory (rast_flush returns with the framebuffer written), and
+ * before the next.
  */
 #include "util/u_inlines.h"
 #include "util/u_memory.h"
 #include "tgsi/tgsi_exec.h"
 #include "tgsi/tgsi_parse.h"
 #include "tgsi/tgsi_scan.h"
+#include "draw/draw_context.h"
 
 #include "fp_context.h"
 #include "fp_resource.h"
@@ -137,7 +140,8 @@ static void fp_launch_grid(struct pipe_context *pipe, const struct pipe_grid_inf
             m->LocalMem = shared;
             m->LocalMemSize = cs->shared_size;
             m->NonHelperMask = (1u << MIN2(TGSI_QUAD_SIZE, bw - x)) - 1;
-            tgsi_exec_machine_bind_shader(m, cs->tokens, sampler, fp->tgsi_image, fp->tgsi_buffer);
+            tgsi_exec_machine_bind_shader(m, cs->tokens, sampler, fp->tgsi_image[FP_MEM_COMPUTE],
+                                          fp->tgsi_buffer[FP_MEM_COMPUTE]);
             tgsi_exec_set_constant_buffers(m, PIPE_MAX_CONSTANT_BUFFERS, constants, const_size);
             set_system_value(m, TGSI_SEMANTIC_GRID_SIZE, grid_v);
             set_system_value(m, TGSI_SEMANTIC_BLOCK_SIZE, block_v);
@@ -172,16 +176,29 @@ static void fp_launch_grid(struct pipe_context *pipe, const struct pipe_grid_inf
    FREE(shared);
 }
 
+/* The stage's bindings (enum fp_mem_stage), or -1 for a stage without
+ * storage buffers and images (fp_screen.c). */
+static int mem_stage(enum pipe_shader_type shader)
+{
+   return shader == PIPE_SHADER_COMPUTE ? FP_MEM_COMPUTE
+          : shader == PIPE_SHADER_FRAGMENT ? FP_MEM_FRAGMENT : -1;
+}
+
 static void fp_set_shader_buffers(struct pipe_context *pipe, enum pipe_shader_type shader,
                                   unsigned start, unsigned count,
                                   const struct pipe_shader_buffer *buffers, unsigned writable)
 {
    struct fp_context *fp = fp_context(pipe);
+   const int st = mem_stage(shader);
    (void)writable;
-   if (shader != PIPE_SHADER_COMPUTE)
-      return;   /* the other stages have none (fp_screen.c) */
+   if (st < 0)
+      return;
+   /* the model's threads read the fragment stage's bindings while they
+    * draw: whatever draw still holds is drawn with the old ones */
+   if (st == FP_MEM_FRAGMENT)
+      draw_flush(fp->draw);
    for (unsigned i = 0; i < count && start + i < PIPE_MAX_SHADER_BUFFERS; i++)
-      util_copy_shader_buffer(&fp->ssbo[start + i], buffers ? &buffers[i] : NULL);
+      util_copy_shader_buffer(&fp->ssbo[st][start + i], buffers ? &buffers[i] : NULL);
 }
 
 static void fp_set_shader_images(struct pipe_context *pipe, enum pipe_shader_type shader,
@@ -189,22 +206,27 @@ static void fp_set_shader_images(struct pipe_context *pipe, enum pipe_shader_typ
                                  const struct pipe_image_view *images)
 {
    struct fp_context *fp = fp_context(pipe);
-   if (shader != PIPE_SHADER_COMPUTE)
+   const int st = mem_stage(shader);
+   if (st < 0)
       return;
+   if (st == FP_MEM_FRAGMENT)
+      draw_flush(fp->draw);
    for (unsigned i = 0; i < count + unbind_trailing && start + i < PIPE_MAX_SHADER_IMAGES; i++)
-      util_copy_image_view(&fp->images[start + i], images && i < count ? &images[i] : NULL);
+      util_copy_image_view(&fp->images[st][start + i], images && i < count ? &images[i] : NULL);
 }
 
 void fp_compute_release(struct fp_context *fp)
 {
-   for (unsigned i = 0; i < PIPE_MAX_SHADER_BUFFERS; i++)
-      pipe_resource_reference(&fp->ssbo[i].buffer, NULL);
-   for (unsigned i = 0; i < PIPE_MAX_SHADER_IMAGES; i++)
-      pipe_resource_reference(&fp->images[i].resource, NULL);
-   FREE(fp->tgsi_image);
-   FREE(fp->tgsi_buffer);
-   fp->tgsi_image = NULL;
-   fp->tgsi_buffer = NULL;
+   for (unsigned st = 0; st < FP_MEM_STAGES; st++) {
+      for (unsigned i = 0; i < PIPE_MAX_SHADER_BUFFERS; i++)
+         pipe_resource_reference(&fp->ssbo[st][i].buffer, NULL);
+      for (unsigned i = 0; i < PIPE_MAX_SHADER_IMAGES; i++)
+         pipe_resource_reference(&fp->images[st][i].resource, NULL);
+      FREE(fp->tgsi_image[st]);
+      FREE(fp->tgsi_buffer[st]);
+      fp->tgsi_image[st] = NULL;
+      fp->tgsi_buffer[st] = NULL;
+   }
 }
 
 bool fp_init_compute_functions(struct fp_context *fp)
@@ -216,7 +238,11 @@ bool fp_init_compute_functions(struct fp_context *fp)
    p->launch_grid = fp_launch_grid;
    p->set_shader_buffers = fp_set_shader_buffers;
    p->set_shader_images = fp_set_shader_images;
-   fp->tgsi_image = fp_tgsi_image_create(fp->images);
-   fp->tgsi_buffer = fp_tgsi_buffer_create(fp->ssbo);
-   return fp->tgsi_image && fp->tgsi_buffer;
+   bool ok = true;
+   for (unsigned st = 0; st < FP_MEM_STAGES; st++) {
+      fp->tgsi_image[st] = fp_tgsi_image_create(fp->images[st]);
+      fp->tgsi_buffer[st] = fp_tgsi_buffer_create(fp->ssbo[st]);
+      ok &= fp->tgsi_image[st] && fp->tgsi_buffer[st];
+   }
+   return ok;
 }

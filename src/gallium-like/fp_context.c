@@ -96,14 +96,22 @@ static void fp_flush(struct pipe_context *pipe, struct pipe_fence_handle **fence
       *fence = (struct pipe_fence_handle *)(uintptr_t)1;   /* already signalled */
 }
 
+/* A draw's fragments (their colours, and their stores to storage buffers
+ * and images) are complete when draw_vbo returns: it flushes draw, whose
+ * back end ends the batch with rast_flush, which returns once every model
+ * thread has drawn its share (docs/threads.md).  The barriers flush all
+ * the same, so that nothing draw might hold stays unseen by what follows
+ * (a later draw, a map, a dispatch). */
 static void fp_texture_barrier(struct pipe_context *pipe, unsigned flags)
 {
-   (void)pipe; (void)flags;
+   (void)flags;
+   draw_flush(fp_context(pipe)->draw);
 }
 
 static void fp_memory_barrier(struct pipe_context *pipe, unsigned flags)
 {
-   (void)pipe; (void)flags;
+   (void)flags;
+   draw_flush(fp_context(pipe)->draw);
 }
 
 /* EGLImage export (dri2_create_from_texture) calls this unconditionally; the

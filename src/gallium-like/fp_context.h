@@ -21,6 +21,9 @@ struct nir_shader;
 struct tgsi_image;
 struct tgsi_buffer;
 
+/* The stages with storage buffers and images (fp_context.ssbo, images). */
+enum fp_mem_stage { FP_MEM_COMPUTE, FP_MEM_FRAGMENT, FP_MEM_STAGES };
+
 struct fp_blend_state {
    struct pipe_blend_state base;
    struct rast_blend_state rast;
@@ -53,6 +56,9 @@ struct fp_fragment_shader {
    bool color0_to_all;
    bool writes_depth;
    bool may_discard;
+   /* stores or atomics to storage buffers and images (atomic counters are
+    * storage buffers); early_tests: layout(early_fragment_tests) */
+   bool side_effects, early_tests;
    bool reads_fragcoord;          /* gl_FragCoord, an input or a system value */
    /* Sample shading (docs/msaa.md): the SYSTEM_VALUE registers of
     * gl_SampleID, gl_SamplePosition and gl_SampleMaskIn (-1 where not
@@ -220,13 +226,16 @@ struct fp_context {
    uint64_t so_written[PIPE_MAX_VERTEX_STREAMS], so_generated[PIPE_MAX_VERTEX_STREAMS];
    unsigned active_primgen_queries;
 
-   /* Compute (fp_compute.c, fp_image.c): the compute stage's shader
-    * storage buffers and images; the other stages have none. */
+   /* Compute (fp_compute.c) and the storage buffers and images of the
+    * compute and fragment stages (fp_image.c), indexed by enum
+    * fp_mem_stage; the vertex and geometry stages have none.  The
+    * fragment stage's interfaces are shared by every thread's machine:
+    * they only read the bindings, which change between batches. */
    struct fp_compute_shader *cs;
-   struct pipe_shader_buffer ssbo[PIPE_MAX_SHADER_BUFFERS];
-   struct pipe_image_view images[PIPE_MAX_SHADER_IMAGES];
-   struct tgsi_image *tgsi_image;
-   struct tgsi_buffer *tgsi_buffer;
+   struct pipe_shader_buffer ssbo[FP_MEM_STAGES][PIPE_MAX_SHADER_BUFFERS];
+   struct pipe_image_view images[FP_MEM_STAGES][PIPE_MAX_SHADER_IMAGES];
+   struct tgsi_image *tgsi_image[FP_MEM_STAGES];
+   struct tgsi_buffer *tgsi_buffer[FP_MEM_STAGES];
    bool print_stats;
    struct fp_context *stats_next;   /* FIXPIPE_STATS: the contexts alive (fp_context.c) */
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */

@@ -358,6 +358,8 @@ void fp_fs_validate(struct fp_context *fp)
    rs.writes_depth = fp->fs->writes_depth;
    rs.color0_to_all = fp->fs->color0_to_all;
    rs.may_discard = fp->fs->may_discard;
+   rs.side_effects = fp->fs->side_effects;
+   rs.early_tests = fp->fs->early_tests;
    rs.reads_fragcoord = fp->fs->reads_fragcoord;
    rs.fetch_mask = fp->fs->fetch_mask;
    rs.per_sample = fp->fs->per_sample || fp->min_samples > 1;
@@ -388,7 +390,8 @@ void fp_fs_validate(struct fp_context *fp)
       tgsi_exec_set_constant_buffers(th->mach, PIPE_MAX_CONSTANT_BUFFERS, bufs, sizes);
       tgsi_exec_machine_bind_shader(th->mach, fp->fs->exec_tokens,
                                     fp_tgsi_sampler_base(th->sampler),
-                                    NULL, NULL);
+                                    fp->tgsi_image[FP_MEM_FRAGMENT],
+                                    fp->tgsi_buffer[FP_MEM_FRAGMENT]);
       fp_fs_drop_input_decls(th->mach);
    }
 

@@ -1,9 +1,12 @@
 /*
- * Images and shader storage buffers for tgsi_exec (GL ES 3.1 compute
+ * Images and shader storage buffers for tgsi_exec (compute and fragment
  * shaders): imageLoad, imageStore, imageAtomic*, imageSize and the SSBO
  * lookup, on the driver's linear resources (fp_resource.h).  Memory
  * operations only, like clears and copies: no stage of the model reads or
- * writes them (docs/compute.md).  A coordinate outside the view reads zero
+ * writes them (docs/compute.md).  Fragment shaders call them from every
+ * thread of the model at once, so the atomics are atomic on the storage;
+ * plain loads and stores of different fragments are unordered, as GL
+ * leaves them within a draw.  A coordinate outside the view reads zero
  * (alpha 1) and writes nothing, as GL's robust behaviour and softpipe.
  */
 #include "util/u_math.h"
@@ -143,28 +146,37 @@ static void fp_image_store(const struct tgsi_image *image, const struct tgsi_ima
    }
 }
 
-/* One atomic operation on a 32-bit texel (r32ui, r32i; r32f exchange);
- * returns the value before it. */
+/* The result of one atomic operation on a 32-bit texel (r32ui, r32i;
+ * r32f exchange and add) holding `old`. */
+static uint32_t atomic32_result(enum tgsi_opcode op, uint32_t old, uint32_t a, uint32_t b)
+{
+   union { uint32_t u; float f; } x = { old }, y = { a };
+   switch (op) {
+   case TGSI_OPCODE_ATOMUADD: return old + a;
+   case TGSI_OPCODE_ATOMXCHG: return a;
+   case TGSI_OPCODE_ATOMCAS: return old == a ? b : old;
+   case TGSI_OPCODE_ATOMAND: return old & a;
+   case TGSI_OPCODE_ATOMOR: return old | a;
+   case TGSI_OPCODE_ATOMXOR: return old ^ a;
+   case TGSI_OPCODE_ATOMUMIN: return MIN2(old, a);
+   case TGSI_OPCODE_ATOMUMAX: return MAX2(old, a);
+   case TGSI_OPCODE_ATOMIMIN: return (uint32_t)MIN2((int32_t)old, (int32_t)a);
+   case TGSI_OPCODE_ATOMIMAX: return (uint32_t)MAX2((int32_t)old, (int32_t)a);
+   case TGSI_OPCODE_ATOMFADD: x.f += y.f; return x.u;
+   default: return old;
+   }
+}
+
+/* The operation on the texel as one compare-and-swap: fragment shaders run
+ * on the model's threads at once (docs/threads.md), and two fragments'
+ * atomics on one texel must not lose either's update.  Returns the value
+ * before it. */
 static uint32_t atomic32(enum tgsi_opcode op, uint32_t *texel, uint32_t a, uint32_t b)
 {
-   const uint32_t old = *texel;
-   union { uint32_t u; float f; } x = { old }, y = { a };
-   uint32_t v;
-   switch (op) {
-   case TGSI_OPCODE_ATOMUADD: v = old + a; break;
-   case TGSI_OPCODE_ATOMXCHG: v = a; break;
-   case TGSI_OPCODE_ATOMCAS: v = old == a ? b : old; break;
-   case TGSI_OPCODE_ATOMAND: v = old & a; break;
-   case TGSI_OPCODE_ATOMOR: v = old | a; break;
-   case TGSI_OPCODE_ATOMXOR: v = old ^ a; break;
-   case TGSI_OPCODE_ATOMUMIN: v = MIN2(old, a); break;
-   case TGSI_OPCODE_ATOMUMAX: v = MAX2(old, a); break;
-   case TGSI_OPCODE_ATOMIMIN: v = (uint32_t)MIN2((int32_t)old, (int32_t)a); break;
-   case TGSI_OPCODE_ATOMIMAX: v = (uint32_t)MAX2((int32_t)old, (int32_t)a); break;
-   case TGSI_OPCODE_ATOMFADD: x.f += y.f; v = x.u; break;
-   default: v = old; break;
-   }
-   *texel = v;
+   uint32_t old = __atomic_load_n(texel, __ATOMIC_RELAXED);
+   while (!__atomic_compare_exchange_n(texel, &old, atomic32_result(op, old, a, b), true,
+                                       __ATOMIC_SEQ_CST, __ATOMIC_RELAXED))
+      ;
    return old;
 }
 
@@ -186,7 +198,8 @@ static void fp_image_op(const struct tgsi_image *image, const struct tgsi_image_
       }
       uint32_t *word = (uint32_t *)texel;
       if (!(prm->execmask & (1u << p))) {
-         ((uint32_t *)rgba[0])[p] = *word;   /* a lane that is off reads only */
+         /* a lane that is off reads only */
+         ((uint32_t *)rgba[0])[p] = __atomic_load_n(word, __ATOMIC_RELAXED);
          continue;
       }
       ((uint32_t *)rgba[0])[p] = atomic32(op, word, ((const uint32_t *)rgba[0])[p],

@@ -630,6 +630,13 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
     * TGSI alone: what tgsi_to_nir can read */
    int nir_color_output[RAST_MAX_CBUFS];
    int sample_mask_output = -1;
+   /* Storage buffers, images and atomic counters (st's storage buffers)
+    * stay interpreted: the compiled code has none of gallivm's image and
+    * buffer hooks, and tgsi_exec's atomics are atomic on the storage
+    * across the model's threads (fp_image.c, mesa/patches/0017) */
+   if (info->file_max[TGSI_FILE_BUFFER] >= 0 || info->file_max[TGSI_FILE_IMAGE] >= 0 ||
+       info->file_max[TGSI_FILE_HW_ATOMIC] >= 0 || info->writes_memory)
+      return NULL;
    if (src_nir) {
       if (!fp_jit_nir_outputs(src_nir, &depth_output, nir_color_output, &sample_mask_output))
          return NULL;

@@ -175,6 +175,15 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 7;
    case PIPE_CAP_SHADER_BUFFER_OFFSET_ALIGNMENT:
       return 16;
+   /* an image store without a format qualifier packs by the view's
+    * format (fp_image_store) */
+   case PIPE_CAP_IMAGE_STORE_FORMATTED:
+      return 1;
+   /* st lowers image derefs to image indices for every stage: the
+    * fragment stage's NIR reaches nir_to_tgsi in the driver
+    * (fp_state_shader.c), which takes only the lowered form */
+   case PIPE_CAP_NIR_IMAGES_AS_DEREF:
+      return 0;
    /* Texture buffers: texelFetch through the unit's fetch
     * (TEX_TARGET_BUFFER, fp_sampler.c), llvmpipe's limits. */
    case PIPE_CAP_TEXTURE_BUFFER_OBJECTS:
@@ -295,8 +304,12 @@ static int fp_get_shader_param(struct pipe_screen *screen, enum pipe_shader_type
       if (param == PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS ||
           param == PIPE_SHADER_CAP_MAX_SAMPLER_VIEWS)
          return 16;
-      if (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
-          param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES)
+      /* storage buffers and images (atomic counters: st's storage
+       * buffers) in fragment shaders, tgsi_exec's numbers as compute's and
+       * llvmpipe's (fp_image.c); draw's stages have none */
+      if (shader != PIPE_SHADER_FRAGMENT &&
+          (param == PIPE_SHADER_CAP_MAX_SHADER_BUFFERS ||
+           param == PIPE_SHADER_CAP_MAX_SHADER_IMAGES))
          return 0;
       return shader == PIPE_SHADER_FRAGMENT ? tgsi_exec_get_shader_param(param)
                                             : draw_get_shader_param_no_llvm(shader, param);

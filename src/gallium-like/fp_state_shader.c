@@ -100,6 +100,8 @@ static void *fp_create_fs_state(struct pipe_context *pipe, const struct pipe_sha
       info->properties[TGSI_PROPERTY_FS_COORD_PIXEL_CENTER] == TGSI_FS_COORD_PIXEL_CENTER_INTEGER;
    fs->color0_to_all = info->properties[TGSI_PROPERTY_FS_COLOR0_WRITES_ALL_CBUFS] != 0;
    fs->may_discard = info->uses_kill;
+   fs->side_effects = info->writes_memory;
+   fs->early_tests = info->properties[TGSI_PROPERTY_FS_EARLY_DEPTH_STENCIL] != 0;
    fs->reads_fragcoord = info->reads_position;
    fp_fs_scan_samples(fs);
    fs->depth_output = -1;
