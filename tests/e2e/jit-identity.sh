@@ -7,6 +7,9 @@
 #   FIXPIPE_DEBUG=jitall, same cache again    every shader from the disk cache
 # and the PNGs compared, the jitall run having refused no fragment or vertex
 # shader and interpreted no quad (a check shown failing on a tiered run);
+# the programs of fragment shaders with storage buffers, images or atomic
+# counters (fsmem-*), which stay interpreted by design (docs/jit.md), must
+# instead have had those refused, and match the interpreter all the same;
 # and the demo tiered (the default), where a batch that
 # alone takes an interpreted shader past the threshold compiles it first
 # (fp_fs_batch_ahead): each compiled shader then interpreted fewer than the
@@ -48,6 +51,16 @@ render() {
             return 1
         fi
     done
+    # fragment shaders with side effects: refused (interpreted) under jitall
+    case $name in fsmem-*)
+        set -- $(uncompiled "$out/$name.jitall.log")
+        if [ "$4" -gt 0 ] && [ "$1" -gt 0 ] && [ "$2" -gt 0 ] && [ "$3" = 0 ]; then
+            pass "$name: under jitall the $1 fragment shaders with storage buffers or images stay interpreted ($2 quads)"
+            return 0
+        fi
+        fail "$name: under jitall $1 fragment shaders refused, $2 quads interpreted, $3 vertex shaders refused (want those with storage buffers or images interpreted)"
+        return 1
+    esac
     # the third run must have taken every compiled shader from the cache
     set -- $(sed -n 's/.*fragment shaders: tiered, compiled \([0-9]*\) .*from the disk cache \([0-9]*\)).*/\1 \2/p' \
                  "$out/$name.cached.log" | awk '{ c += $1; h += $2 } END { print c + 0, h + 0 }')
