@@ -66,7 +66,11 @@ static uint8_t *image_texel(const struct pipe_image_view *iv, const struct tgsi_
    const int h = res->target == PIPE_TEXTURE_1D || res->target == PIPE_TEXTURE_1D_ARRAY
                     ? 1 : u_minify(res->height0, level);
    const int op = layer_operand(prm->tgsi_tex_instr);
-   const int y = op == 1 ? 0 : t[p];
+   /* a 1-D image's t is no coordinate (the register's y holds whatever
+    * the shader left there), or its layer in a 1-D array */
+   const bool one_d = prm->tgsi_tex_instr == TGSI_TEXTURE_1D ||
+                      prm->tgsi_tex_instr == TGSI_TEXTURE_1D_ARRAY;
+   const int y = one_d ? 0 : t[p];
    int layer = 0, layers = 1;
    if (op >= 0) {
       layer = op == 1 ? t[p] : r[p];
