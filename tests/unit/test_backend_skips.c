@@ -6,7 +6,11 @@
  * counted (skip_early_quads, skip_shade_quads) and switched off by
  * RAST_OPT_NOSKIP, which shades every covered quad and tests after it:
  * the colour and depth/stencil buffers must be the same bytes both ways,
- * and the shader must see exactly the quads the skips do not count.
+ * and the shader must see exactly the quads the skips do not count.  A
+ * shader with side effects (rast_shader.side_effects: stores to memory)
+ * must see every covered quad with the skips on, and with early_tests
+ * (GL's early_fragment_tests) every quad but those the early test
+ * rejects: the pixels are the same bytes all the same.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -64,7 +68,7 @@ static void draw(struct rast_context *rc, float z, const float v[3][2])
 /* The scene: a near triangle, a far one mostly behind it (early rejection
  * of whole quads and whole blocks), then a depth-only pass in front and a
  * triangle behind that (rejected where the depth-only pass wrote). */
-static void scene(struct pass *p, unsigned opts, bool groups)
+static void scene(struct pass *p, unsigned opts, bool groups, bool side_effects, bool early_tests)
 {
    struct rast_context *rc = rast_create(rast_profile_by_name("seed"));
    t_plain_state(rc);
@@ -79,6 +83,8 @@ static void scene(struct pass *p, unsigned opts, bool groups)
       fs.group = 4;
    }
    fs.num_outputs = 1;
+   fs.side_effects = side_effects;
+   fs.early_tests = early_tests;
    rast_set_shader(rc, &fs);
    rast_set_options(rc, opts);
    struct rast_depth_stencil_state dsa;
@@ -121,10 +127,10 @@ static void scene(struct pass *p, unsigned opts, bool groups)
 
 int main(void)
 {
-   static struct pass skip, ref;
+   static struct pass skip, ref, fx, fx_early;
    for (int groups = 0; groups < 2; groups++) {
-      scene(&skip, 0, groups);
-      scene(&ref, RAST_OPT_NOSKIP, groups);
+      scene(&skip, 0, groups, false, false);
+      scene(&ref, RAST_OPT_NOSKIP, groups, false, false);
       CHECK(!memcmp(skip.color, ref.color, sizeof(ref.color)),
             "groups %d: colour differs with the skips", groups);
       CHECK(!memcmp(skip.zs, ref.zs, sizeof(ref.zs)),
@@ -142,6 +148,25 @@ int main(void)
             "groups %d: %llu shaded + %llu rejected + %llu unshaded != %llu quads", groups,
             (unsigned long long)skip.shaded, (unsigned long long)skip.early,
             (unsigned long long)skip.unshaded, (unsigned long long)skip.quads);
+
+      scene(&fx, 0, groups, true, false);
+      CHECK(!memcmp(fx.color, ref.color, sizeof(ref.color)) &&
+            !memcmp(fx.zs, ref.zs, sizeof(ref.zs)),
+            "groups %d: side effects: the pixels differ from noskip's", groups);
+      CHECK(fx.shaded == fx.quads && fx.quads == ref.quads && fx.early == 0 && fx.unshaded == 0,
+            "groups %d: side effects: %llu of %llu quads shaded (%llu rejected, %llu unshaded)",
+            groups, (unsigned long long)fx.shaded, (unsigned long long)fx.quads,
+            (unsigned long long)fx.early, (unsigned long long)fx.unshaded);
+      scene(&fx_early, 0, groups, true, true);
+      CHECK(!memcmp(fx_early.color, ref.color, sizeof(ref.color)) &&
+            !memcmp(fx_early.zs, ref.zs, sizeof(ref.zs)),
+            "groups %d: early tests: the pixels differ from noskip's", groups);
+      CHECK(fx_early.early == skip.early && fx_early.unshaded == 0 &&
+            fx_early.shaded + fx_early.early == fx_early.quads,
+            "groups %d: early tests: %llu shaded, %llu rejected (want %llu), %llu unshaded, "
+            "%llu quads", groups, (unsigned long long)fx_early.shaded,
+            (unsigned long long)fx_early.early, (unsigned long long)skip.early,
+            (unsigned long long)fx_early.unshaded, (unsigned long long)fx_early.quads);
    }
    return t_summary("backend_skips");
 }
