@@ -528,6 +528,23 @@ void rast_set_blend(struct rast_context *rc, const struct rast_blend_state *blen
 void rast_set_blend_color(struct rast_context *rc, const float color[4]);
 void rast_set_vertex_layout(struct rast_context *rc, const struct rast_vertex_layout *vl);
 void rast_set_shader(struct rast_context *rc, const struct rast_shader *fs);
+
+/* interpolateAt* (interp/interp_at.c): input `var` of quad q's pixels, its
+ * four channels, at another point of each pixel, by the model's
+ * interpolators in their formats.  OFFSET: arg0[i], arg1[i] are pixel i's
+ * offset from its centre in pixels (rounded to the XY format's grid, within
+ * the pixel); SAMPLE: arg0[i]'s bits are the sample index (the centre on a
+ * single-sampled target); CENTROID: where the model shaded.  Called from
+ * the shader while the model shades q, on the model context that shades
+ * it. */
+enum rast_interp_at_kind {
+   RAST_INTERP_AT_CENTROID,
+   RAST_INTERP_AT_SAMPLE,
+   RAST_INTERP_AT_OFFSET,
+};
+void rast_interp_at(struct rast_context *rc, const struct rast_quad *q, unsigned var,
+                    enum rast_interp_at_kind kind, const float arg0[RAST_QUAD_SIZE],
+                    const float arg1[RAST_QUAD_SIZE], float out[4][RAST_QUAD_SIZE]);
 /* The number system of the texture path (fixed/numsys.h: FIXPIPE_TEXFMT):
  * the perspective division of PERSPECTIVE varyings computes in it.  NULL
  * selects the default, dfx24. */

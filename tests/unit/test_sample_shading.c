@@ -112,28 +112,12 @@ static void target_init(struct target *t, struct record *r, unsigned samples, un
    r->white_masked = white_masked;
 }
 
-struct tri { float v[3][SLOTS][4]; };
-
-static float snap(float v) { return roundf(v * 4096.0f) / 4096.0f; }
-
-static void random_tri(struct tri *tr)
+static void random_tri(struct t_slot_tri *tr)
 {
-   const double pick = t_rand();
-   const float cx = (float)(W * t_rand()), cy = (float)(H * t_rand());
-   const float r = pick < 0.3 ? 4.0f : pick < 0.8 ? 20.0f : 60.0f;
-   for (int i = 0; i < 3; i++) {
-      float *pos = tr->v[i][0];
-      pos[0] = snap(cx + (float)(r * (2 * t_rand() - 1)));
-      pos[1] = snap(cy + (float)(r * (2 * t_rand() - 1)));
-      pos[2] = (float)t_rand();
-      pos[3] = 1.0f / (float)(0.5 + 3.5 * t_rand());      /* 1/w */
-      for (int s = 1; s < SLOTS; s++)
-         for (int c = 0; c < 4; c++)
-            tr->v[i][s][c] = (float)(s == 2 ? t_rand() : 8 * t_rand() - 4);
-   }
+   t_random_slot_tri(tr, W, H);
 }
 
-static void draw(struct target *t, const struct tri *tr, float dx, float dy)
+static void draw(struct target *t, const struct t_slot_tri *tr, float dx, float dy)
 {
    static float v[3][SLOTS][4];
    memcpy(v, tr->v, sizeof v);
@@ -154,26 +138,11 @@ static void mark(void *ctx, int x, int y)
    ((struct refmark *)ctx)->in[(size_t)y * W + (size_t)x] = 1;
 }
 
-__extension__ typedef __int128 i128;
-
-/* The exact plane of the colour registers a (of the vertices' registers
- * ra[3]) at window point (px, py) in 1/4096 pixels, in last bits. */
-static long double exact_plane(const int64_t X[3], const int64_t Y[3], const int64_t ra[3],
-                               int64_t px, int64_t py)
-{
-   const int64_t e1x = X[1] - X[0], e1y = Y[1] - Y[0], e2x = X[2] - X[0], e2y = Y[2] - Y[0];
-   const int64_t qx = px - X[0], qy = py - Y[0];
-   const i128 det = (i128)e1x * e2y - (i128)e1y * e2x;
-   const i128 na = (i128)qx * e2y - (i128)qy * e2x, nb = (i128)e1x * qy - (i128)e1y * qx;
-   const i128 num = na * (ra[1] - ra[0]) + nb * (ra[2] - ra[0]);
-   return (long double)ra[0] + (long double)num / (long double)det;
-}
-
 static void one_tri(unsigned threads)
 {
    static struct target ms, ss;
    static struct record rm, rs;
-   struct tri tr;
+   struct t_slot_tri tr;
    random_tri(&tr);
 
    target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, threads, false);
@@ -213,7 +182,7 @@ static void one_tri_exact(double *worst, double *centre_worst)
 {
    static struct target ms;
    static struct record rm;
-   struct tri tr;
+   struct t_slot_tri tr;
    random_tri(&tr);
    target_init(&ms, &rm, NS, RAST_INTERP_VECTOR, 1, false);
    draw(&ms, &tr, 0, 0);
@@ -240,9 +209,9 @@ static void one_tri_exact(double *worst, double *centre_worst)
             const int64_t sx = (int64_t)(rast_sample_pos_4x[k][0] * 4096.0f);
             const int64_t sy = (int64_t)(rast_sample_pos_4x[k][1] * 4096.0f);
             const long double got = (long double)rm.v[k][p][c] * unit;
-            const double err = (double)fabsl(got - exact_plane(X, Y, ra, x * 4096 + sx,
+            const double err = (double)fabsl(got - t_exact_plane(X, Y, ra, x * 4096 + sx,
                                                               y * 4096 + sy)) / bound;
-            const double cerr = (double)fabsl(got - exact_plane(X, Y, ra, x * 4096 + 2048,
+            const double cerr = (double)fabsl(got - t_exact_plane(X, Y, ra, x * 4096 + 2048,
                                                                y * 4096 + 2048)) / bound;
             bad += err > 1.0;
             if (err > *worst)
@@ -262,7 +231,7 @@ static void one_tri_masked(void)
 {
    static struct target ms;
    static struct record rm;
-   struct tri tr;
+   struct t_slot_tri tr;
    random_tri(&tr);
    target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, 1, true);
    draw(&ms, &tr, 0, 0);
@@ -296,7 +265,7 @@ static void one_tri_single_sample(void)
 {
    static struct target ms, ss;
    static struct record rm, rs;
-   struct tri tr;
+   struct t_slot_tri tr;
    random_tri(&tr);
    target_init(&ms, &rm, NS, RAST_INTERP_SCANLINE, 1, true);
    struct rast_raster_state st;

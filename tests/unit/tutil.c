@@ -1,4 +1,5 @@
 #include <getopt.h>
+#include <math.h>
 #include <string.h>
 #include "tutil.h"
 
@@ -359,4 +360,35 @@ unsigned t_shade_fetch_count_n(void *ctx, const struct rast_quad *const q[],
    for (unsigned i = 0; i < n; i++)
       kept |= t_shade_fetch_count(ctx, q[i], out[i]) << 4 * i;
    return kept;
+}
+
+static float t_snap4096(float v) { return roundf(v * 4096.0f) / 4096.0f; }
+
+void t_random_slot_tri(struct t_slot_tri *tr, int w, int h)
+{
+   const double pick = t_rand();
+   const float cx = (float)(w * t_rand()), cy = (float)(h * t_rand());
+   const float r = pick < 0.3 ? 4.0f : pick < 0.8 ? 20.0f : 60.0f;
+   for (int i = 0; i < 3; i++) {
+      float *pos = tr->v[i][0];
+      pos[0] = t_snap4096(cx + (float)(r * (2 * t_rand() - 1)));
+      pos[1] = t_snap4096(cy + (float)(r * (2 * t_rand() - 1)));
+      pos[2] = (float)t_rand();
+      pos[3] = 1.0f / (float)(0.5 + 3.5 * t_rand());      /* 1/w */
+      for (int s = 1; s < 4; s++)
+         for (int c = 0; c < 4; c++)
+            tr->v[i][s][c] = (float)(s == 2 ? t_rand() : 8 * t_rand() - 4);
+   }
+}
+
+long double t_exact_plane(const int64_t X[3], const int64_t Y[3], const int64_t ra[3],
+                          int64_t px, int64_t py)
+{
+   __extension__ typedef __int128 i128;
+   const int64_t e1x = X[1] - X[0], e1y = Y[1] - Y[0], e2x = X[2] - X[0], e2y = Y[2] - Y[0];
+   const int64_t qx = px - X[0], qy = py - Y[0];
+   const i128 det = (i128)e1x * e2y - (i128)e1y * e2x;
+   const i128 na = (i128)qx * e2y - (i128)qy * e2x, nb = (i128)e1x * qy - (i128)e1y * qx;
+   const i128 num = na * (ra[1] - ra[0]) + nb * (ra[2] - ra[0]);
+   return (long double)ra[0] + (long double)num / (long double)det;
 }

@@ -118,6 +118,17 @@ typedef void (*t_visit)(void *ctx, int x, int y);
 uint64_t t_ref_triangle(const int64_t X[3], const int64_t Y[3], int64_t S, int64_t H,
                         bool bottom_rule, struct rast_scissor clip, t_visit visit, void *ctx);
 
+/* A random triangle of the multisample tests on a w x h target: vertices on
+ * the 1/4096 grid (some beyond the target), 1/w in [1/4, 2], and four
+ * slots after the position, slot 2 in [0, 1) (a colour), the others in
+ * [-4, 4). */
+struct t_slot_tri { float v[3][4][4]; };
+void t_random_slot_tri(struct t_slot_tri *tr, int w, int h);
+/* The exact plane of the registers ra[3] of vertices (X, Y) (1/4096 pixel)
+ * at the point (px, py), in the registers' units (rational arithmetic). */
+long double t_exact_plane(const int64_t X[3], const int64_t Y[3], const int64_t ra[3],
+                          int64_t px, int64_t py);
+
 /* ISO C before C2x does not convert float (*)[4] to const float (*)[4]. */
 #define T_V(p) ((const float (*)[4])(p))
 static inline void t_tri(struct rast_context *rc, float (*a)[4], float (*b)[4], float (*c)[4])

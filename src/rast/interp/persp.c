@@ -459,6 +459,53 @@ static void tex_quad_float(struct rast_front *fr, struct rast_quad *q, bool divi
    t->st.flush += ls.flush;
 }
 
+/* tex_quad_impl's operations for component j alone, on numerators taken
+ * anywhere (rast_interp_perspective_at). */
+static inline __attribute__((always_inline)) void
+persp_at_impl(struct rast_front *fr, unsigned j, const int64_t an[RAST_QUAD_SIZE],
+              const int64_t bn[RAST_QUAD_SIZE], float out[RAST_QUAD_SIZE], const enum tex_kind k)
+{
+   struct fr_tex *t = &fr->tex;
+   struct ns_stats ls = { 0, 0 };
+   const struct fr_plane *p = &t->pl[1 + j];
+   if (t->is_color[j]) {
+      ns_val fa[RAST_QUAD_SIZE], fb[RAST_QUAD_SIZE], fw[RAST_QUAD_SIZE];
+      tex_color_weights(t, &ls, an, bn, fa, fb, fw);
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++)
+         out[i] = tex_mul(t, &ls, TEX_FLOAT, tex_plane(t, &ls, TEX_FLOAT, p, fa[i], fb[i]),
+                          fw[i]).f;
+   } else {
+      for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+         const ns_val a = tex_mul(t, &ls, k, tex_scaled(t, &ls, k, an[i]), t->rdet);
+         const ns_val b = tex_mul(t, &ls, k, tex_scaled(t, &ls, k, bn[i]), t->rdet);
+         const ns_val w = tex_recip(t, &ls, k, tex_plane(t, &ls, k, &t->pl[0], a, b));
+         out[i] = tex_out(t, k, tex_mul(t, &ls, k, tex_plane(t, &ls, k, p, a, b), w));
+      }
+   }
+   t->st.sat += ls.sat;
+   t->st.flush += ls.flush;
+}
+
+void rast_interp_perspective_at(struct rast_front *fr, unsigned j,
+                                const int64_t px[RAST_QUAD_SIZE],
+                                const int64_t py[RAST_QUAD_SIZE], float out[RAST_QUAD_SIZE])
+{
+   const struct fr_tex *t = &fr->tex;
+   int64_t an[RAST_QUAD_SIZE], bn[RAST_QUAD_SIZE];
+   for (unsigned i = 0; i < RAST_QUAD_SIZE; i++) {
+      /* tex_begin's numerators, at the point instead of a centre */
+      const int64_t rx = px[i] - t->x0, ry = py[i] - t->y0;
+      an[i] = rx * t->e2y - ry * t->e2x;
+      bn[i] = t->e1x * ry - t->e1y * rx;
+   }
+   switch ((enum tex_kind)t->kind) {
+   case TEX_DFX19: persp_at_impl(fr, j, an, bn, out, TEX_DFX19); break;
+   case TEX_DFX:   persp_at_impl(fr, j, an, bn, out, TEX_DFX); break;
+   case TEX_FLOAT: persp_at_impl(fr, j, an, bn, out, TEX_FLOAT); break;
+   default:        persp_at_impl(fr, j, an, bn, out, TEX_NS); break;
+   }
+}
+
 void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *fr)
 {
    const struct numsys *ns = rc->texfmt ? rc->texfmt : numsys_default();
@@ -486,6 +533,10 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
     * divide 2 or 4 at once with the skips taken, nothing else does */
    t->lookahead = !t->lanes || !t->skip ? 0 : rast_lanes()->persp4_dfx19 ? 3 : 1;
    t->nrec = 0;
+   t->kind = (uint8_t)(ns->dfx.mant_bits == DFX_MANT_BITS_SEED ? TEX_DFX19
+                       : ns->dfx.mant_bits                    ? TEX_DFX
+                       : is_float                              ? TEX_FLOAT
+                                                               : TEX_NS);
    if (t->lanes)
       t->quad = tex_quad_dfx19_lanes;
    else if (t->reference)

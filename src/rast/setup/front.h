@@ -137,6 +137,9 @@ struct fr_tex {
    struct ns_stats st;                  /* moved to rast_stats per quad row */
    struct dfx_stats dst;
    bool reference;                      /* the generic quad for every system (tests) */
+   /* the generic quad's form for rc->texfmt (persp.c's enum tex_kind):
+    * what rast_interp_perspective_at evaluates with */
+   uint8_t kind;
    /* ---- the skips of the dfx24 lanes (interp_lanes.c), per primitive:
     *      a plane whose differences are both zero is its v0 ---- */
    bool lanes;                          /* t->quad is the lanes' */
@@ -409,6 +412,13 @@ void rast_interp_perspective_choose(struct rast_context *rc, struct rast_front *
  * it and one across, where every attribute is constant, so Δ2 = 0). */
 void rast_interp_perspective_setup(struct rast_context *rc, struct rast_front *fr,
                                    unsigned i0, unsigned i1, unsigned i2);
+/* persp.c: PERSPECTIVE component j of the primitive at four points of the
+ * pass (XY format), by the generic quad's operations on the numerators
+ * there: a pixel's centre gives the walk's bits (interpolateAt*,
+ * interp_at.c). */
+void rast_interp_perspective_at(struct rast_front *fr, unsigned j,
+                                const int64_t px[RAST_QUAD_SIZE],
+                                const int64_t py[RAST_QUAD_SIZE], float out[RAST_QUAD_SIZE]);
 /* persp.c: with `on`, the perspective division takes its generic quad (the
  * reference the specialised ones must match bit for bit, test_persp_fast). */
 void rast_interp_perspective_reference(struct rast_context *rc, bool on);
