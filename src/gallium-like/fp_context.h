@@ -115,6 +115,7 @@ struct fp_vertex_shader {
 struct fp_fs_thread {
    struct fp_context *fp;
    struct rast_context *rast;             /* the thread's model context */
+   const struct rast_quad *quad;          /* being shaded by tgsi_exec (interpolateAt*) */
    struct tgsi_exec_machine *mach;
    struct fp_tgsi_sampler *sampler;       /* the fragment stage's */
    struct fp_jit_context jit_ctx;

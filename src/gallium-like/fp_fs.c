@@ -40,6 +40,43 @@ static void fp_fs_drop_input_decls(struct tgsi_exec_machine *mach)
    mach->NumDeclarations = n;
 }
 
+/* interpolateAt* (TGSI INTERP_*, mesa/patches/0018): the model evaluates
+ * the input at the point, on the quad being shaded (rast_interp_at).
+ * gl_FragCoord and the facing are not interpolants; they answer as read. */
+static void fp_fs_interp_at(struct tgsi_exec_machine *mach, unsigned opcode,
+                            const union tgsi_exec_channel *attrib,
+                            const union tgsi_exec_channel *arg0,
+                            const union tgsi_exec_channel *arg1,
+                            union tgsi_exec_channel out[4])
+{
+   struct fp_fs_thread *th = mach->InterpAtData;
+   const struct tgsi_shader_info *info = &th->fp->fs->info;
+   const enum rast_interp_at_kind kind =
+      opcode == TGSI_OPCODE_INTERP_OFFSET   ? RAST_INTERP_AT_OFFSET
+      : opcode == TGSI_OPCODE_INTERP_SAMPLE ? RAST_INTERP_AT_SAMPLE
+                                            : RAST_INTERP_AT_CENTROID;
+   float v[4][RAST_QUAD_SIZE];
+   unsigned done = ~0u;
+   for (unsigned p = 0; p < RAST_QUAD_SIZE; p++) {
+      const unsigned var = attrib->u[p];
+      if (var != done) {        /* an input array's lanes may read different ones */
+         const unsigned sem =
+            var < info->num_inputs ? info->input_semantic_name[var] : TGSI_SEMANTIC_COUNT;
+         if (sem == TGSI_SEMANTIC_POSITION || sem == TGSI_SEMANTIC_FACE ||
+             var >= RAST_MAX_VARYINGS) {
+            for (unsigned c = 0; c < 4; c++)
+               memcpy(v[c], mach->Inputs[var < TGSI_EXEC_MAX_INPUT_ATTRIBS ? var : 0].xyzw[c].f,
+                      sizeof(v[c]));
+         } else {
+            rast_interp_at(th->rast, th->quad, var, kind, arg0->f, arg1->f, v);
+         }
+         done = var;
+      }
+      for (unsigned c = 0; c < 4; c++)
+         out[c].f[p] = v[c][p];
+   }
+}
+
 static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_shaded_quad *out)
 {
    struct fp_fs_thread *th = ctx;
@@ -84,6 +121,7 @@ static unsigned fp_fs_shade(void *ctx, const struct rast_quad *q, struct rast_sh
                 sizeof(q->last[cb]));
 
    mach->NonHelperMask = q->mask;
+   th->quad = q;
    unsigned mask = q->mask & tgsi_exec_machine_run(mach, 0) & 0xf;
    if (!mask)
       return 0;
@@ -393,6 +431,8 @@ void fp_fs_validate(struct fp_context *fp)
                                     fp->tgsi_image[FP_MEM_FRAGMENT],
                                     fp->tgsi_buffer[FP_MEM_FRAGMENT]);
       fp_fs_drop_input_decls(th->mach);
+      th->mach->InterpAt = fp_fs_interp_at;
+      th->mach->InterpAtData = th;
    }
 
    rs.shade = fp->fs->per_sample ? fp_fs_shade_sample : fp_fs_shade;

@@ -626,6 +626,14 @@ struct fp_jit_variant *fp_jit_fs_compile(struct fp_context *fp, const struct tgs
          if (glsl_type_is_array(var->type))
             return NULL;
    }
+   /* interpolateAt*: the model evaluates the input at the point
+    * (rast_interp_at, through tgsi_exec's INTERP_* hook, mesa/patches/0018);
+    * gallivm's code would evaluate its own planes, which the compiled code
+    * does not have, and crashed building them */
+   if (info->opcode_count[TGSI_OPCODE_INTERP_CENTROID] ||
+       info->opcode_count[TGSI_OPCODE_INTERP_SAMPLE] ||
+       info->opcode_count[TGSI_OPCODE_INTERP_OFFSET])
+      return NULL;
    /* st's NIR: every operation gallivm has, its outputs by their NIR slots;
     * TGSI alone: what tgsi_to_nir can read */
    int nir_color_output[RAST_MAX_CBUFS];
