@@ -176,6 +176,20 @@ static void fp_jit_sample(struct tgsi_sampler *s, uint32_t texture, uint32_t sam
       const float c1[RAST_QUAD_SIZE] = { comp.f, comp.f, comp.f, comp.f };
       s->get_samples(s, texture, sampler, arg[0], arg[1], arg[2], arg[3], c1, NULL, offset,
                      TGSI_SAMPLER_GATHER, rgba);
+      /* textureGatherOffset's offset may differ between lanes
+       * (ARB_gpu_shader5): a lane whose offset is not lane 0's gathers
+       * again with its own, as tgsi_exec does (mesa/patches/0019) */
+      for (unsigned p = 1; (key & LP_SAMPLER_OFFSETS) && p < RAST_QUAD_SIZE; p++) {
+         const int8_t o[3] = { (int8_t)offsets[0][p], (int8_t)offsets[1][p],
+                               (int8_t)offsets[2][p] };
+         if (!memcmp(o, offset, sizeof(o)))
+            continue;
+         float t[4][RAST_QUAD_SIZE];
+         s->get_samples(s, texture, sampler, arg[0], arg[1], arg[2], arg[3], c1, NULL, o,
+                        TGSI_SAMPLER_GATHER, t);
+         for (unsigned c = 0; c < 4; c++)
+            rgba[c][p] = t[c][p];
+      }
       return;
    }
    const enum tgsi_sampler_control control = fp_control(key);
