@@ -206,7 +206,9 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 0;
    case PIPE_CAP_GLSL_FEATURE_LEVEL:
    case PIPE_CAP_GLSL_FEATURE_LEVEL_COMPATIBILITY:
-      return 330;   /* desktop GL 3.3 (docs/driver.md) */
+      /* desktop GL 4.0: ARB_gpu_shader5, its interpolateAt* through the
+       * model (docs/msaa.md), doubles outside it (docs/driver.md) */
+      return 400;
    case PIPE_CAP_MAX_RENDER_TARGETS:
       return RAST_MAX_CBUFS;
    case PIPE_CAP_FBFETCH:                  /* the back end reads the target first */
@@ -251,6 +253,11 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
       return 1024;
    case PIPE_CAP_MAX_GS_INVOCATIONS:
       return 32;
+   /* Vertex streams (ARB_gpu_shader5, ARB_transform_feedback3): draw's
+    * geometry stage sorts the primitives by stream, stream output captures
+    * each, and only stream 0 reaches the model, as in llvmpipe. */
+   case PIPE_CAP_MAX_VERTEX_STREAMS:
+      return 4;
    /* Tessellation: draw's, as llvmpipe's (fp_state_tess.c) */
    case PIPE_CAP_MAX_SHADER_PATCH_VARYINGS:
       return 32;
