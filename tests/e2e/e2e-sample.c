@@ -134,29 +134,6 @@ static void scene_mask(int half)
    }
 }
 
-/* Each sample of the half-side texture into its quarter of the target. */
-static void show_samples(GLuint tex, GLuint target, int size)
-{
-   glBindFramebuffer(GL_FRAMEBUFFER, target);
-   glViewport(0, 0, size, size);
-   char fs[512];
-   snprintf(fs, sizeof fs,
-            "#version 310 es\n"
-            "precision highp float;\n"
-            "uniform highp sampler2DMS u_ms;\n"
-            "out vec4 o_color;\n"
-            "void main() {\n"
-            "   ivec2 p = ivec2(gl_FragCoord.xy);\n"
-            "   int k = p.x / %d + 2 * (p.y / %d);\n"
-            "   o_color = texelFetch(u_ms, p %% %d, k);\n"
-            "}\n",
-            size / 2, size / 2, size / 2);
-   glUseProgram(program(fs));
-   glActiveTexture(GL_TEXTURE0);
-   glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, tex);
-   e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
-}
-
 /* The shown samples, read back: pixel (x, y) of sample k. */
 static const unsigned char *sample_px(const unsigned char *img, int size, int k, int x, int y)
 {
@@ -250,7 +227,7 @@ int main(int argc, char **argv)
    else
       fp_die("--case: shading, variables or mask");
 
-   show_samples(tex, g.fbo, a.size);
+   e2e_show_samples(tex, g.fbo, a.size);
    self_check(c, a.size);
    glDeleteFramebuffers(1, &fbo);
    glDeleteTextures(1, &tex);

@@ -1,7 +1,7 @@
 /* Shared plumbing of the e2e test programs. */
 #include "e2e_common.h"
 #include "fp_png.h"
-#include <GLES3/gl3.h>
+#include <GLES3/gl31.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -189,6 +189,28 @@ GLuint e2e_color_program_es3(const char *fs)
 GLuint e2e_uv_program_es31(const char *fs)
 {
    return passthrough_program("310 es", "vec2", "uv", fs);
+}
+
+void e2e_show_samples(GLuint tex, GLuint target, int size)
+{
+   glBindFramebuffer(GL_FRAMEBUFFER, target);
+   glViewport(0, 0, size, size);
+   char fs[512];
+   snprintf(fs, sizeof fs,
+            "#version 310 es\n"
+            "precision highp float;\n"
+            "uniform highp sampler2DMS u_ms;\n"
+            "out vec4 o_color;\n"
+            "void main() {\n"
+            "   ivec2 p = ivec2(gl_FragCoord.xy);\n"
+            "   int k = p.x / %d + 2 * (p.y / %d);\n"
+            "   o_color = texelFetch(u_ms, p %% %d, k);\n"
+            "}\n",
+            size / 2, size / 2, size / 2);
+   glUseProgram(e2e_uv_program_es31(fs));
+   glActiveTexture(GL_TEXTURE0);
+   glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, tex);
+   e2e_draw_rect(-1, -1, 1, 1, 0, 0, 1, 1);
 }
 
 void e2e_tex_params(GLenum target, GLenum min, GLenum mag, GLenum wrap_s, GLenum wrap_t)

@@ -83,6 +83,12 @@ GLuint e2e_color_program_es3(const char *fs);
  * into the fragment shader fs. */
 GLuint e2e_uv_program_es31(const char *fs);
 
+/* Each sample of a 4-sample 2-D texture of side size/2 into a quarter of
+ * the side-`size` framebuffer `target` (sample k in column k & 1, row
+ * k >> 1) by texelFetch, so that each sample's own value is compared, not
+ * the resolve's mean (GL ES 3.1). */
+void e2e_show_samples(GLuint tex, GLuint target, int size);
+
 /* The filters and wrap modes of the texture bound to target. */
 void e2e_tex_params(GLenum target, GLenum min, GLenum mag, GLenum wrap_s, GLenum wrap_t);
 /* A size x size RGBA 2D texture with every level down to 1x1, bound: level

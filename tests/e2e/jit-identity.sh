@@ -8,8 +8,9 @@
 # and the PNGs compared, the jitall run having refused no fragment or vertex
 # shader and interpreted no quad (a check shown failing on a tiered run);
 # the programs of fragment shaders with storage buffers, images or atomic
-# counters (fsmem-*), which stay interpreted by design (docs/jit.md), must
-# instead have had those refused, and match the interpreter all the same;
+# counters (fsmem-*) or interpolateAt* (interpat- but its gathers), which
+# stay interpreted by design (docs/jit.md), must instead have had those
+# refused, and match the interpreter all the same;
 # and the demo tiered (the default), where a batch that
 # alone takes an interpreted shader past the threshold compiles it first
 # (fp_fs_batch_ahead): each compiled shader then interpreted fewer than the
@@ -51,14 +52,15 @@ render() {
             return 1
         fi
     done
-    # fragment shaders with side effects: refused (interpreted) under jitall
-    case $name in fsmem-*)
+    # fragment shaders with side effects or interpolateAt*: refused
+    # (interpreted) under jitall
+    case $name in fsmem-*|interpat-offset|interpat-sample|interpat-centroid)
         set -- $(uncompiled "$out/$name.jitall.log")
         if [ "$4" -gt 0 ] && [ "$1" -gt 0 ] && [ "$2" -gt 0 ] && [ "$3" = 0 ]; then
-            pass "$name: under jitall the $1 fragment shaders with storage buffers or images stay interpreted ($2 quads)"
+            pass "$name: under jitall the $1 fragment shaders with storage buffers, images or interpolateAt* stay interpreted ($2 quads)"
             return 0
         fi
-        fail "$name: under jitall $1 fragment shaders refused, $2 quads interpreted, $3 vertex shaders refused (want those with storage buffers or images interpreted)"
+        fail "$name: under jitall $1 fragment shaders refused, $2 quads interpreted, $3 vertex shaders refused (want those with storage buffers, images or interpolateAt* interpreted)"
         return 1
     esac
     # the third run must have taken every compiled shader from the cache
