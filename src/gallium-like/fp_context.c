@@ -130,6 +130,14 @@ static void fp_set_debug_callback(struct pipe_context *pipe,
       memset(&pipe->debug, 0, sizeof(pipe->debug));
 }
 
+/* GL_KHR_robustness: the model runs in the process; nothing resets it
+ * but the process ending, so no reset is ever seen. */
+static enum pipe_reset_status fp_get_device_reset_status(struct pipe_context *pipe)
+{
+   (void)pipe;
+   return PIPE_NO_RESET;
+}
+
 /* glGetMultisamplefv: the model's pattern (rast_sample_pos_4x). */
 static void fp_get_sample_position(struct pipe_context *pipe, unsigned sample_count,
                                    unsigned sample_index, float *pos)
@@ -160,6 +168,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->pipe.memory_barrier = fp_memory_barrier;
    fp->pipe.set_debug_callback = fp_set_debug_callback;
    fp->pipe.get_sample_position = fp_get_sample_position;
+   fp->pipe.get_device_reset_status = fp_get_device_reset_status;
    fp->pipe.flush_resource = fp_flush_resource;
    fp->sample_mask = ~0u;
    fp->fb_samples = 1;

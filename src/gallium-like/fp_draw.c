@@ -46,12 +46,16 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
       fp_vbuf_update_rebase(fp);
    }
 
+   /* The sizes bound draw's vertex fetch (robust buffer access): a client
+    * array's is unknown, so unbounded; a missing array has none, and
+    * draw reads zeros for it, as llvmpipe. */
    for (unsigned i = 0; i < fp->num_vertex_buffers; i++) {
       const struct pipe_vertex_buffer *vb = &fp->vertex_buffer[i];
       const void *buf = NULL;
-      size_t size = ~(size_t)0;
+      size_t size = 0;
       if (vb->is_user_buffer) {
          buf = vb->buffer.user;
+         size = buf ? ~(size_t)0 : 0;
       } else if (vb->buffer.resource) {
          buf = fp_resource(vb->buffer.resource)->data;
          size = vb->buffer.resource->width0;

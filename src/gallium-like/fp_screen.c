@@ -165,6 +165,16 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
     * stay vec4 CONST registers. */
    case PIPE_CAP_LOAD_CONSTBUF:
       return 1;
+   /* Robust buffer access: every read a shader or the vertex fetch makes
+    * of a buffer reads zero or a value inside it.  draw fetches vertices
+    * by each buffer's size (mesa/patches/0020: per-vertex, indexed and
+    * instanced, interpreted or compiled), indices by the index buffer's;
+    * tgsi_exec and gallivm bound uniform and storage buffer loads.  A
+    * software device never loses its state, so the reset query (which a
+    * robust context needs) is honest with "no reset" (fp_context.c). */
+   case PIPE_CAP_ROBUST_BUFFER_ACCESS_BEHAVIOR:
+   case PIPE_CAP_DEVICE_RESET_STATUS_QUERY:
+      return 1;
    case PIPE_CAP_ESSL_FEATURE_LEVEL:
       return 310;   /* GL ES 3.1 (docs/compute.md) */
    case PIPE_CAP_MAX_TEXTURE_GATHER_COMPONENTS:
