@@ -175,8 +175,10 @@ static int fp_get_param(struct pipe_screen *screen, enum pipe_cap param)
    case PIPE_CAP_ROBUST_BUFFER_ACCESS_BEHAVIOR:
    case PIPE_CAP_DEVICE_RESET_STATUS_QUERY:
       return 1;
+   /* GL ES 3.2's shading language: gpu_shader5 with interpolateAt* through
+    * the model, fragment side effects, robust access (docs/driver.md) */
    case PIPE_CAP_ESSL_FEATURE_LEVEL:
-      return 310;   /* GL ES 3.1 (docs/compute.md) */
+      return 320;
    case PIPE_CAP_MAX_TEXTURE_GATHER_COMPONENTS:
       return 4;     /* the unit's bilinear footprint (tex_gather.c) */
    case PIPE_CAP_MIN_TEXTURE_GATHER_OFFSET:
