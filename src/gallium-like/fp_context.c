@@ -193,7 +193,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
    fp->rast = rast_create(s->profile);
    if (!fp->rast)
       goto fail;
-   rast_set_texfmt(fp->rast, fp->opts->texfmt);
+   rast_set_texfmt(fp->rast, fp->opts->perspfmt);
    rast_set_options(fp->rast, fp_options_rast(fp->opts));
    rast_set_interp(fp->rast, fp->opts->interp);
    /* GL's default depth range, [0, 1], which the model starts with */

@@ -216,6 +216,16 @@ static void fp_env_parse(void)
          fprintf(stderr, "fixpipe: unknown FIXPIPE_TEXFMT '%s' (accepted: %s); using %s\n",
                  t, numsys_names(), env.texfmt->name);
    }
+   const char *pf = getenv("FIXPIPE_PERSPFMT");
+   env.perspfmt = env.texfmt;
+   if (pf && *pf) {
+      const struct numsys *ns = numsys_by_name(pf);
+      if (ns)
+         env.perspfmt = ns;
+      else
+         fprintf(stderr, "fixpipe: unknown FIXPIPE_PERSPFMT '%s' (accepted: %s); using %s\n",
+                 pf, numsys_names(), env.perspfmt->name);
+   }
 }
 
 static util_once_flag env_once = UTIL_ONCE_FLAG_INIT;

@@ -140,9 +140,10 @@ void fp_print_stats(const struct fp_context *fp)
            " samples passed %" PRIu64 "\n", st->quads, st->pixels_covered,
            st->pixels_shaded, st->samples_passed);
    fp_print_cycles(fp, st);
-   fprintf(stderr, "  texture path (%s): range saturations %" PRIu64 " flushes %" PRIu64
-           "; coordinates rebased (component-primitives) %" PRIu64 "\n",
-           fp->opts->texfmt->name, st->tex_sat, st->tex_flush, st->tex_rebased);
+   fprintf(stderr, "  texture path (%s, division %s): range saturations %" PRIu64
+           " flushes %" PRIu64 "; coordinates rebased (component-primitives) %" PRIu64 "\n",
+           fp->opts->texfmt->name, fp->opts->perspfmt->name, st->tex_sat, st->tex_flush,
+           st->tex_rebased);
    fprintf(stderr, "  datapath: %s; skipped: quads with a constant 1/w %" PRIu64
            ", constant component-quads %" PRIu64 ", texture quads without a LOD %" PRIu64
            ", texture quad-axes addressed per column or row %" PRIu64

@@ -69,7 +69,10 @@ struct fp_options {
    unsigned debug;                       /* FIXPIPE_DEBUG: FP_DEBUG_* */
    unsigned threads;                     /* FIXPIPE_THREADS: 1..RAST_MAX_THREADS */
    unsigned interp;                      /* FIXPIPE_INTERP: rast_set_interp's mode */
-   const struct numsys *texfmt;          /* FIXPIPE_TEXFMT */
+   const struct numsys *texfmt;          /* FIXPIPE_TEXFMT: the texture unit */
+   /* FIXPIPE_PERSPFMT: the perspective division's, FIXPIPE_TEXFMT's unless
+    * set, so that a report can tell the two units' precision apart */
+   const struct numsys *perspfmt;
    struct rast_cycle_params cycles;      /* FIXPIPE_CYCLES */
    struct fp_vectors_option vectors;     /* FIXPIPE_VECTORS */
 };
