@@ -10,7 +10,8 @@ PKGS="meson ninja-build python3-mako bison flex pkg-config ccache gcc g++ make
  zlib1g-dev libexpat1-dev libpng-dev libegl-dev libgles-dev
  libgl1-mesa-dri libegl-mesa0 mesa-utils mesa-utils-bin glmark2-es2-x11 piglit
  apitrace apitrace-tracers xvfb xauth dpkg-dev python3 waffle-utils
- llvm-15-dev libelf-dev gdb clang python3-matplotlib python3-pil x11-apps"
+ llvm-15-dev libelf-dev gdb clang python3-matplotlib python3-pil python3-numpy x11-apps
+ chromium"
 
 SUDO=""
 [ "$(id -u)" = 0 ] || SUDO=sudo
