@@ -81,6 +81,14 @@ struct rast_context {
    void (*observe_triangle)(struct rast_context *rc, const struct rast_front *fr, bool front);
    void (*observe_backend)(struct rast_context *rc);
    bool scanning_triangle;          /* set-up's: the quads under way are a triangle's */
+   /* The event maps (instruments/events.c), NULL when off: a primitive
+    * begins (before its set-up), and the scan converter's walk begins
+    * (set-up done: RAST_SCAN_BEGIN), enters a quad row of this thread's
+    * (RAST_SCAN_ROW, its first target row) and ends (RAST_SCAN_END).  Per
+    * primitive and per quad row, never per pixel. */
+   void (*observe_prim)(struct rast_context *rc);
+   void (*observe_scan)(struct rast_context *rc, int what, int64_t row);
+   struct rast_ev_thread *events;   /* that instrument's state for this thread */
    rast_quad_func vec_next_quad;
    struct rast_msaa *msaa;          /* a multisampled target's passes (msaa.c) */
    bool msaa_busy;                  /* inside them: a pass is one walk */
@@ -91,6 +99,8 @@ struct rast_context {
    void *front_priv;                /* setup/scan's own specialised state */
    void *back_priv;                 /* back end's own specialised state */
 };
+
+enum { RAST_SCAN_BEGIN, RAST_SCAN_ROW, RAST_SCAN_END };
 
 /* Called by rast_validate() (context.c) when rc->dirty is set. */
 void rast_front_validate(struct rast_context *rc);

@@ -62,6 +62,8 @@ void rast_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[
 void rast_draw_line(struct rast_context *rc, const float (*v1)[4], const float (*v2)[4])
 {
    rast_validate(rc);
+   if (rc->observe_prim)
+      rc->observe_prim(rc);
    rast_primitive_viewport(rc, rc->rs.flatshade_first ? v1 : v2);
    rast_primitive_layer(rc, rc->rs.flatshade_first ? v1 : v2);
    if (rc->tiled)

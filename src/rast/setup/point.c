@@ -57,6 +57,8 @@ void rast_point(struct rast_context *rc, const float (*v)[4])
 void rast_draw_point(struct rast_context *rc, const float (*v)[4])
 {
    rast_validate(rc);
+   if (rc->observe_prim)
+      rc->observe_prim(rc);
    rast_primitive_viewport(rc, v);
    rast_primitive_layer(rc, v);
    if (rc->tiled)

@@ -199,6 +199,10 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
    struct fr_edge *L = fr->sec[cur].l, *R = fr->sec[cur].r;
    edge_start(rc, fr, L, jlo);
    edge_start(rc, fr, R, jlo);
+   /* the set-up ends with the edges loaded: every thread that draws the
+    * primitive has done the same work to here */
+   if (rc->observe_scan)
+      rc->observe_scan(rc, RAST_SCAN_BEGIN, 0);
 
    for (int64_t p = jlo & ~(int64_t)1; p <= jstop; p += 2) {
       /* Every thread walks the edges over every scan line (the registers
@@ -206,6 +210,8 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
        * walk's events counted, by the quad row's thread. */
       const bool mine = rast_band_mine(rc, p);
       rast_count_stretch(rc, mine);
+      if (mine && rc->observe_scan)
+         rc->observe_scan(rc, RAST_SCAN_ROW, p + rc->org_y);
       for (unsigned r = 0; r < 2; r++) {
          int64_t j = p + r;
          struct fr_row *row = &fr->row[r];
@@ -236,6 +242,8 @@ void rast_scan_sections(struct rast_context *rc, struct rast_front *fr)
          fr->pair(rc, fr, p);
    }
    fr_quads_flush(rc, fr);
+   if (rc->observe_scan)
+      rc->observe_scan(rc, RAST_SCAN_END, 0);
 }
 
 void rast_scan_convex(struct rast_context *rc, struct rast_front *fr)
