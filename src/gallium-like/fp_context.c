@@ -50,8 +50,10 @@ static void fp_destroy(struct pipe_context *pipe)
       fp_stats_track(fp, false);
       fp_print_stats(fp);
    }
-   if (fp->rast)
+   if (fp->rast) {
+      fp_events_stop(fp);              /* its state is on every thread's context */
       rast_set_threads(fp->rast, 1);   /* the workers stop before what they shade with goes */
+   }
 
    util_unreference_framebuffer_state(&fp->framebuffer);
    for (unsigned sh = 0; sh < PIPE_SHADER_TYPES; sh++) {
@@ -202,6 +204,7 @@ struct pipe_context *fp_create_context(struct pipe_screen *screen, void *priv,
       fp->depth_ranges[i] = (struct rast_depth_range){ 0.0f, 1.0f };
    }
    fp->vectors_pending = fp->opts->vectors.dir[0] != '\0';
+   fp->events_pending = fp->opts->events.dir[0] != '\0';
 
    fp->pipe.stream_uploader = u_upload_create_default(&fp->pipe);
    if (!fp->pipe.stream_uploader)

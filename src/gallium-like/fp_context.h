@@ -242,6 +242,8 @@ struct fp_context {
    unsigned long stats_every, frames;   /* FIXPIPE_STATS=frames:N; frames presented */
    bool vectors_pending;                /* FIXPIPE_VECTORS: opened at the first draw */
    bool vectors_on;                     /* and written by this context */
+   bool events_pending;                 /* FIXPIPE_EVENTS: started at the first draw */
+   struct fp_events *events;            /* and recorded by this context (fp_events.c) */
 };
 
 static inline struct fp_context *fp_context(struct pipe_context *p)
@@ -268,6 +270,14 @@ void fp_counter_query_end(struct fp_context *fp, struct fp_counter_query *q);
 void fp_counter_query_result(const struct fp_counter_query *q, union pipe_query_result *result);
 /* FIXPIPE_VECTORS (docs/vectors.md): at a context's first draw. */
 void fp_vectors_start(struct fp_context *fp);
+/* FIXPIPE_EVENTS (fp_events.c, docs/events.md): started at a context's
+ * first draw; each draw_vbo's row and maps; a frame's maps written when it
+ * is presented; stopped at the context's end. */
+void fp_events_start(struct fp_context *fp);
+void fp_events_draw_begin(struct fp_context *fp);
+void fp_events_draw_end(struct fp_context *fp);
+void fp_events_frame(struct fp_context *fp, unsigned long frame);
+void fp_events_stop(struct fp_context *fp);
 /* FIXPIPE_STATS (fp_instruments.c): the counters on stderr, and the list of
  * live contexts that print theirs at exit. */
 void fp_print_stats(const struct fp_context *fp);

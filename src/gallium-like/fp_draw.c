@@ -10,9 +10,11 @@
 #include "fp_context.h"
 #include "fp_resource.h"
 
-static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *info,
-                        unsigned drawid_offset, const struct pipe_draw_indirect_info *indirect,
-                        const struct pipe_draw_start_count_bias *draws, unsigned num_draws)
+static void fp_draw_vbo_model(struct pipe_context *pipe, const struct pipe_draw_info *info,
+                              unsigned drawid_offset,
+                              const struct pipe_draw_indirect_info *indirect,
+                              const struct pipe_draw_start_count_bias *draws,
+                              unsigned num_draws)
 {
    struct fp_context *fp = fp_context(pipe);
    struct draw_context *draw = fp->draw;
@@ -92,6 +94,23 @@ static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *
       draw_set_indexes(draw, NULL, 0, 0);
    /* Nothing may stay queued: user buffers are only valid during the call. */
    draw_flush(draw);
+}
+
+/* FIXPIPE_EVENTS takes each call's row around it (fp_events.c). */
+static void fp_draw_vbo(struct pipe_context *pipe, const struct pipe_draw_info *info,
+                        unsigned drawid_offset, const struct pipe_draw_indirect_info *indirect,
+                        const struct pipe_draw_start_count_bias *draws, unsigned num_draws)
+{
+   struct fp_context *fp = fp_context(pipe);
+   if (unlikely(fp->events_pending))
+      fp_events_start(fp);
+   if (likely(!fp->events)) {
+      fp_draw_vbo_model(pipe, info, drawid_offset, indirect, draws, num_draws);
+      return;
+   }
+   fp_events_draw_begin(fp);
+   fp_draw_vbo_model(pipe, info, drawid_offset, indirect, draws, num_draws);
+   fp_events_draw_end(fp);
 }
 
 void fp_init_draw_functions(struct fp_context *fp)

@@ -105,6 +105,27 @@ static bool vectors_option(void *ctx, const char *key, const char *val, char *er
    return false;
 }
 
+static const char events_keys[] = "frames=A-B with A <= B, frames counted from 0 by presents";
+
+static bool events_option(void *ctx, const char *key, const char *val, char *err, size_t errlen)
+{
+   struct fp_events_option *e = ctx;
+   char *end;
+   if (!strcmp(key, "frames")) {
+      e->first = strtoul(val, &end, 10);
+      if (end != val && *end == '-' && val[0] >= '0' && val[0] <= '9') {
+         const char *b = end + 1;
+         e->last = strtoul(b, &end, 10);
+         if (end != b && !*end && b[0] >= '0' && b[0] <= '9' && e->first <= e->last)
+            return true;
+      }
+      snprintf(err, errlen, "%s=%s (accepted: %s)", key, val, events_keys);
+      return false;
+   }
+   snprintf(err, errlen, "unknown key '%s' (accepted: %s)", key, events_keys);
+   return false;
+}
+
 static void fp_env_parse(void)
 {
    /* FIXPIPE_PROFILE=NAME[:KEY=VALUE,...] (docs/profiles.md) */
@@ -198,6 +219,32 @@ static void fp_env_parse(void)
       else
          fprintf(stderr, "fixpipe: bad FIXPIPE_VECTORS '%s': %s; no vectors written\n", vec,
                  verr);
+   }
+
+   /* FIXPIPE_EVENTS=DIR[,frames=A-B] (docs/events.md) */
+   const char *ev = getenv("FIXPIPE_EVENTS");
+   if (ev && *ev) {
+      struct fp_events_option e = { .first = 0, .last = ~0ul };
+      const char *comma = strchr(ev, ',');
+      const size_t dlen = comma ? (size_t)(comma - ev) : strlen(ev);
+      char eerr[384];
+      snprintf(eerr, sizeof(eerr), "a directory of 1 to %zu characters first, then optionally "
+               "%s", sizeof(e.dir) - 1, events_keys);
+      bool ok = dlen > 0 && dlen < sizeof(e.dir);
+      if (ok) {
+         memcpy(e.dir, ev, dlen);
+         e.dir[dlen] = '\0';
+         ok = !comma || rast_settings_each(comma + 1, events_keys, events_option, &e, eerr,
+                                           sizeof(eerr));
+      }
+      if (ok && env.vectors.dir[0]) {
+         ok = false;
+         snprintf(eerr, sizeof(eerr), "not with FIXPIPE_VECTORS, which records alone");
+      }
+      if (ok)
+         env.events = e;
+      else
+         fprintf(stderr, "fixpipe: bad FIXPIPE_EVENTS '%s': %s; nothing recorded\n", ev, eerr);
    }
 
    /* FIXPIPE_CYCLES=KEY=VALUE,... over the cycle model's defaults (docs/cycles.md) */

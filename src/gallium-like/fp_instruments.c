@@ -76,6 +76,7 @@ void fp_context_frame_presented(struct fp_context *fp)
 {
    fp->frames++;
    rast_vectors_frame(fp->rast, fp->frames);
+   fp_events_frame(fp, fp->frames - 1);
    if (!fp->stats_every || fp->frames % fp->stats_every || !fp->rast)
       return;
    const struct rast_stats *st = fp_stats(fp);

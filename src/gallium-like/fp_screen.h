@@ -58,6 +58,12 @@ struct fp_vectors_option {
    unsigned units;                /* RAST_VEC_* */
 };
 
+/* FIXPIPE_EVENTS=DIR[,frames=A-B] (docs/events.md) */
+struct fp_events_option {
+   char dir[480];                 /* "" when unset or bad */
+   unsigned long first, last;     /* frames presented before, inclusive */
+};
+
 /* The FIXPIPE_* variables (README.md, docs/), parsed once per process by
  * fp_options_from_env, the one reader of the environment, at the first
  * screen's creation; bad values are reported there, once, with the
@@ -75,6 +81,7 @@ struct fp_options {
    const struct numsys *perspfmt;
    struct rast_cycle_params cycles;      /* FIXPIPE_CYCLES */
    struct fp_vectors_option vectors;     /* FIXPIPE_VECTORS */
+   struct fp_events_option events;       /* FIXPIPE_EVENTS */
 };
 const struct fp_options *fp_options_from_env(void);
 /* The model's RAST_OPT_* the debug flags select. */
