@@ -22,6 +22,7 @@
 #include "fp_context.h"
 #include "fp_resource.h"
 #include "fp_screen.h"
+#include "util/simple_mtx.h"
 #include "rast/instruments/events.h"
 
 /* the columns after frame, draw, target, width, height */
@@ -51,6 +52,34 @@ static bool in_range(const struct fp_context *fp)
 {
    const struct fp_events_option *o = &fp->opts->events;
    return fp->frames >= o->first && fp->frames <= o->last;
+}
+
+/* A frame drawn but never presented (a replay that ends at its last
+ * snapshot, before the trace's last swap) keeps its maps: written under its
+ * number when the context ends, or at exit if the program never destroys
+ * it (eglretrace does not). */
+static void write_unpresented(struct fp_context *fp)
+{
+   struct fp_events *e = fp->events;
+   if (e->recording && e->mapped) {
+      char err[1100];
+      rast_flush(fp->rast);
+      if (!rast_events_write(e->rec, fp->opts->events.dir, fp->frames, err, sizeof(err)))
+         fprintf(stderr, "fixpipe: FIXPIPE_EVENTS: %s\n", err);
+   }
+   e->mapped = false;
+}
+
+static simple_mtx_t live_mtx = SIMPLE_MTX_INITIALIZER;
+static struct fp_context *live;   /* the recording context, until it ends */
+
+static void at_exit(void)
+{
+   simple_mtx_lock(&live_mtx);
+   if (live)
+      write_unpresented(live);
+   live = NULL;
+   simple_mtx_unlock(&live_mtx);
 }
 
 /* The first context of the process to draw records (as FIXPIPE_VECTORS):
@@ -90,6 +119,10 @@ void fp_events_start(struct fp_context *fp)
    columns(fp, e->base);
    e->recording = in_range(fp);
    fp->events = e;
+   simple_mtx_lock(&live_mtx);
+   live = fp;
+   simple_mtx_unlock(&live_mtx);
+   atexit(at_exit);
 }
 
 static const char *target_of(const struct fp_context *fp)
@@ -158,6 +191,10 @@ void fp_events_stop(struct fp_context *fp)
    struct fp_events *e = fp->events;
    if (!e)
       return;
+   simple_mtx_lock(&live_mtx);
+   write_unpresented(fp);
+   live = NULL;
+   simple_mtx_unlock(&live_mtx);
    rast_events_detach(fp->rast, e->rec);
    fclose(e->tsv);
    free(e);
