@@ -43,8 +43,9 @@ top = att[0]
 share = top["pixels"] / fd["pixels"] if fd["pixels"] else 0
 if top["unit"] != sys.argv[2] or share < 0.9:
     print(f"top unit {top['unit']} with {top['pixels']} of {fd['pixels']} pixels"); sys.exit()
-if r.get("events") and r.get("draw_rows_match") is False:
-    print("FIXPIPE_EVENTS' draw rows do not line up with the trace's draw calls"); sys.exit()
+if not r.get("events") or r.get("draw_rows_match") is not True:
+    print("no FIXPIPE_EVENTS rows, or they do not line up with the trace's draw calls")
+    sys.exit()
 print(f"ok {top['unit']}: {top['pixels']} of {fd['pixels']} pixels at call {fd['call']}")
 EOF
 )
@@ -56,6 +57,22 @@ EOF
 
 planted xy FIXPIPE_PROFILE=seed:xy=12.2 glmark2-build-vbo positions
 planted dfx17 FIXPIPE_TEXFMT=dfx17 glmark2-terrain texture
+
+# ---- the event maps in the page: fx24.8 flushes texture coordinates on every frame of
+# glmark2-texture-mipmap (tests/e2e/events.sh), dfx24 on none
+for fmt in fx24.8 dfx24; do
+    if ! FIXPIPE_TEXFMT=$fmt $explain "$traces/glmark2-texture-mipmap.trace" --reference maximal \
+            --out "$out/maps-$fmt" > "$out/maps-$fmt.log" 2>&1; then
+        fail "$fmt: fp-explain failed: $(tail -n 1 "$out/maps-$fmt.log")"
+        continue
+    fi
+    eval "n_$(echo $fmt | tr -d .)=$(grep -c "alt='frame [0-9]* texflush'" "$out/maps-$fmt/report.html")"
+done
+if [ "${n_fx248:-0}" = 4 ] && [ "${n_dfx24:-1}" = 0 ]; then
+    pass "the page maps the texture flushes of fx24.8's 4 frames, none of dfx24's"
+else
+    fail "texflush maps in the page: fx24.8 ${n_fx248:-?} (want 4), dfx24 ${n_dfx24:-?} (want 0)"
+fi
 
 # ---- the page in a real browser
 page=$out/xy/report.html
