@@ -105,6 +105,24 @@ static bool vectors_option(void *ctx, const char *key, const char *val, char *er
    return false;
 }
 
+/* DIR[,KEY=VALUE,...], the form of FIXPIPE_VECTORS and FIXPIPE_EVENTS: the
+ * directory into dir (1 to dir_size - 1 characters), then each key through
+ * fn; false with the reason in err. */
+static bool parse_dir_setting(const char *value, char *dir, size_t dir_size,
+                              const char *keys, rast_setting_fn fn, void *ctx,
+                              char *err, size_t errlen)
+{
+   const char *comma = strchr(value, ',');
+   const size_t dlen = comma ? (size_t)(comma - value) : strlen(value);
+   snprintf(err, errlen, "a directory of 1 to %zu characters first, then optionally %s",
+            dir_size - 1, keys);
+   if (dlen == 0 || dlen >= dir_size)
+      return false;
+   memcpy(dir, value, dlen);
+   dir[dlen] = '\0';
+   return !comma || rast_settings_each(comma + 1, keys, fn, ctx, err, errlen);
+}
+
 static const char events_keys[] = "frames=A-B with A <= B, frames counted from 0 by presents";
 
 static bool events_option(void *ctx, const char *key, const char *val, char *err, size_t errlen)
@@ -202,18 +220,9 @@ static void fp_env_parse(void)
    if (vec && *vec) {
       struct fp_vectors_option v = { .first = 0, .last = ~0ul,
                                       .units = RAST_VEC_SCAN | RAST_VEC_TEX };
-      const char *comma = strchr(vec, ',');
-      const size_t dlen = comma ? (size_t)(comma - vec) : strlen(vec);
       char verr[384];
-      snprintf(verr, sizeof(verr), "a directory of 1 to %zu characters first, then optionally "
-               "%s", sizeof(v.dir) - 1, vectors_keys);
-      bool ok = dlen > 0 && dlen < sizeof(v.dir);
-      if (ok) {
-         memcpy(v.dir, vec, dlen);
-         v.dir[dlen] = '\0';
-         ok = !comma || rast_settings_each(comma + 1, vectors_keys, vectors_option, &v, verr,
-                                           sizeof(verr));
-      }
+      bool ok = parse_dir_setting(vec, v.dir, sizeof(v.dir), vectors_keys, vectors_option, &v,
+                                  verr, sizeof(verr));
       if (ok)
          env.vectors = v;
       else
@@ -225,18 +234,9 @@ static void fp_env_parse(void)
    const char *ev = getenv("FIXPIPE_EVENTS");
    if (ev && *ev) {
       struct fp_events_option e = { .first = 0, .last = ~0ul };
-      const char *comma = strchr(ev, ',');
-      const size_t dlen = comma ? (size_t)(comma - ev) : strlen(ev);
       char eerr[384];
-      snprintf(eerr, sizeof(eerr), "a directory of 1 to %zu characters first, then optionally "
-               "%s", sizeof(e.dir) - 1, events_keys);
-      bool ok = dlen > 0 && dlen < sizeof(e.dir);
-      if (ok) {
-         memcpy(e.dir, ev, dlen);
-         e.dir[dlen] = '\0';
-         ok = !comma || rast_settings_each(comma + 1, events_keys, events_option, &e, eerr,
-                                           sizeof(eerr));
-      }
+      bool ok = parse_dir_setting(ev, e.dir, sizeof(e.dir), events_keys, events_option, &e,
+                                  eerr, sizeof(eerr));
       if (ok && env.vectors.dir[0]) {
          ok = false;
          snprintf(eerr, sizeof(eerr), "not with FIXPIPE_VECTORS, which records alone");
