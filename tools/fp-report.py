@@ -402,6 +402,32 @@ def trace_section(img_dir):
     return out
 
 
+CARRIED = ("*Carried over from the previous report: no dEQP summaries were in `out/deqp/` "
+           "when this page was generated; each run keeps its own date.*")
+
+
+def previous_deqp(dest, img_dir):
+    """The dEQP section of the page at dest (from its heading to the next one) and the
+    pictures it shows, or (None, {}) when it has no runs to carry."""
+    try:
+        text = open(dest, encoding="utf-8").read()
+    except OSError:
+        return None, {}
+    m = re.search(r"^## dEQP.*?(?=^## )", text, re.M | re.S)
+    if not m or "No dEQP summaries" in m.group(0):
+        return None, {}
+    lines = m.group(0).rstrip("\n").split("\n") + [""]
+    if CARRIED not in lines:
+        lines[2:2] = [CARRIED, ""]
+    imgs = {}
+    for name in re.findall(r"img/conformance/([\w.-]+\.png)", m.group(0)):
+        try:
+            imgs[name] = open(os.path.join(img_dir, name), "rb").read()
+        except OSError:
+            pass
+    return lines, imgs
+
+
 def main(argv):
     ap = argparse.ArgumentParser(
         prog="fp-report.py",
@@ -422,6 +448,9 @@ def main(argv):
         return 0
     dest = args.out
     img_dir = os.path.join(os.path.dirname(dest), IMG_REL)
+    # A dEQP run takes hours, and its summaries may not be on this disk: the previous
+    # page's section, with its runs' dates and pictures, stands until new ones are.
+    old_deqp, old_imgs = previous_deqp(dest, img_dir)
     shutil.rmtree(img_dir, ignore_errors=True)
     os.makedirs(img_dir)
     mesa = ""
@@ -441,7 +470,13 @@ def main(argv):
              "minute, then this page from the piglit summaries on disk); `./fixpipe report "
              "--piglit` also runs every piglit list on the three drivers first (long).", ""]
     lines += piglit_section()
-    lines += deqp_section(img_dir)
+    deqp = deqp_section(img_dir)
+    if deqp[2].startswith("No dEQP summaries") and old_deqp:
+        deqp = old_deqp
+        for name, data in old_imgs.items():
+            with open(os.path.join(img_dir, name), "wb") as f:
+                f.write(data)
+    lines += deqp
     lines += trace_section(img_dir)
     with open(dest, "w", encoding="utf-8") as f:
         f.write("\n".join(lines).rstrip() + "\n")
