@@ -37,6 +37,7 @@ REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tools"))
 from fpexpect import (bad_input, join_shards, matching, parse_shard, read_fails,  # noqa: E402
                       read_regexes, shard)
+import fpshard  # noqa: E402
 
 DRIVERS = ("fixpipe", "softpipe", "llvmpipe")
 MODULES = {"gles2": "dEQP-GLES2", "gles3": "dEQP-GLES3"}
@@ -332,7 +333,7 @@ def cmd_run(args):
     fails = read_fails(fails_file, fold_case=False)
     skips = read_regexes(os.path.join(exp, f"{args.driver}-skips.txt"))
     flakes = read_regexes(os.path.join(exp, f"{args.driver}-flakes.txt"))
-    si, sn = args.shard
+    si, sn, sharded = fpshard.resolve(args.shard)
     if sn > 1:
         cases = shard(cases, si, sn)
     excluded = {c: r for c in cases for r in [matching(skips, c)] if r is not None}
@@ -341,7 +342,7 @@ def cmd_run(args):
     label = os.path.basename(args.list)
     label = label[:-4] if label.endswith(".txt") else label
     name = f"{args.driver}-{args.module}-{label}" + (f"-f{args.fraction}" if args.fraction > 1 else "") \
-        + (f"-s{si}of{sn}" if sn > 1 else "")
+        + (f"-s{si}of{sn}" if sharded else "")
     args.outdir = out_dir = os.path.join(args.out, name)
     os.makedirs(args.out, exist_ok=True)
     lock = open(out_dir + ".lock", "w")
@@ -354,6 +355,12 @@ def cmd_run(args):
     shutil.rmtree(out_dir, ignore_errors=True)
     work = os.path.join(out_dir, "work")
     os.makedirs(work)
+    key = {"module": args.module, "list": label, "driver": args.driver,
+           "fraction": args.fraction, "profile": os.environ.get("FIXPIPE_PROFILE") or "seed",
+           "texfmt": os.environ.get("FIXPIPE_TEXFMT") or "dfx24"}
+    if sharded:
+        # a result directory named on the command line is one campaign's (docs/cluster.md)
+        fpshard.claim(args.out if args.out_given else out_dir, out_dir, "deqp", key, si, sn)
     started = datetime.datetime.now(datetime.timezone.utc)
     t0 = time.time()
     print(f"fixpipe: {MODULES[args.module]} {label} on {args.driver}"
@@ -427,11 +434,15 @@ def cmd_run(args):
     with open(os.path.join(out_dir, "summary.json"), "w", encoding="utf-8") as f:
         json.dump(summary, f, indent=1, sort_keys=True)
         f.write("\n")
+    if sharded:
+        fpshard.done(out_dir, "deqp", key, si, sn, status, summary="summary.json")
     print(f"fixpipe: {MODULES[args.module]} on {args.driver} took {summary['seconds']:.0f} s")
     return status
 
 
-def cmd_merge(dirs):
+def cmd_merge(dirs, into=None):
+    """The shards' summaries as one run's; with `into`, written to INTO/summary.json when no
+    shard is missing."""
     first, tests, missing = join_shards(dirs, FORMAT, ("module", "list", "driver", "fraction"))
     n_shards = first["shard"][1]
     counts, expected = tally(tests)
@@ -441,6 +452,12 @@ def cmd_merge(dirs):
     if missing:
         print(f"fixpipe: shards {missing} of {n_shards} are missing: the run is incomplete")
         status = 1
+    elif into:
+        summary["exit_status"] = status
+        os.makedirs(into, exist_ok=True)
+        with open(os.path.join(into, "summary.json"), "w", encoding="utf-8") as f:
+            json.dump(summary, f, indent=1, sort_keys=True)
+            f.write("\n")
     return status
 
 
@@ -455,17 +472,21 @@ def main(argv):
         import sweep
         return sweep.main(argv)
     if argv[:1] == ["--merge"]:
+        into = None
+        if argv[1:2] == ["--into"] and len(argv) > 2:
+            into, argv = argv[2], argv[2:]
         if len(argv) < 2:
-            print("usage: run.py --merge DIR...", file=sys.stderr)
+            print("usage: run.py --merge [--into DIR] DIR...", file=sys.stderr)
             return 2
-        return cmd_merge(argv[1:])
+        return cmd_merge(argv[1:], into)
     ap = argparse.ArgumentParser(prog="./fixpipe deqp", description=__doc__.splitlines()[0])
     ap.add_argument("module", choices=sorted(MODULES))
     ap.add_argument("--list", default="mustpass",
                     help="mustpass (default), all (less performance and stress), or a file "
                          "of case names and globs")
     ap.add_argument("--driver", default="fixpipe", choices=DRIVERS)
-    ap.add_argument("--shard", type=parse_shard, default=(1, 1))
+    ap.add_argument("--shard", type=parse_shard, default=None,
+                    help="I/N; else from SLURM_ARRAY_TASK_* or CI_NODE_INDEX/CI_NODE_TOTAL")
     ap.add_argument("--fraction", type=positive, default=1,
                     help="run every N-th case of the list (deqp-runner's --fraction)")
     ap.add_argument("--jobs", type=positive, default=os.cpu_count() or 1)
@@ -475,7 +496,7 @@ def main(argv):
     ap.add_argument("--chunk", type=positive, default=500, help="cases per dEQP process")
     ap.add_argument("--max-retries", type=int, default=200,
                     help="new failures run again alone when there are at most this many")
-    ap.add_argument("--out", default=os.path.join(REPO, "out", "deqp"))
+    ap.add_argument("--out", default=None)
     ap.add_argument("--expectations", default=os.path.join(HERE, "expectations"))
     ap.add_argument("--work", default=os.environ.get("FIXPIPE_WORK", os.path.join(REPO, ".fixpipe")))
     ap.add_argument("--launcher", default=os.path.join(REPO, "fixpipe"))
@@ -485,6 +506,8 @@ def main(argv):
         args = ap.parse_args(argv)
     except SystemExit as e:
         return 2 if e.code else 0
+    args.out_given = args.out is not None
+    args.out = args.out or os.path.join(REPO, "out", "deqp")
     return cmd_run(args)
 
 

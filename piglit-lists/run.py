@@ -27,6 +27,7 @@ import xml.etree.ElementTree as ET
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
 from fpexpect import (bad_input, join_shards, matching, parse_shard, read_fails,  # noqa: E402
                       read_regexes, shard)
+import fpshard  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -252,8 +253,8 @@ def cmd_run(args):
         if reason is not None:
             excluded[n] = reason
     to_run = [n for n in names if n not in excluded]
-    si, sn = args.shard
-    out_name = f"{args.driver}-{args.label}" + (f"-s{si}of{sn}" if sn > 1 else "")
+    si, sn, sharded = fpshard.resolve(args.shard)
+    out_name = f"{args.driver}-{args.label}" + (f"-s{si}of{sn}" if sharded else "")
     if sn > 1:
         # The split is over the whole list, so the excluded tests are shared out too.
         mine = set(shard(names, si, sn))
@@ -272,6 +273,11 @@ def cmd_run(args):
     for stale in ("summary.json",):
         if os.path.exists(os.path.join(out_dir, stale)):
             os.remove(os.path.join(out_dir, stale))
+    key = {"list": args.label, "driver": args.driver,
+           "profile": os.environ.get("FIXPIPE_PROFILE") or "seed"}
+    if sharded:
+        # a result directory named on the command line is one campaign's (docs/cluster.md)
+        fpshard.claim(args.out if args.out_given else out_dir, out_dir, "piglit", key, si, sn)
 
     started = datetime.datetime.now(datetime.timezone.utc)
     t0 = time.time()
@@ -336,21 +342,34 @@ def cmd_run(args):
     with open(os.path.join(out_dir, "summary.json"), "w", encoding="utf-8") as f:
         json.dump(summary, f, indent=1, sort_keys=True)
         f.write("\n")
+    if sharded:
+        fpshard.done(out_dir, "piglit", key, si, sn, status, summary="summary.json")
     print(f"fixpipe: piglit {args.label} on {args.driver} took {summary['seconds']:.0f} s")
     return status
 
 
-def cmd_merge(dirs):
+def cmd_merge(dirs, into=None):
+    """The shards' summaries as one run's; with `into`, written to INTO/summary.json (only
+    when no shard is missing: a partial merge never replaces a whole run's summary)."""
     first, tests, missing = join_shards(dirs, FORMAT, ("list", "driver"))
     n_shards = first["shard"][1]
     counts, expected = tally(tests)
     summary = dict(first, shard=[0, n_shards], tests=tests, counts=counts, expected=expected,
                    total=len(tests))
+    summary["seconds"] = round(sum(json.load(open(d if d.endswith(".json") else
+                                                  os.path.join(d, "summary.json")))["seconds"]
+                                   for d in dirs), 1)
     status = report(summary, f"piglit-{first['list']}-{first['driver']}",
                     f"{first['driver']}-fails.txt")
     if missing:
         print(f"fixpipe: shards {missing} of {n_shards} are missing")
         status = 1
+    elif into:
+        summary["exit_status"] = status
+        os.makedirs(into, exist_ok=True)
+        with open(os.path.join(into, "summary.json"), "w", encoding="utf-8") as f:
+            json.dump(summary, f, indent=1, sort_keys=True)
+            f.write("\n")
     return status
 
 
@@ -398,19 +417,22 @@ def main(argv):
     if argv[:1] == ["--skips"]:
         return cmd_skips(argv[1:])
     if argv[:1] == ["--merge"]:
+        into = None
+        if argv[1:2] == ["--into"] and len(argv) > 2:
+            into, argv = argv[2], argv[2:]
         if len(argv) < 2:
-            print("usage: run.py --merge DIR...", file=sys.stderr)
+            print("usage: run.py --merge [--into DIR] DIR...", file=sys.stderr)
             return 2
-        return cmd_merge(argv[1:])
+        return cmd_merge(argv[1:], into)
     ap = argparse.ArgumentParser(prog="./fixpipe piglit", description=__doc__.splitlines()[0])
     ap.add_argument("list")
     ap.add_argument("--driver", default="fixpipe")
-    ap.add_argument("--shard", type=parse_shard, default=(1, 1))
+    ap.add_argument("--shard", type=parse_shard, default=None,
+                    help="I/N; else from SLURM_ARRAY_TASK_* or CI_NODE_INDEX/CI_NODE_TOTAL")
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("FIXPIPE_PIGLIT_JOBS", 2)))
     ap.add_argument("--timeout", type=int,
                     default=int(os.environ.get("FIXPIPE_PIGLIT_TIMEOUT", 300)))
-    ap.add_argument("--out", default=os.environ.get("FIXPIPE_PIGLIT_OUT",
-                                                    os.path.join(REPO, "out", "piglit")))
+    ap.add_argument("--out", default=None)
     ap.add_argument("--expectations", default=os.environ.get(
         "FIXPIPE_PIGLIT_EXPECTATIONS", os.path.join(HERE, "expectations")))
     ap.add_argument("--launcher", default=os.path.join(REPO, "fixpipe"))
@@ -420,6 +442,8 @@ def main(argv):
         args = ap.parse_args(argv)
     except SystemExit as e:
         return 2 if e.code else 0
+    args.out_given = args.out is not None
+    args.out = args.out or os.environ.get("FIXPIPE_PIGLIT_OUT", os.path.join(REPO, "out", "piglit"))
     if args.driver not in DRIVERS:
         print(f"fixpipe: unknown driver '{args.driver}' (accepted: {', '.join(DRIVERS)})",
               file=sys.stderr)
