@@ -2,7 +2,7 @@
 """Tests of campaign shards and `./fixpipe merge` (docs/cluster.md), without a cluster: the
 piglit runner with the fake piglit, shards taken from GitLab's and Slurm's variables, the
 merge against the whole run, and the refusals (a missing or unfinished shard, two campaigns
-in one directory, shards into a merged run).  A few seconds; ends
+in one directory, shards into a merged run, --slurm without sbatch).  A few seconds; ends
 with 'harness-shards: N passed, N failed'.
 """
 import json
@@ -173,6 +173,20 @@ def test_two_campaigns_in_one_directory():
     m = merge(d)
     check("a merge over shards of two campaigns: exit 2, names both",
           m.returncode == 2 and "more than one campaign" in m.stdout, m.stdout)
+
+
+def test_slurm_without_sbatch():
+    env = dict(os.environ, PATH=S.dir("empty-path"))
+    p = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "tools", "fp-cluster"), "submit",
+                        "piglit", S.list, "--slurm"], env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    check("--slurm with no sbatch on the PATH: exit 2, says what is missing and the way "
+          "without a cluster", p.returncode == 2 and "sbatch" in p.stdout
+          and "--shard I/N" in p.stdout, p.stdout)
+    p = subprocess.run([LAUNCHER, "piglit", S.list, "--slurm", "--shard", "1/2"],
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    check("--slurm with --shard: refused", p.returncode == 2 and "no --shard" in p.stdout,
+          p.stdout)
 
 
 def test_stress_shards():
