@@ -1,6 +1,7 @@
 #!/bin/sh
 # Installs the Debian packages fixpipe needs to build Mesa and to run the
-# reference programs. Quick when everything is already there.
+# reference programs (and Slurm, whose one-node cluster the tests start: tests/slurm).
+# Quick when everything is already there.
 set -eu
 
 PKGS="meson ninja-build python3-mako bison flex pkg-config ccache gcc g++ make
@@ -11,7 +12,7 @@ PKGS="meson ninja-build python3-mako bison flex pkg-config ccache gcc g++ make
  libgl1-mesa-dri libegl-mesa0 mesa-utils mesa-utils-bin glmark2-es2-x11 piglit
  apitrace apitrace-tracers xvfb xauth dpkg-dev python3 waffle-utils
  llvm-15-dev libelf-dev gdb clang python3-matplotlib python3-pil python3-numpy x11-apps
- chromium"
+ chromium slurm-wlm munge"
 
 SUDO=""
 [ "$(id -u)" = 0 ] || SUDO=sudo
