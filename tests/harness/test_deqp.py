@@ -160,6 +160,26 @@ def test_shards_and_merge():
           p.returncode == 1 and "shards [3] of 3 are missing" in p.stdout, p.stdout)
 
 
+def test_gitlab_shards_and_fixpipe_merge():
+    whole = Run().run()
+    out = os.path.join(whole.tmp.name, "sharded")
+    rcs = []
+    for i in (1, 2, 3):
+        r = Run()
+        r.out = out
+        r.run(env={"CI_NODE_INDEX": str(i), "CI_NODE_TOTAL": "3"})
+        rcs.append(r.rc)
+    p = subprocess.run([os.path.join(REPO, "fixpipe"), "merge", out], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    path = os.path.join(out, "llvmpipe-gles2-all", "summary.json")
+    merged = json.load(open(path)) if os.path.exists(path) else {"tests": {}}
+    res = lambda s: {c: (t["result"], t["status"]) for c, t in s["tests"].items()}
+    check("CI_NODE_INDEX/CI_NODE_TOTAL shards, ./fixpipe merge: the whole run's results, "
+          "verdict and exit status", res(merged) == res(whole.summary())
+          and merged.get("expected") == whole.summary()["expected"]
+          and p.returncode == whole.rc, p.stdout + repr(rcs))
+
+
 def test_lists():
     r = Run().run("--fraction", "4")
     s = r.summary("llvmpipe-gles2-all-f4")
