@@ -47,7 +47,7 @@ start)
     chmod 0400 /etc/munge/munge.key
     if ! munge -n 2>/dev/null | unmunge >/dev/null 2>&1; then
         mkdir -p /run/munge && chown munge:munge /run/munge 2>/dev/null || true
-        /usr/sbin/munged --force
+        /usr/sbin/munged --force 2>>"$dir/log/munged.log"
         pgrep -n -x munged > "$dir/munged.pid"
         n=0
         until munge -n 2>/dev/null | unmunge >/dev/null 2>&1; do
