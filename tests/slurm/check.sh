@@ -9,6 +9,7 @@
 #     fails and names the shard and its Slurm state; nothing is merged;
 #   a shard cancelled with scancel while it runs: the same;
 # and the daemons it started are stopped.  Needs root, slurm-wlm and munge (./fixpipe setup).
+# Each --wait is bounded (timeout): a cluster that stops scheduling fails the check, not hangs it.
 # One line per check, then "N passed, N failed"; exit 1 on a failure.
 checks=slurm
 . "$(dirname "$0")/../e2e/checks.sh"
@@ -29,7 +30,7 @@ pass "a one-node Slurm cluster starts ($(sinfo -h -o '%D node, %c CPUs, partitio
 # ---------------------------------------------------------------- piglit
 "$fixpipe" piglit smoke --driver fixpipe --out "$out/piglit-local" > "$out/piglit-local.log" 2>&1
 local_rc=$?
-"$fixpipe" piglit smoke --driver fixpipe --slurm --nodes 2 --wait --out "$out/piglit-slurm" \
+timeout 900 "$fixpipe" piglit smoke --driver fixpipe --slurm --nodes 2 --wait --out "$out/piglit-slurm" \
     > "$out/piglit-slurm.log" 2>&1
 slurm_rc=$?
 cat "$out/piglit-slurm.log"
@@ -67,7 +68,7 @@ esac
 "$fixpipe" sweep --grid quick --traces short --no-docs --out "$out/sweep-local" \
     > "$out/sweep-local.log" 2>&1
 local_rc=$?
-"$fixpipe" sweep --grid quick --traces short --no-docs --out "$out/sweep-slurm" --slurm \
+timeout 900 "$fixpipe" sweep --grid quick --traces short --no-docs --out "$out/sweep-slurm" --slurm \
     --nodes 2 --wait > "$out/sweep-slurm.log" 2>&1
 slurm_rc=$?
 tail -n 4 "$out/sweep-slurm.log"
@@ -110,7 +111,7 @@ mkdir -p "$out/exp"
 printf 'fake@a@pass-1\nfake@a@pass-2\nfake@b@pass-3\nfake@c@die-here\nfake@d@pass-4\nfake@e@pass-5\n' \
     > "$out/dies.txt"
 # sorted, round-robin over 3: fake@c@die-here is the 4th name, in shard 1
-fake "$fixpipe" piglit "$out/dies.txt" --slurm --nodes 3 --wait --out "$out/dies" \
+fake timeout 300 "$fixpipe" piglit "$out/dies.txt" --slurm --nodes 3 --wait --out "$out/dies" \
     > "$out/dies.log" 2>&1
 rc=$?
 cat "$out/dies.log"
@@ -150,11 +151,13 @@ fi
 
 # ---------------------------------------------------------------- stop
 ctld=$(cat "$cluster/slurmctld.pid" 2>/dev/null) slurmd=$(cat "$cluster/slurmd.pid" 2>/dev/null)
+munged=$(cat "$cluster/munged.pid" 2>/dev/null)
 trap - EXIT
 stop_cluster
-if [ -n "$ctld" ] && [ -n "$slurmd" ] && ! kill -0 "$ctld" 2>/dev/null && ! kill -0 "$slurmd" 2>/dev/null; then
-    pass "the daemons it started are stopped (slurmctld $ctld, slurmd $slurmd)"
+if [ -n "$ctld" ] && [ -n "$slurmd" ] && [ -n "$munged" ] && ! kill -0 "$ctld" 2>/dev/null \
+        && ! kill -0 "$slurmd" 2>/dev/null && ! kill -0 "$munged" 2>/dev/null; then
+    pass "the daemons it started are stopped (slurmctld $ctld, slurmd $slurmd, munged $munged)"
 else
-    fail "slurmctld ($ctld) or slurmd ($slurmd) still runs after stop"
+    fail "slurmctld ($ctld), slurmd ($slurmd) or munged ($munged) still runs after stop"
 fi
 checks_end

@@ -7,8 +7,8 @@
 #   tests/slurm/cluster.sh stop DIR    stop the daemons this script started in DIR
 #
 # Needs root (SlurmUser=root) and Debian's slurm-wlm and munge (tools/install-deps.sh).
-# munged is shared by every Slurm on the host: one already running is used and left
-# running; one started here is stopped by 'stop'.
+# The cluster has a munged of its own (its key and socket in DIR, AuthInfo=socket=...), so
+# that clusters started at once (two checks) and the host's own munged leave each other alone.
 set -eu
 
 die() { echo "cluster.sh: $*" >&2; exit 1; }
@@ -38,22 +38,18 @@ start)
     [ ! -s "$dir/slurmctld.pid" ] || ! kill -0 "$(cat "$dir/slurmctld.pid")" 2>/dev/null \
         || die "a cluster already runs from $dir (stop it first)"
     mkdir -p "$dir/state" "$dir/spool" "$dir/log"
-    # munge: the key, then the daemon unless one answers already
-    if [ ! -s /etc/munge/munge.key ]; then
-        mkdir -p /etc/munge
-        dd if=/dev/urandom of=/etc/munge/munge.key bs=1 count=1024 2>/dev/null
-    fi
-    chown munge:munge /etc/munge/munge.key 2>/dev/null || true
-    chmod 0400 /etc/munge/munge.key
-    if ! munge -n 2>/dev/null | unmunge >/dev/null 2>&1; then
-        mkdir -p /run/munge && chown munge:munge /run/munge 2>/dev/null || true
-        /usr/sbin/munged --force 2>>"$dir/log/munged.log"
-        pgrep -n -x munged > "$dir/munged.pid"
-        n=0
-        until munge -n 2>/dev/null | unmunge >/dev/null 2>&1; do
-            n=$((n + 1)); [ $n -lt 50 ] || die "munged does not answer"; sleep 0.1
-        done
-    fi
+    # munge: a key and a daemon of the cluster's own
+    [ ${#dir} -le 90 ] || die "$dir is too long a path for munged's socket (108 bytes at most)"
+    [ -s "$dir/munge.key" ] || dd if=/dev/urandom of="$dir/munge.key" bs=1 count=1024 2>/dev/null
+    chmod 0400 "$dir/munge.key"
+    /usr/sbin/munged --force --socket="$dir/munge.socket" --key-file="$dir/munge.key" \
+        --pid-file="$dir/munged.pid" --log-file="$dir/log/munged.log" \
+        --seed-file="$dir/munged.seed" 2>>"$dir/log/munged.log" \
+        || die "munged does not start (log $dir/log/munged.log)"
+    n=0
+    until munge -n -S "$dir/munge.socket" 2>/dev/null | unmunge -S "$dir/munge.socket" >/dev/null 2>&1; do
+        n=$((n + 1)); [ $n -lt 50 ] || die "munged does not answer on $dir/munge.socket"; sleep 0.1
+    done
     host=$(hostname -s)
     ports=$(python3 -c 'import socket
 s = [socket.socket() for _ in range(2)]
@@ -69,6 +65,8 @@ SlurmdPort=$2
 SlurmUser=root
 SlurmdUser=root
 AuthType=auth/munge
+AuthInfo=socket=$dir/munge.socket
+CredType=cred/munge
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 SelectType=select/cons_tres
@@ -90,7 +88,7 @@ NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
     /usr/sbin/slurmctld -f "$dir/slurm.conf"
-    /usr/sbin/slurmd -f "$dir/slurm.conf"
+    /usr/sbin/slurmd -f "$dir/slurm.conf" -N "$host"
     export SLURM_CONF=$dir/slurm.conf
     n=0
     until sinfo -h -o %T 2>/dev/null | grep -qx idle; do
