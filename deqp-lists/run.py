@@ -35,7 +35,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "tools"))
-from fpexpect import (bad_input, join_shards, matching, parse_shard, read_fails,  # noqa: E402
+from fpexpect import (bad_input, finish_merge, join_shards, matching, parse_shard, read_fails,  # noqa: E402
                       read_regexes, shard)
 import fpshard  # noqa: E402
 
@@ -449,16 +449,7 @@ def cmd_merge(dirs, into=None):
     summary = dict(first, shard=[0, n_shards], tests=tests, counts=counts, expected=expected,
                    total=len(tests))
     status = report(summary, f"deqp-{first['module']}-{first['driver']}", f"{first['driver']}-fails.txt")
-    if missing:
-        print(f"fixpipe: shards {missing} of {n_shards} are missing: the run is incomplete")
-        status = 1
-    elif into:
-        summary["exit_status"] = status
-        os.makedirs(into, exist_ok=True)
-        with open(os.path.join(into, "summary.json"), "w", encoding="utf-8") as f:
-            json.dump(summary, f, indent=1, sort_keys=True)
-            f.write("\n")
-    return status
+    return finish_merge(summary, status, missing, n_shards, into)
 
 
 def positive(s):

@@ -25,7 +25,7 @@ import time
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
-from fpexpect import (bad_input, join_shards, matching, parse_shard, read_fails,  # noqa: E402
+from fpexpect import (bad_input, finish_merge, join_shards, matching, parse_shard, read_fails,  # noqa: E402
                       read_regexes, shard)
 import fpshard  # noqa: E402
 
@@ -361,16 +361,7 @@ def cmd_merge(dirs, into=None):
                                    for d in dirs), 1)
     status = report(summary, f"piglit-{first['list']}-{first['driver']}",
                     f"{first['driver']}-fails.txt")
-    if missing:
-        print(f"fixpipe: shards {missing} of {n_shards} are missing")
-        status = 1
-    elif into:
-        summary["exit_status"] = status
-        os.makedirs(into, exist_ok=True)
-        with open(os.path.join(into, "summary.json"), "w", encoding="utf-8") as f:
-            json.dump(summary, f, indent=1, sort_keys=True)
-            f.write("\n")
-    return status
+    return finish_merge(summary, status, missing, n_shards, into)
 
 
 def skip_reason(res):

@@ -11,6 +11,7 @@ input error (exit status 2), never a silent pass.
 """
 import argparse
 import json
+import os
 import re
 import sys
 
@@ -88,6 +89,22 @@ def parse_shard(s):
     if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
         raise argparse.ArgumentTypeError(f"--shard wants I/N with 1 <= I <= N, got {s!r}")
     return int(m.group(1)), int(m.group(2))
+
+
+def finish_merge(summary, status, missing, n_shards, into):
+    """The end of a merge of shards: with a shard missing, status 1 and nothing written
+    (a merge never reports a pass without every shard); otherwise the merged summary, with
+    its exit status, into DIR/summary.json when `into` is given.  Returns the status."""
+    if missing:
+        print(f"fixpipe: shards {missing} of {n_shards} are missing: the run is incomplete")
+        return 1
+    if into:
+        summary["exit_status"] = status
+        os.makedirs(into, exist_ok=True)
+        with open(os.path.join(into, "summary.json"), "w", encoding="utf-8") as f:
+            json.dump(summary, f, indent=1, sort_keys=True)
+            f.write("\n")
+    return status
 
 
 def join_shards(dirs, fmt, key):
