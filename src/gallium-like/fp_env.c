@@ -105,6 +105,20 @@ static bool vectors_option(void *ctx, const char *key, const char *val, char *er
    return false;
 }
 
+/* A number system named by the variable `var`, `fallback` when it is unset or
+ * unknown (reported once, with the accepted names). */
+static const struct numsys *numsys_from_env(const char *var, const struct numsys *fallback)
+{
+   const char *v = getenv(var);
+   if (!v || !*v)
+      return fallback;
+   const struct numsys *ns = numsys_by_name(v);
+   if (!ns)
+      fprintf(stderr, "fixpipe: unknown %s '%s' (accepted: %s); using %s\n", var, v,
+              numsys_names(), fallback->name);
+   return ns ? ns : fallback;
+}
+
 /* DIR[,KEY=VALUE,...], the form of FIXPIPE_VECTORS and FIXPIPE_EVENTS: the
  * directory into dir (1 to dir_size - 1 characters), then each key through
  * fn; false with the reason in err. */
@@ -253,26 +267,8 @@ static void fp_env_parse(void)
    if (!rast_cycle_params_parse(cy, &env.cycles, cerr, sizeof(cerr)))
       fprintf(stderr, "fixpipe: bad FIXPIPE_CYCLES '%s': %s; using the defaults\n", cy, cerr);
 
-   const char *t = getenv("FIXPIPE_TEXFMT");
-   env.texfmt = numsys_default();
-   if (t && *t) {
-      const struct numsys *ns = numsys_by_name(t);
-      if (ns)
-         env.texfmt = ns;
-      else
-         fprintf(stderr, "fixpipe: unknown FIXPIPE_TEXFMT '%s' (accepted: %s); using %s\n",
-                 t, numsys_names(), env.texfmt->name);
-   }
-   const char *pf = getenv("FIXPIPE_PERSPFMT");
-   env.perspfmt = env.texfmt;
-   if (pf && *pf) {
-      const struct numsys *ns = numsys_by_name(pf);
-      if (ns)
-         env.perspfmt = ns;
-      else
-         fprintf(stderr, "fixpipe: unknown FIXPIPE_PERSPFMT '%s' (accepted: %s); using %s\n",
-                 pf, numsys_names(), env.perspfmt->name);
-   }
+   env.texfmt = numsys_from_env("FIXPIPE_TEXFMT", numsys_default());
+   env.perspfmt = numsys_from_env("FIXPIPE_PERSPFMT", env.texfmt);
 }
 
 static util_once_flag env_once = UTIL_ONCE_FLAG_INIT;
